@@ -1,0 +1,65 @@
+#pragma once
+/// @file
+/// The articulated body: segments in topological order (parent before child), each attached to
+/// its parent by a ball joint, the root (abdomen) attached to the world by a free joint.
+/// A BodyModel is constant during an algorithm; algorithms are free functions taking it by const
+/// reference (Pinocchio's Model/Data split).
+
+#include <Eigen/Core>
+#include <nlohmann/json_fwd.hpp>
+#include <string>
+#include <vector>
+
+namespace saltus {
+
+/// Drawing shape of a segment, in segment coordinates. Not used by any physics.
+struct SegmentShape {
+  std::string type = "capsule";  ///< "capsule", "ellipsoid" or "box"
+  double length = 0.0;           ///< m, along the segment's y axis (signed: negative = -y)
+  double radius = 0.0;           ///< m
+};
+
+struct Segment {
+  std::string name;   ///< e.g. "thigh_l"
+  int parent = -1;    ///< index into BodyModel::segments, -1 for the root
+  std::string joint;  ///< name of the joint to the parent, e.g. "hip_l" (root: "root")
+  /// Joint centre in the parent's frame, m. Root: ignored (world placement is a motion variable).
+  Eigen::Vector3d joint_position = Eigen::Vector3d::Zero();
+  double mass = 0.0;                                  ///< kg, > 0
+  Eigen::Vector3d com = Eigen::Vector3d::Zero();      ///< centre of mass, segment frame, m
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();  ///< about the CoM, segment axes, kg·m²
+  SegmentShape shape;
+};
+
+/// A body model: fixed topology and mass parameters.
+struct BodyModel {
+  std::string name;
+  std::string source;  ///< where the numbers come from (citation), free text
+  std::vector<Segment> segments;
+
+  int size() const { return static_cast<int>(segments.size()); }
+  double total_mass() const;
+  /// Index of the segment whose joint has this name, or -1.
+  int joint_index(const std::string& joint_name) const;
+  /// Index of the segment with this name, or -1.
+  int segment_index(const std::string& segment_name) const;
+};
+
+/// Parses and validates a "saltus-model/1" document. `file` is used in error messages only.
+/// Validation: format tag, unique segment and joint names, root first with parent null and joint
+/// "root", every other parent named earlier in the list (so no cycles, topological order), finite
+/// numbers, mass > 0, inertia 3 principal moments > 0 or 6 values forming a symmetric positive
+/// definite matrix, shape sizes >= 0. Throws InputError naming file and JSON path.
+BodyModel parse_body_model(const nlohmann::json& document, const std::string& file);
+
+/// Reads and validates a model file (see parse_body_model).
+BodyModel load_body_model(const std::string& path);
+
+/// Serialises to "saltus-model/1" (inertia written as 6 values). parse(to_json(m)) == m.
+nlohmann::json body_model_to_json(const BodyModel& model);
+
+/// A copy of `model` with one segment's (or, for segment == "", every segment's) mass and inertia
+/// multiplied by `factor` (> 0). Used for mass-sensitivity studies.
+BodyModel scale_segment_mass(const BodyModel& model, const std::string& segment, double factor);
+
+}  // namespace saltus

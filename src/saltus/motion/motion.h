@@ -1,0 +1,84 @@
+#pragma once
+/// @file
+/// Keyframed motions and their "saltus-motion/1" files (DESIGN §4).
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <map>
+#include <nlohmann/json_fwd.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "saltus/body/body_model.h"
+
+namespace saltus {
+
+/// Take-off state of the whole body's centre of mass (world frame).
+struct Takeoff {
+  Eigen::Vector3d com_position = Eigen::Vector3d(0, 1, 0);   ///< m
+  Eigen::Vector3d com_velocity = Eigen::Vector3d::Zero();    ///< m/s
+  /// Angular momentum about the CoM, world frame, kg·m²/s. When absent, free-flight simulation
+  /// uses the one implied by the interpolated keyframes at t = 0.
+  std::optional<Eigen::Vector3d> angular_momentum;
+};
+
+/// Keyframe tolerances of the relaxed model (paper eqs. 2-3: ε1, ε2).
+struct Tolerances {
+  double translation_m = 0.25;  ///< ε1, per coordinate of the root translation
+  double quaternion = 0.05;     ///< ε2, ‖Q − Q̄‖ after sign alignment
+};
+
+struct Keyframe {
+  double time = 0.0;  ///< s
+  /// One rotation per model segment, indexed like BodyModel::segments: segment i's frame relative
+  /// to its parent's (the root's: relative to the world). Unit norm.
+  std::vector<Eigen::Quaterniond> rotations;
+  /// Optional root (abdomen origin) position, world, m. Default: from the CoM parabola (§5.3).
+  std::optional<Eigen::Vector3d> root_position;
+};
+
+/// A fitted trajectory stored with an optimised motion so it reloads exactly
+/// ("spline" member of the motion file). Knots are the full clamped cubic knot vector.
+struct StoredSpline {
+  std::vector<double> knots;
+  std::vector<Eigen::Vector3d> root_translation;              ///< control points
+  std::vector<std::vector<Eigen::Quaterniond>> joint_control;  ///< [segment][control index]
+};
+
+struct Motion {
+  std::string name;
+  std::string model;  ///< the "model" field as written (name or relative path)
+  Takeoff takeoff;
+  Tolerances tolerances;
+  std::vector<Keyframe> keyframes;  ///< at least 2; times strictly increase, first 0, last T
+  std::optional<StoredSpline> spline;
+
+  double flight_time() const { return keyframes.empty() ? 0.0 : keyframes.back().time; }
+};
+
+/// A motion with the body model it refers to.
+struct MotionFile {
+  std::string path;  ///< the motion file it came from ("" if built in memory)
+  Motion motion;
+  BodyModel model;
+};
+
+/// Parses and validates a "saltus-motion/1" document against `model` (every keyframe must give
+/// every joint of the model, no unknown joints). `file` is used in messages. Normalises
+/// quaternions off by at most 1e-3 in norm; rejects worse. Throws InputError naming file and
+/// JSON path.
+Motion parse_motion(const nlohmann::json& document, const std::string& file,
+                    const BodyModel& model);
+
+/// Reads a motion file and the model it names (resolved by resolve_model_path). If
+/// `model_override` is not empty it is used instead of the file's "model" field.
+MotionFile load_motion_file(const std::string& path, const std::string& model_override = "");
+
+/// Serialises to "saltus-motion/1" (rotations as [w, x, y, z]; "spline" included when present).
+nlohmann::json motion_to_json(const Motion& motion, const BodyModel& model);
+
+/// The "model" field of a motion file, read without validating the rest (to find the model).
+std::string read_motion_model_field(const nlohmann::json& document, const std::string& file);
+
+}  // namespace saltus
