@@ -25,9 +25,12 @@ struct Segment {
   std::string joint;  ///< name of the joint to the parent, e.g. "hip_l" (root: "root")
   /// Joint centre in the parent's frame, m. Root: ignored (world placement is a motion variable).
   Eigen::Vector3d joint_position = Eigen::Vector3d::Zero();
-  double mass = 0.0;                                  ///< kg, > 0
-  Eigen::Vector3d com = Eigen::Vector3d::Zero();      ///< centre of mass, segment frame, m
-  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();  ///< about the CoM, segment axes, kg·m²
+  double mass = 0.0;                              ///< kg, > 0
+  Eigen::Vector3d com = Eigen::Vector3d::Zero();  ///< centre of mass, segment frame, m
+  /// About the CoM, segment axes, kg·m². In files: 3 principal moments, or 6 values
+  /// [Ixx, Iyy, Izz, Ixy, Ixz, Iyz] that are the matrix entries themselves (I(0,1) = Ixy), not
+  /// the negated products of inertia.
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
   SegmentShape shape;
 };
 

@@ -20,7 +20,8 @@ nlohmann::json read_json_file(const std::string& path) {
     // e.what() carries "line L, column C" which is what a user needs to find the typo.
     std::string what = e.what();
     const auto pos = what.find("parse error");
-    throw InputError(path, "", "invalid JSON: " + (pos == std::string::npos ? what : what.substr(pos)));
+    throw InputError(path, "",
+                     "invalid JSON: " + (pos == std::string::npos ? what : what.substr(pos)));
   }
 }
 
@@ -83,14 +84,19 @@ std::vector<std::pair<std::string, JsonNode>> JsonNode::members() const {
   require_object();
   std::vector<std::pair<std::string, JsonNode>> out;
   for (auto it = value_->begin(); it != value_->end(); ++it)
-    out.emplace_back(it.key(), JsonNode(it.value(), file_, path_ + "/" + json_pointer_escape(it.key())));
+    out.emplace_back(it.key(),
+                     JsonNode(it.value(), file_, path_ + "/" + json_pointer_escape(it.key())));
   return out;
 }
 
-void JsonNode::fail(const std::string& problem) const { throw InputError(file_, path_or_root(), problem); }
+void JsonNode::fail(const std::string& problem) const {
+  throw InputError(file_, path_or_root(), problem);
+}
 
 namespace {
-std::string type_name(const nlohmann::json& v) { return v.type_name(); }
+std::string type_name(const nlohmann::json& v) {
+  return v.type_name();
+}
 }  // namespace
 
 void JsonNode::require_object() const {
@@ -122,7 +128,8 @@ std::vector<double> JsonNode::as_double_array() const {
   require_array();
   std::vector<double> out;
   out.reserve(value_->size());
-  for (std::size_t i = 0; i < value_->size(); ++i) out.push_back(at(i).as_double());
+  for (std::size_t i = 0; i < value_->size(); ++i)
+    out.push_back(at(i).as_double());
   return out;
 }
 

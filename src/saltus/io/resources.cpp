@@ -19,8 +19,8 @@ std::string resolve_model_path(const std::string& model_field, const std::string
   if (model_field.empty()) return "";
   const fs::path base = fs::path(motion_file).parent_path();
   const fs::path relative = base / model_field;
-  const bool looks_like_path = model_field.find('/') != std::string::npos ||
-                               fs::path(model_field).extension() == ".json";
+  const bool looks_like_path =
+      model_field.find('/') != std::string::npos || fs::path(model_field).extension() == ".json";
   if (looks_like_path || fs::exists(relative)) {
     return fs::exists(relative) && fs::is_regular_file(relative) ? relative.string() : "";
   }

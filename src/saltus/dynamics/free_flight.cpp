@@ -1,0 +1,156 @@
+#include "saltus/dynamics/free_flight.h"
+
+#include <Eigen/Cholesky>
+#include <cmath>
+#include <stdexcept>
+
+#include "saltus/dynamics/inverse_dynamics.h"
+#include "saltus/dynamics/momentum.h"
+
+namespace saltus {
+
+void solve_free_root_acceleration(const BodyModel& model, BodyState<double>& state) {
+  DynamicsData<double> data(model);
+  JointState<double>& root = state.joints[0];
+  const Eigen::Matrix3d r0 = root.q.toRotationMatrix();
+  const Eigen::Vector3d v_body = r0.transpose() * state.root_velocity;
+  // Choose the root motion whose spatial acceleration (gravity offset included) is zero; the
+  // root wrench then equals the bias term alone.
+  root.alpha.setZero();
+  state.root_acceleration = gravity() + r0 * root.omega.cross(v_body);
+  inverse_dynamics(model, data, state);
+  const Vec6<double> bias = data.joint_wrench[0];
+  const Mat6<double> ic = composite_inertia_at_root(model, data);
+  const Vec6<double> a0 = -ic.ldlt().solve(bias);
+  root.alpha = a0.head<3>();
+  state.root_acceleration = r0 * (a0.tail<3>() + root.omega.cross(v_body)) + gravity();
+}
+
+void set_root_from_momentum(const BodyModel& model, const Eigen::Vector3d& com_position,
+                            const Eigen::Vector3d& com_velocity,
+                            const Eigen::Vector3d& angular_momentum, BodyState<double>& state) {
+  DynamicsData<double> data(model);
+  state.root_velocity.setZero();
+  state.joints[0].omega.setZero();
+  state.joints[0].alpha.setZero();
+  state.root_acceleration.setZero();
+  inverse_dynamics(model, data, state);
+  state.root_position += com_position - data.com;
+
+  const Vec6<double> h_joints = spatial_momentum_at_root(model, data);  // root at rest
+  const Mat6<double> ic = composite_inertia_at_root(model, data);
+  const Eigen::Matrix3d r0 = data.world_rotation[0];
+  const Eigen::Vector3d linear = model.total_mass() * com_velocity;
+  // Angular momentum about the root origin: L_O = L_G + (G − O) × P.
+  const Eigen::Vector3d angular_at_root =
+      angular_momentum + (com_position - state.root_position).cross(linear);
+  Vec6<double> wanted;
+  wanted << r0.transpose() * angular_at_root, r0.transpose() * linear;
+  const Vec6<double> v0 = ic.ldlt().solve(wanted - h_joints);
+  state.joints[0].omega = v0.head<3>();
+  state.root_velocity = r0 * v0.tail<3>();
+}
+
+namespace {
+
+struct RootState {
+  Eigen::Quaterniond q;
+  Eigen::Vector3d omega, position, velocity;
+};
+
+struct RootRate {
+  Eigen::Vector4d dq;  // coefficients (x, y, z, w) as Eigen stores them
+  Eigen::Vector3d domega, dposition, dvelocity;
+};
+
+RootRate rate(const BodyModel& model, const JointMotion& joint_motion, double t, const RootState& y,
+              BodyState<double>& scratch) {
+  joint_motion(t, scratch);
+  scratch.joints[0].q = y.q.normalized();
+  scratch.joints[0].omega = y.omega;
+  scratch.root_position = y.position;
+  scratch.root_velocity = y.velocity;
+  solve_free_root_acceleration(model, scratch);
+  // q̇ = ½ q ⊗ (0, ω) with ω in the body frame.
+  const Eigen::Quaterniond w(0.0, y.omega.x(), y.omega.y(), y.omega.z());
+  RootRate r;
+  r.dq = 0.5 * (y.q * w).coeffs();
+  r.domega = scratch.joints[0].alpha;
+  r.dposition = y.velocity;
+  r.dvelocity = scratch.root_acceleration;
+  return r;
+}
+
+RootState advance(const RootState& y, const RootRate& r, double h) {
+  RootState out;
+  out.q.coeffs() = y.q.coeffs() + h * r.dq;
+  out.omega = y.omega + h * r.domega;
+  out.position = y.position + h * r.dposition;
+  out.velocity = y.velocity + h * r.dvelocity;
+  return out;
+}
+
+RootState rk4_step(const BodyModel& model, const JointMotion& joint_motion, double t,
+                   const RootState& y, double h, BodyState<double>& scratch) {
+  const RootRate k1 = rate(model, joint_motion, t, y, scratch);
+  const RootRate k2 = rate(model, joint_motion, t + h / 2, advance(y, k1, h / 2), scratch);
+  const RootRate k3 = rate(model, joint_motion, t + h / 2, advance(y, k2, h / 2), scratch);
+  const RootRate k4 = rate(model, joint_motion, t + h, advance(y, k3, h), scratch);
+  RootState out;
+  out.q.coeffs() = y.q.coeffs() + h / 6 * (k1.dq + 2 * k2.dq + 2 * k3.dq + k4.dq);
+  out.q.normalize();
+  out.omega = y.omega + h / 6 * (k1.domega + 2 * k2.domega + 2 * k3.domega + k4.domega);
+  out.position =
+      y.position + h / 6 * (k1.dposition + 2 * k2.dposition + 2 * k3.dposition + k4.dposition);
+  out.velocity =
+      y.velocity + h / 6 * (k1.dvelocity + 2 * k2.dvelocity + 2 * k3.dvelocity + k4.dvelocity);
+  return out;
+}
+
+}  // namespace
+
+std::vector<BodyState<double>> simulate_free_flight(const BodyModel& model,
+                                                    const JointMotion& joint_motion,
+                                                    const FreeFlightInitialState& initial,
+                                                    const std::vector<double>& times,
+                                                    const FreeFlightOptions& options) {
+  if (times.empty()) return {};
+  if (!(options.max_step > 0)) throw std::invalid_argument("free flight: max_step must be > 0");
+  for (std::size_t i = 1; i < times.size(); ++i)
+    if (times[i] < times[i - 1])
+      throw std::invalid_argument("free flight: times must not decrease");
+
+  BodyState<double> state(model.size());
+  joint_motion(times.front(), state);
+  state.joints[0].q = initial.root_orientation.normalized();
+  state.root_position.setZero();
+  set_root_from_momentum(model, initial.com_position, initial.com_velocity,
+                         initial.angular_momentum, state);
+
+  RootState y{state.joints[0].q, state.joints[0].omega, state.root_position, state.root_velocity};
+  BodyState<double> scratch(model.size());
+  std::vector<BodyState<double>> out;
+  out.reserve(times.size());
+  double t = times.front();
+  for (double target : times) {
+    const double gap = target - t;
+    const int steps = gap > 0 ? static_cast<int>(std::ceil(gap / options.max_step - 1e-9)) : 0;
+    for (int k = 0; k < steps; ++k) {
+      const double h = gap / steps;
+      y = rk4_step(model, joint_motion, t, y, h, scratch);
+      t += h;
+    }
+    t = target;
+    BodyState<double> sample(model.size());
+    joint_motion(t, sample);
+    sample.joints[0].q = y.q;
+    sample.joints[0].omega = y.omega;
+    sample.root_position = y.position;
+    sample.root_velocity = y.velocity;
+    solve_free_root_acceleration(model, sample);
+    out.push_back(std::move(sample));
+  }
+  return out;
+}
+
+}  // namespace saltus

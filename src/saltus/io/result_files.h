@@ -1,0 +1,34 @@
+#pragma once
+/// @file
+/// Writing the output folders of `saltus evaluate` and `saltus simulate` (DESIGN §6): result.json,
+/// trajectory.csv and model.json, all or nothing (see OutputFolder).
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "saltus/analysis/motion_analysis.h"
+
+namespace saltus {
+
+/// before/after block of result.json.
+nlohmann::json force_metrics_to_json(const ForceMetrics& metrics);
+
+/// result.json of an evaluation ("before" filled; optimiser-only fields null).
+nlohmann::json evaluation_result_json(const MotionFile& file, const MotionEvaluation& evaluation,
+                                      const EvaluateOptions& options);
+
+/// result.json of a free-flight simulation: the evaluation fields for the simulated flight plus
+/// "takeoff_angular_momentum" and "landing".
+nlohmann::json simulation_result_json(const MotionFile& file, const SimulationResult& simulation,
+                                      const EvaluateOptions& options);
+
+/// Writes result.json, trajectory.csv and model.json into `out_dir` atomically.
+/// Returns the result.json written.
+nlohmann::json write_evaluation_outputs(const std::string& out_dir, const MotionFile& file,
+                                        const MotionEvaluation& evaluation,
+                                        const EvaluateOptions& options);
+nlohmann::json write_simulation_outputs(const std::string& out_dir, const MotionFile& file,
+                                        const SimulationResult& simulation,
+                                        const EvaluateOptions& options);
+
+}  // namespace saltus

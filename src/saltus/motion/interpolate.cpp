@@ -1,0 +1,108 @@
+#include "saltus/motion/interpolate.h"
+
+#include <stdexcept>
+
+#include "saltus/dynamics/inverse_dynamics.h"
+
+namespace saltus {
+
+Eigen::Vector3d ballistic_com(const Takeoff& takeoff, double t) {
+  return takeoff.com_position + takeoff.com_velocity * t + 0.5 * gravity() * t * t;
+}
+
+Eigen::Vector3d ballistic_com_velocity(const Takeoff& takeoff, double t) {
+  return takeoff.com_velocity + gravity() * t;
+}
+
+Eigen::Vector3d com_with_root_at_origin(const BodyModel& model,
+                                        const std::vector<Eigen::Quaterniond>& rotations) {
+  BodyState<double> state(model.size());
+  for (int i = 0; i < model.size(); ++i)
+    state.joints[i].q = rotations[i];
+  DynamicsData<double> data(model);
+  inverse_dynamics(model, data, state);
+  return data.com;
+}
+
+std::vector<Eigen::Vector3d> keyframe_root_targets(const Motion& motion, const BodyModel& model) {
+  std::vector<Eigen::Vector3d> out;
+  out.reserve(motion.keyframes.size());
+  for (const Keyframe& k : motion.keyframes) {
+    if (k.root_position) {
+      out.push_back(*k.root_position);
+    } else {
+      out.push_back(ballistic_com(motion.takeoff, k.time) -
+                    com_with_root_at_origin(model, k.rotations));
+    }
+  }
+  return out;
+}
+
+Trajectory<double> interpolate_keyframes(const Motion& motion, const BodyModel& model,
+                                         const InterpolationOptions& options) {
+  if (options.knots_per_interval < 1)
+    throw std::invalid_argument("knots per interval must be at least 1");
+  if (motion.keyframes.size() < 2) throw std::invalid_argument("a motion needs two keyframes");
+
+  std::vector<double> times;
+  for (const Keyframe& k : motion.keyframes)
+    times.push_back(k.time);
+  Trajectory<double> trajectory;
+  trajectory.knots = clamped_cubic_knots(refine_breakpoints(times, options.knots_per_interval));
+
+  // Step 1 (§5.2): one quaternion spline per joint through its keyframe rotations.
+  std::vector<Eigen::Quaterniond> targets(times.size());
+  for (int seg = 0; seg < model.size(); ++seg) {
+    for (std::size_t i = 0; i < times.size(); ++i)
+      targets[i] = motion.keyframes[i].rotations[seg];
+    trajectory.rotations.emplace_back(trajectory.knots,
+                                      fit_quaternion_spline(trajectory.knots, times, targets));
+  }
+
+  // Steps 2-3 (eqs. 9-10): root translation s(t) − s'(t), sampled densely and fitted.
+  const int spans = control_count(trajectory.knots) - 3;
+  const int n_fit = spans * options.root_fit_samples_per_span + 1;
+  const double duration = times.back();
+  std::vector<double> fit_times;
+  std::vector<Eigen::Vector3d> fit_points;
+  std::vector<Eigen::Quaterniond> pose(model.size());
+  for (int s = 0; s < n_fit; ++s) {
+    const double t = duration * s / (n_fit - 1);
+    for (int seg = 0; seg < model.size(); ++seg)
+      pose[seg] = trajectory.rotations[seg].evaluate(t).q;
+    fit_times.push_back(t);
+    fit_points.push_back(ballistic_com(motion.takeoff, t) - com_with_root_at_origin(model, pose));
+  }
+  trajectory.root_translation = VectorSpline<double>(
+      trajectory.knots, fit_vector_spline(trajectory.knots, fit_times, fit_points));
+  return trajectory;
+}
+
+Trajectory<double> trajectory_from_stored_spline(const StoredSpline& spline,
+                                                 const BodyModel& model) {
+  if (static_cast<int>(spline.joint_control.size()) != model.size())
+    throw std::invalid_argument("stored spline has a different number of joints than the model");
+  Trajectory<double> trajectory;
+  trajectory.knots = spline.knots;
+  trajectory.root_translation = VectorSpline<double>(spline.knots, spline.root_translation);
+  for (const auto& control : spline.joint_control)
+    trajectory.rotations.emplace_back(spline.knots, control);
+  return trajectory;
+}
+
+StoredSpline to_stored_spline(const Trajectory<double>& trajectory) {
+  StoredSpline out;
+  out.knots = trajectory.knots;
+  out.root_translation = trajectory.root_translation.control();
+  for (const auto& r : trajectory.rotations)
+    out.joint_control.push_back(r.control());
+  return out;
+}
+
+Trajectory<double> motion_trajectory(const Motion& motion, const BodyModel& model,
+                                     const InterpolationOptions& options) {
+  if (motion.spline) return trajectory_from_stored_spline(*motion.spline, model);
+  return interpolate_keyframes(motion, model, options);
+}
+
+}  // namespace saltus

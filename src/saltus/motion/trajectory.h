@@ -1,0 +1,39 @@
+#pragma once
+/// @file
+/// A continuous motion: root translation B(t) as a cubic B-spline and one quaternion B-spline per
+/// segment, all on one shared clamped knot vector (DESIGN §5). Templated so that the optimiser can
+/// evaluate it with automatic-differentiation scalars.
+
+#include <vector>
+
+#include "saltus/dynamics/body_state.h"
+#include "saltus/math/quaternion_spline.h"
+#include "saltus/math/vector_spline.h"
+
+namespace saltus {
+
+template <typename Scalar>
+struct Trajectory {
+  std::vector<Scalar> knots;                        ///< clamped cubic knot vector, [0, T]
+  VectorSpline<Scalar> root_translation;            ///< abdomen origin, world, m
+  std::vector<QuaternionSpline<Scalar>> rotations;  ///< per segment (0 = root orientation)
+
+  double duration() const { return value_of(knots.back()); }
+  int segment_count() const { return static_cast<int>(rotations.size()); }
+
+  /// Fills `out` (sized for the model) with the state at time t: positions, rates, accelerations.
+  void sample(const Scalar& t, BodyState<Scalar>& out) const {
+    const VectorSample<Scalar> b = root_translation.evaluate(t);
+    out.root_position = b.position;
+    out.root_velocity = b.velocity;
+    out.root_acceleration = b.acceleration;
+    for (std::size_t k = 0; k < rotations.size(); ++k) {
+      const QuaternionSample<Scalar> s = rotations[k].evaluate(t);
+      out.joints[k].q = s.q;
+      out.joints[k].omega = s.omega;
+      out.joints[k].alpha = s.alpha;
+    }
+  }
+};
+
+}  // namespace saltus
