@@ -19,6 +19,10 @@ struct Case {
   Eigen::Vector3d angular_momentum;
 };
 
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << c.name;
+}
+
 class FreeFlight : public ::testing::TestWithParam<Case> {};
 
 JointMotion joints_of(const Trajectory<double>& trajectory) {

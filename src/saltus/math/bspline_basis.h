@@ -20,8 +20,8 @@ namespace saltus {
 /// basis B̃_j(t) = Σ_{i >= j} B_i(t) for j = s-3..s (B̃_{s-3} ≡ 1 on the span).
 template <typename Scalar>
 struct SpanBasis {
-  int span = 3;          ///< s; the first active control point is s - 3
-  Scalar value[3][4];    ///< value[d][j] = d-th time derivative of B_{s-3+j}(t)
+  int span = 3;             ///< s; the first active control point is s - 3
+  Scalar value[3][4];       ///< value[d][j] = d-th time derivative of B_{s-3+j}(t)
   Scalar cumulative[3][4];  ///< cumulative[d][j] = d-th time derivative of B̃_{s-3+j}(t)
   int first_control() const { return span - 3; }
 };
@@ -52,7 +52,9 @@ int find_span(const std::vector<Scalar>& knots, double t);
 template <typename Scalar>
 SpanBasis<Scalar> cubic_basis(const std::vector<Scalar>& knots, const Scalar& t);
 
-/// Basis on a given span (for callers that fix the span, e.g. at a keyframe time).
+/// Basis on a given span (for callers that fix the span, e.g. at a keyframe time, or the left
+/// limit at a knot). Zero-length knot intervals (the clamped ends) use 0/0 := 0, decided on
+/// values. Throws std::out_of_range for a span outside [3, n-1].
 template <typename Scalar>
 SpanBasis<Scalar> cubic_basis_on_span(const std::vector<Scalar>& knots, int span, const Scalar& t);
 

@@ -8,10 +8,17 @@ namespace saltus {
 namespace {
 int axis_index(char c) {
   switch (c) {
-    case 'X': case 'x': return 0;
-    case 'Y': case 'y': return 1;
-    case 'Z': case 'z': return 2;
-    default: return -1;
+    case 'X':
+    case 'x':
+      return 0;
+    case 'Y':
+    case 'y':
+      return 1;
+    case 'Z':
+    case 'z':
+      return 2;
+    default:
+      return -1;
   }
 }
 

@@ -33,32 +33,53 @@ class QuaternionSpline {
  public:
   QuaternionSpline() = default;
   /// @param knots    clamped cubic knot vector (see bspline_basis.h)
-  /// @param control  control_count(knots) unit quaternions, consecutive ones sign-aligned
+  /// @param control  control_count(knots) unit quaternions. Their signs are part of the curve:
+  ///                  w_j = log(c_{j-1}⁻¹ c_j) turns the short way (<= 180°) when consecutive
+  ///                  controls have a non-negative dot product and the long way otherwise, so
+  ///                  never flip a control point of a given curve. Throws std::invalid_argument
+  ///                  if the count does not match the knots.
   QuaternionSpline(std::vector<Scalar> knots, std::vector<Quat<Scalar>> control);
 
   const std::vector<Scalar>& knots() const { return knots_; }
   const std::vector<Quat<Scalar>>& control() const { return control_; }
 
-  /// Orientation and body-frame derivatives at time t (t outside the knot range is clamped).
+  /// Orientation and body-frame derivatives at time t. The span is found by binary search;
+  /// an interior knot belongs to the span on its right, t = T to the last span (left limit).
+  /// t outside the knot range is clamped to the nearest end knot (value, ω and α of that end).
   QuaternionSample<Scalar> evaluate(const Scalar& t) const;
 
  private:
   std::vector<Scalar> knots_;
   std::vector<Quat<Scalar>> control_;
+  /// w_j = log(c_{j-1}⁻¹ c_j) for j >= 1 (entry 0 unused), computed once by the constructor:
+  /// they do not depend on t, and recomputing them (an atan2 each) would dominate evaluate().
+  std::vector<Vec3<Scalar>> relative_log_;
 };
 
 struct QuaternionFitOptions {
-  /// Weight of the smoothness term Σ‖ω_{j+1} − ω_j‖² that makes the (underdetermined) fit
-  /// unique; small so the curve still passes through the keyframes.
+  /// Weight of the smoothness term Σ‖σ_{j+1} ω_{j+1} − σ_j ω_j‖² that makes the
+  /// (underdetermined) fit unique; ω_j = log(q_{j−1}⁻¹ q_j), σ_j = h̄/(τ_j − τ_{j−1}) with τ the
+  /// Greville abscissae and h̄ their mean spacing (σ ≡ 1 for uniform spacing). The normalisation
+  /// makes a constant-rate rotation cost nothing, so the clamped ends do not spin up. The
+  /// penalised optimum misses the keyframes by O(weight), so when the keyframes can be met
+  /// exactly the fit finishes with minimum-norm Gauss-Newton projections onto them.
   double smoothness_weight = 1e-6;
   int max_iterations = 100;
   double tolerance = 1e-12;  ///< stop when the step norm falls below this
 };
 
 /// The paper's §5.2 fit: control quaternions such that the curve on `knots` passes as near as
-/// possible through targets[i] at times[i] (Gauss-Newton in local tangent coordinates,
-/// q_j = q̄_j·exp(δ_j)). Targets are sign-aligned to their predecessors first. The result is
-/// sign-aligned (consecutive control quaternions have non-negative dot product).
+/// possible through targets[i] at times[i] (Levenberg-Marquardt in local tangent coordinates,
+/// q_j = q̄_j·exp(δ_j), exact Jacobians by forward AD). Targets (any order) are sorted by time and
+/// sign-aligned to their predecessors first; the start is the slerp of the targets at each
+/// control point's Greville abscissa. When there are no more targets than control points the
+/// curve interpolates them to rounding (~1e-15 rad). The result is sign-aligned (consecutive
+/// control quaternions have non-negative dot product) except where the keyframes force more than
+/// 180° between consecutive controls (fast turns over short knot intervals, e.g. 90° in 0.3 s
+/// next to 90° in 0.6 s with knots at the keyframes only): there the negative dot product is what
+/// the curve needs, and flipping it would change the curve.
+/// Throws std::invalid_argument for size mismatches, fewer than 8 knots, breakpoints that do not
+/// increase strictly, or times outside [knots[3], knots[n]].
 std::vector<Quat<double>> fit_quaternion_spline(const std::vector<double>& knots,
                                                 const std::vector<double>& times,
                                                 const std::vector<Quat<double>>& targets,

@@ -16,8 +16,8 @@ namespace saltus {
 
 /// Take-off state of the whole body's centre of mass (world frame).
 struct Takeoff {
-  Eigen::Vector3d com_position = Eigen::Vector3d(0, 1, 0);   ///< m
-  Eigen::Vector3d com_velocity = Eigen::Vector3d::Zero();    ///< m/s
+  Eigen::Vector3d com_position = Eigen::Vector3d(0, 1, 0);  ///< m
+  Eigen::Vector3d com_velocity = Eigen::Vector3d::Zero();   ///< m/s
   /// Angular momentum about the CoM, world frame, kg·m²/s. When absent, free-flight simulation
   /// uses the one implied by the interpolated keyframes at t = 0.
   std::optional<Eigen::Vector3d> angular_momentum;
@@ -42,7 +42,7 @@ struct Keyframe {
 /// ("spline" member of the motion file). Knots are the full clamped cubic knot vector.
 struct StoredSpline {
   std::vector<double> knots;
-  std::vector<Eigen::Vector3d> root_translation;              ///< control points
+  std::vector<Eigen::Vector3d> root_translation;               ///< control points
   std::vector<std::vector<Eigen::Quaterniond>> joint_control;  ///< [segment][control index]
 };
 

@@ -1,0 +1,141 @@
+#pragma once
+/// @file
+/// Implementation of quaternion_spline.h (included from there; do not include directly).
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace saltus {
+
+namespace detail {
+
+/// atan2 for plain scalars.
+inline double atan2_same_type(double y, double x) {
+  return std::atan2(y, x);
+}
+
+/// atan2 for AutoDiffScalar keeping the derivative type: Eigen 3.4's own overload returns
+/// Matrix<double, Dynamic, 1> derivatives, which heap-allocates inside every fixed-size AD
+/// evaluation (and makes GCC 12 -O2 emit a false -Wuse-after-free in make_coherent).
+/// d atan2(y, x) = (x dy − y dx)/(x² + y²); an empty dynamic derivative vector means zero.
+template <typename Der>
+Eigen::AutoDiffScalar<Der> atan2_same_type(const Eigen::AutoDiffScalar<Der>& y,
+                                           const Eigen::AutoDiffScalar<Der>& x) {
+  const double yv = y.value();
+  const double xv = x.value();
+  const double inv_r2 = 1.0 / (xv * xv + yv * yv);
+  Eigen::AutoDiffScalar<Der> out;
+  out.value() = std::atan2(yv, xv);
+  if (y.derivatives().size() == 0) {
+    out.derivatives() = x.derivatives() * (-yv * inv_r2);
+  } else if (x.derivatives().size() == 0) {
+    out.derivatives() = y.derivatives() * (xv * inv_r2);
+  } else {
+    out.derivatives() = (y.derivatives() * xv - x.derivatives() * yv) * inv_r2;
+  }
+  return out;
+}
+
+/// The Kim-Kim-Shin log of quaternion.h's quat_log (exp(v) = rotation by 2|v|, |v| = θ in
+/// [0, π], no sign folding), with the same Taylor switch, but built on atan2_same_type so that
+/// fixed-size AD stays allocation-free in the hot span evaluation.
+template <typename Scalar>
+Vec3<Scalar> span_log(const Quat<Scalar>& q) {
+  using std::sqrt;
+  const Vec3<Scalar> u = q.vec();
+  const Scalar s2 = u.squaredNorm();
+  Scalar factor;  // θ / sin θ with θ = atan2(|u|, w)
+  if (value_of(s2) < 1e-12 && value_of(q.w()) > 0) {
+    // atan2(s, w)/s = (1/w)(1 − s²/(3w²) + ...) for small s, w > 0.
+    const Scalar w = q.w();
+    factor = (Scalar(1.0) - s2 / (Scalar(3.0) * w * w)) / w;
+  } else {
+    const Scalar s = sqrt(s2);
+    factor = atan2_same_type(s, q.w()) / s;
+  }
+  return factor * u;
+}
+
+}  // namespace detail
+
+namespace detail {
+
+/// The span evaluation once the relative rotations w_j = log(c_{j−1}⁻¹ c_j) are known.
+/// Kim, Kim & Shin (1995) eq. (11) in local form: q = c0 · Π_{j=1..3} exp(w_j B̃_j(t)). The
+/// product is built left to right; for P = A·B with B = exp(w b(t)) (w constant, so B and Ḃ
+/// commute with w):
+///   P*Ṗ = B*(A*Ȧ)B + B*Ḃ  ⇒  ω_P = R(B)ᵀ ω_A + 2 w ḃ,
+///   α_P = R(B)ᵀ α_A − (2 w ḃ) × (R(B)ᵀ ω_A) + 2 w b̈   (using d/dt R(B)ᵀ = −[ω_B]× R(B)ᵀ).
+/// The constant c0 starts with ω = α = 0. Unit norm holds by construction: a product of exps.
+template <typename Scalar>
+QuaternionSample<Scalar> evaluate_span_from_logs(const Quat<Scalar>& c0, const Vec3<Scalar> (&w)[3],
+                                                 const SpanBasis<Scalar>& basis) {
+  // The three factors are independent of each other: computing them first lets their square
+  // roots and sin/cos overlap instead of forming one long dependency chain.
+  Quat<Scalar> step[3];
+  for (int j = 0; j < 3; ++j)
+    step[j] = quat_exp(Vec3<Scalar>(w[j] * basis.cumulative[0][j + 1]));
+  const Scalar two(2.0);
+  QuaternionSample<Scalar> out;
+  out.omega = w[0] * (two * basis.cumulative[1][1]);
+  out.alpha = w[0] * (two * basis.cumulative[2][1]);
+  for (int j = 1; j < 3; ++j) {
+    const Vec3<Scalar> omega_step = w[j] * (two * basis.cumulative[1][j + 1]);
+    const Vec3<Scalar> alpha_step = w[j] * (two * basis.cumulative[2][j + 1]);
+    const Mat3<Scalar> rt = step[j].toRotationMatrix().transpose();
+    const Vec3<Scalar> omega_rotated = rt * out.omega;
+    out.alpha = rt * out.alpha - omega_step.cross(omega_rotated) + alpha_step;
+    out.omega = omega_rotated + omega_step;
+  }
+  out.q = c0 * step[0] * step[1] * step[2];
+  return out;
+}
+
+}  // namespace detail
+
+template <typename Scalar>
+QuaternionSample<Scalar> evaluate_quaternion_span(const Quat<Scalar>& c0, const Quat<Scalar>& c1,
+                                                  const Quat<Scalar>& c2, const Quat<Scalar>& c3,
+                                                  const SpanBasis<Scalar>& basis) {
+  const Vec3<Scalar> w[3] = {detail::span_log(Quat<Scalar>(c0.conjugate() * c1)),
+                             detail::span_log(Quat<Scalar>(c1.conjugate() * c2)),
+                             detail::span_log(Quat<Scalar>(c2.conjugate() * c3))};
+  return detail::evaluate_span_from_logs(c0, w, basis);
+}
+
+template <typename Scalar>
+QuaternionSpline<Scalar>::QuaternionSpline(std::vector<Scalar> knots,
+                                           std::vector<Quat<Scalar>> control)
+    : knots_(std::move(knots)), control_(std::move(control)) {
+  if (knots_.size() < 8)
+    throw std::invalid_argument(
+        "QuaternionSpline: a cubic knot vector needs at least 8 knots, got " +
+        std::to_string(knots_.size()));
+  if (static_cast<int>(control_.size()) != control_count(knots_))
+    throw std::invalid_argument("QuaternionSpline: " + std::to_string(knots_.size()) +
+                                " knots need " + std::to_string(control_count(knots_)) +
+                                " control quaternions, got " + std::to_string(control_.size()));
+  relative_log_.resize(control_.size(), Vec3<Scalar>::Zero());
+  for (std::size_t j = 1; j < control_.size(); ++j)
+    relative_log_[j] = detail::span_log(Quat<Scalar>(control_[j - 1].conjugate() * control_[j]));
+}
+
+template <typename Scalar>
+QuaternionSample<Scalar> QuaternionSpline<Scalar>::evaluate(const Scalar& t) const {
+  const int n = control_count(knots_);
+  // Outside [knots[3], knots[n]] the curve is evaluated at the nearest end (value, ω and α of
+  // that end); the clamped time is the end knot itself, so knot derivatives stay exact.
+  const Scalar* tc = &t;
+  if (value_of(t) < value_of(knots_[3])) tc = &knots_[3];
+  if (value_of(t) > value_of(knots_[n])) tc = &knots_[n];
+  const int s = find_span(knots_, value_of(*tc));
+  const SpanBasis<Scalar> basis = cubic_basis_on_span(knots_, s, *tc);
+  // Same as evaluate_quaternion_span(control_[s−3..s], basis), with the logs precomputed.
+  const Vec3<Scalar> w[3] = {relative_log_[s - 2], relative_log_[s - 1], relative_log_[s]};
+  return detail::evaluate_span_from_logs(control_[s - 3], w, basis);
+}
+
+}  // namespace saltus

@@ -1,0 +1,220 @@
+// The command-line contract (DESIGN §6, issue "physics core"): outputs on success; on bad input
+// exit status 2, one message naming the file and the field, and nothing left behind.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "support/cli_runner.h"
+
+namespace saltus {
+namespace {
+
+namespace fs = std::filesystem;
+using test::run_cli;
+using test::TempDir;
+
+nlohmann::json read_json(const std::string& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);
+}
+
+nlohmann::json m1_json() {
+  return read_json(test::m1_path());
+}
+
+/// Only the given names exist in the folder: no temporary folders or partial files.
+void expect_folder_holds_only(const fs::path& folder, std::set<std::string> names) {
+  std::set<std::string> found;
+  for (const auto& entry : fs::directory_iterator(folder))
+    found.insert(entry.path().filename().string());
+  EXPECT_EQ(found, names);
+}
+
+TEST(Cli, HelpOnEveryVerb) {
+  for (const char* verb : {"evaluate", "simulate"}) {
+    const auto run = run_cli(std::string(verb) + " --help");
+    EXPECT_EQ(run.status, 0) << verb;
+    EXPECT_NE(run.output.find("--out"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("--samples"), std::string::npos) << run.output;
+  }
+  const auto top = run_cli("--help");
+  EXPECT_EQ(top.status, 0);
+  EXPECT_NE(top.output.find("evaluate"), std::string::npos);
+  EXPECT_NE(top.output.find("simulate"), std::string::npos);
+}
+
+TEST(Cli, UsageErrorsExitWithTwo) {
+  EXPECT_EQ(run_cli("").status, 2);
+  EXPECT_EQ(run_cli("frobnicate").status, 2);
+  EXPECT_EQ(run_cli("evaluate " + test::m1_path()).status, 2);  // --out missing
+  TempDir dir;
+  const auto run =
+      run_cli("evaluate " + test::m1_path() + " --out " + (dir / "out") + " --samples 1");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.output.find("--samples"), std::string::npos) << run.output;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+TEST(Cli, EvaluateWritesTheDocumentedOutputs) {
+  TempDir dir;
+  const auto run =
+      run_cli("evaluate " + test::m1_path() + " --out " + (dir / "out") + " --samples 101");
+  ASSERT_EQ(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find("average root force"), std::string::npos) << run.output;
+  expect_folder_holds_only(dir.path(), {"out"});
+  expect_folder_holds_only(dir.path() / "out", {"result.json", "trajectory.csv", "model.json"});
+  const auto result = read_json(dir / "out/result.json");
+  for (const char* key :
+       {"status", "iterations", "solve_seconds", "variables", "constraints", "before", "after",
+        "keyframe_times_before", "keyframe_times_after", "max_translation_error_m",
+        "max_quaternion_error", "max_rotation_error_deg"})
+    EXPECT_TRUE(result.contains(key)) << key;
+  for (const char* key : {"objective", "avg_root_force", "rms_force_N", "rms_moment_Nm",
+                          "max_force_N", "max_moment_Nm"})
+    EXPECT_TRUE(result["before"][key].is_number()) << key;
+  const double j = result["before"]["objective"];
+  EXPECT_NEAR(result["before"]["avg_root_force"].get<double>(), std::sqrt(j / 6), 1e-12);
+  EXPECT_EQ(result["keyframe_times_before"].size(), 5u);
+
+  std::ifstream csv(dir / "out/trajectory.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header.rfind("t,abdomen.x,abdomen.y,abdomen.z,abdomen.qw", 0), 0u) << header;
+  EXPECT_NE(header.find(",com_x,com_y,com_z,root_fx,root_fy,root_fz,root_mx,root_my,root_mz,"
+                        "res_fx,res_fy,res_fz,res_mx,res_my,res_mz"),
+            std::string::npos);
+  int rows = 0;
+  for (std::string line; std::getline(csv, line);)
+    ++rows;
+  EXPECT_EQ(rows, 101);
+  EXPECT_EQ(read_json(dir / "out/model.json")["name"], "zatsiorsky-66kg");
+}
+
+TEST(Cli, SimulateReportsTheLanding) {
+  TempDir dir;
+  const auto run = run_cli("simulate " + test::m1_path() + " --out " + (dir / "sim"));
+  ASSERT_EQ(run.status, 0) << run.output;
+  const auto result = read_json(dir / "sim/result.json");
+  ASSERT_TRUE(result.contains("landing"));
+  EXPECT_EQ(result["landing"]["joint_error_deg"].size(), 13u);
+  EXPECT_TRUE(result["landing"]["root_error_deg"].is_number());
+  // A free flight needs no root force (up to integration error).
+  EXPECT_LT(result["before"]["avg_root_force"].get<double>(), 1e-6);
+}
+
+TEST(Cli, ReplacesAnEarlierResultButNotOtherFolders) {
+  TempDir dir;
+  const std::string out = dir / "out";
+  ASSERT_EQ(run_cli("evaluate " + test::m1_path() + " --out " + out + " --samples 50").status, 0);
+  ASSERT_EQ(run_cli("evaluate " + test::m1_path() + " --out " + out + " --samples 60").status, 0);
+  EXPECT_EQ(read_json(out + "/result.json")["samples"], 60);
+
+  const std::string precious = dir / "precious";
+  fs::create_directories(precious);
+  test::write_text(precious + "/thesis.txt", "do not delete");
+  const auto run = run_cli("evaluate " + test::m1_path() + " --out " + precious);
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.output.find("not overwriting"), std::string::npos) << run.output;
+  expect_folder_holds_only(precious, {"thesis.txt"});
+}
+
+/// A malformed-input case: how to spoil the M1 document, and what the message must name.
+struct BadInput {
+  const char* name;
+  std::function<void(nlohmann::json& motion, nlohmann::json& model)> spoil;
+  std::vector<std::string> message_parts;
+  bool raw_text = false;  ///< write `raw` instead of the JSON
+  const char* raw = "";
+};
+
+void PrintTo(const BadInput& input, std::ostream* os) {
+  *os << input.name;
+}
+
+class CliBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(CliBadInput, ExitsWithTwoNamesFileAndFieldLeavesNothing) {
+  TempDir dir;
+  nlohmann::json motion = m1_json();
+  nlohmann::json model =
+      read_json(std::string(SALTUS_RESOURCES_DIR) + "/models/zatsiorsky-66kg.json");
+  motion["model"] = "my-model.json";  // relative to the motion file
+  GetParam().spoil(motion, model);
+  const std::string motion_path = dir / "bad.motion.json";
+  if (GetParam().raw_text)
+    test::write_text(motion_path, GetParam().raw);
+  else
+    test::write_text(motion_path, motion.dump(2));
+  test::write_text(dir / "my-model.json", model.dump(2));
+
+  for (const char* verb : {"evaluate", "simulate"}) {
+    const auto run = run_cli(std::string(verb) + " " + motion_path + " --out " + (dir / "out"));
+    EXPECT_EQ(run.status, 2) << verb << ": " << run.output;
+    for (const auto& part : GetParam().message_parts)
+      EXPECT_NE(run.output.find(part), std::string::npos)
+          << verb << ": expected \"" << part << "\" in: " << run.output;
+    // One clear message, not a crash dump.
+    EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
+    expect_folder_holds_only(dir.path(), {"bad.motion.json", "my-model.json"});
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, CliBadInput,
+    ::testing::Values(
+        BadInput{"syntax",
+                 [](auto&, auto&) {},
+                 {"bad.motion.json", "invalid JSON", "line"},
+                 true,
+                 "{ \"format\": \"saltus-motion/1\", \"keyframes\": [ }"},
+        BadInput{
+            "nan_literal",
+            [](auto&, auto&) {},
+            {"bad.motion.json", "invalid JSON"},
+            true,
+            "{ \"format\": \"saltus-motion/1\", \"takeoff\": { \"com_position\": [NaN, 1, 0] } }"},
+        BadInput{"wrong_type",
+                 [](auto& m, auto&) { m["takeoff"]["com_velocity"][1] = "fast"; },
+                 {"bad.motion.json", "/takeoff/com_velocity/1", "number"}},
+        BadInput{"unsorted_times",
+                 [](auto& m, auto&) { m["keyframes"][2]["time"] = 0.3; },
+                 {"bad.motion.json", "/keyframes/2/time"}},
+        BadInput{"missing_joint",
+                 [](auto& m, auto&) { m["keyframes"][1]["rotations"].erase("knee_l"); },
+                 {"bad.motion.json", "/keyframes/1/rotations", "knee_l"}},
+        BadInput{"unknown_joint",
+                 [](auto& m, auto&) {
+                   m["keyframes"][3]["rotations"]["tail"] = {1, 0, 0, 0};
+                 },
+                 {"bad.motion.json", "/keyframes/3/rotations", "tail"}},
+        BadInput{"non_unit_quaternion",
+                 [](auto& m, auto&) {
+                   m["keyframes"][0]["rotations"]["hip_r"] = {1.2, 0, 0, 0};
+                 },
+                 {"bad.motion.json", "/keyframes/0/rotations/hip_r", "norm"}},
+        BadInput{"negative_mass",
+                 [](auto&, auto& model) { model["segments"][4]["mass"] = -1.1; },
+                 {"my-model.json", "/segments/4/mass"}},
+        BadInput{"unknown_parent",
+                 [](auto&, auto& model) { model["segments"][5]["parent"] = "tail"; },
+                 {"my-model.json", "/segments/5/parent", "tail"}},
+        BadInput{"missing_model",
+                 [](auto& m, auto&) { m["model"] = "no-such-model"; },
+                 {"bad.motion.json", "/model", "no-such-model"}}),
+    [](const ::testing::TestParamInfo<BadInput>& param_info) {
+      return std::string(param_info.param.name);
+    });
+
+TEST(Cli, MissingMotionFileIsNamed) {
+  TempDir dir;
+  const auto run = run_cli("evaluate " + (dir / "nope.motion.json") + " --out " + (dir / "out"));
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.output.find("nope.motion.json"), std::string::npos) << run.output;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+}  // namespace
+}  // namespace saltus

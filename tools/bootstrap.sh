@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# One entry point for a fresh Debian 12 machine (run as root, or as a user with sudo):
+#   bash tools/bootstrap.sh demo   installs what is missing, builds, runs the bundled example
+#   bash tools/bootstrap.sh test   installs what is missing, builds, runs the full test suite
+# .ci/run calls the "test" form, so CI and the README can never disagree.
+set -euo pipefail
+
+mode="${1:-demo}"
+case "$mode" in demo|test) ;; *) echo "usage: bash tools/bootstrap.sh demo|test" >&2; exit 2 ;; esac
+
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$root"
+
+# Debian packages the build and the tests need (see README "Dependencies").
+packages=(build-essential cmake pkg-config clang-format
+          libeigen3-dev coinor-libipopt-dev nlohmann-json3-dev libcli11-dev
+          libgtest-dev libbenchmark-dev)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "== installing: ${missing[*]}"
+  sudo_cmd=()
+  if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null || { echo "need root (or sudo) to install: ${missing[*]}" >&2; exit 1; }
+    sudo_cmd=(sudo)
+  fi
+  "${sudo_cmd[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+echo "== configure and build (Release)"
+cmake --preset release >/dev/null
+cmake --build --preset release -j"$(nproc)"
+
+if [ "$mode" = demo ]; then
+  motion=examples/motions/M1-straight-back-somersault.motion.json
+  echo "== saltus evaluate $motion"
+  build/release/bin/saltus evaluate "$motion" --out out/M1-evaluate
+  echo "== saltus simulate $motion"
+  build/release/bin/saltus simulate "$motion" --out out/M1-simulate
+  exit 0
+fi
+
+echo "== format check (clang-format, .clang-format)"
+mapfile -t sources < <(git ls-files '*.h' '*.cpp' 2>/dev/null || find src tests -name '*.h' -o -name '*.cpp')
+clang-format --dry-run --Werror "${sources[@]}"
+
+echo "== tests"
+ctest --preset release --output-on-failure --no-tests=error -j"$(nproc)"
