@@ -4,8 +4,8 @@
 /// scalar so that automatic differentiation passes through.
 ///
 /// Convention for exp/log (Kim-Kim-Shin 1995): exp(v) = (cos|v|, sin|v| v/|v|), a rotation by the
-/// angle 2|v| about v. log is its inverse on unit quaternions with non-negative w... and beyond:
-/// log returns |v| = θ in [0, π], so it does not fold the sign of q.
+/// angle 2|v| about v. log is its inverse on unit quaternions:
+/// it returns |v| = θ in [0, π], so it does not fold the sign of q.
 
 #include <Eigen/Geometry>
 #include <string>
@@ -41,10 +41,10 @@ Quat<Scalar> quat_exp(const Vec3<Scalar>& v) {
   return Quat<Scalar>(c, sinc * v.x(), sinc * v.y(), sinc * v.z());
 }
 
-/// log of a unit quaternion: the v with exp(v) = q, |v| in [0, π].
+/// log of a unit quaternion: the v with exp(v) = q, |v| in [0, π]. Allocation-free for
+/// fixed-size AD scalars (atan2_same_type).
 template <typename Scalar>
 Vec3<Scalar> quat_log(const Quat<Scalar>& q) {
-  using std::atan2;
   using std::sqrt;
   const Vec3<Scalar> u = q.vec();
   const Scalar s2 = u.squaredNorm();
@@ -55,7 +55,7 @@ Vec3<Scalar> quat_log(const Quat<Scalar>& q) {
     factor = (Scalar(1) - s2 / (Scalar(3) * w * w)) / w;
   } else {
     const Scalar s = sqrt(s2);
-    factor = atan2(s, q.w()) / s;
+    factor = atan2_same_type(s, q.w()) / s;
   }
   return factor * u;
 }
@@ -64,9 +64,8 @@ Vec3<Scalar> quat_log(const Quat<Scalar>& q) {
 template <typename Scalar>
 Scalar rotation_angle_between(const Quat<Scalar>& a, const Quat<Scalar>& b) {
   using std::abs;
-  using std::atan2;
   const Quat<Scalar> d = a.conjugate() * b;
-  return Scalar(2) * atan2(d.vec().norm(), abs(d.w()));
+  return Scalar(2) * atan2_same_type(d.vec().norm(), abs(d.w()));
 }
 
 /// ‖a − b‖ after flipping b to a's hemisphere: the paper's quaternion distance (eq. 3).

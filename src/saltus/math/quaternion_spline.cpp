@@ -65,7 +65,7 @@ template <typename Scalar>
 Vec3<Scalar> keyframe_error(const Quat<double>& target, const Quat<Scalar>& q) {
   Quat<Scalar> d = Quat<Scalar>(target.conjugate().cast<Scalar>()) * q;
   if (value_of(d.w()) < 0.0) d.coeffs() = -d.coeffs();
-  return detail::span_log(d);
+  return quat_log(d);
 }
 
 /// The smoothness residual of QuaternionFitOptions for controls j−1, j, j+1:
@@ -78,8 +78,8 @@ Vec3<Scalar> keyframe_error(const Quat<double>& target, const Quat<Scalar>& q) {
 template <typename Scalar>
 Vec3<Scalar> control_difference(const FitProblem& p, int j, const Quat<Scalar>& a,
                                 const Quat<Scalar>& b, const Quat<Scalar>& c) {
-  return detail::span_log(Quat<Scalar>(b.conjugate() * c)) * Scalar(p.rate_scale[j + 1]) -
-         detail::span_log(Quat<Scalar>(a.conjugate() * b)) * Scalar(p.rate_scale[j]);
+  return quat_log(Quat<Scalar>(b.conjugate() * c)) * Scalar(p.rate_scale[j + 1]) -
+         quat_log(Quat<Scalar>(a.conjugate() * b)) * Scalar(p.rate_scale[j]);
 }
 
 Eigen::VectorXd residuals(const FitProblem& p, const std::vector<Quat<double>>& q) {

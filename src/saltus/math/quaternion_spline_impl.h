@@ -12,57 +12,6 @@ namespace saltus {
 
 namespace detail {
 
-/// atan2 for plain scalars.
-inline double atan2_same_type(double y, double x) {
-  return std::atan2(y, x);
-}
-
-/// atan2 for AutoDiffScalar keeping the derivative type: Eigen 3.4's own overload returns
-/// Matrix<double, Dynamic, 1> derivatives, which heap-allocates inside every fixed-size AD
-/// evaluation (and makes GCC 12 -O2 emit a false -Wuse-after-free in make_coherent).
-/// d atan2(y, x) = (x dy − y dx)/(x² + y²); an empty dynamic derivative vector means zero.
-template <typename Der>
-Eigen::AutoDiffScalar<Der> atan2_same_type(const Eigen::AutoDiffScalar<Der>& y,
-                                           const Eigen::AutoDiffScalar<Der>& x) {
-  const double yv = y.value();
-  const double xv = x.value();
-  const double inv_r2 = 1.0 / (xv * xv + yv * yv);
-  Eigen::AutoDiffScalar<Der> out;
-  out.value() = std::atan2(yv, xv);
-  if (y.derivatives().size() == 0) {
-    out.derivatives() = x.derivatives() * (-yv * inv_r2);
-  } else if (x.derivatives().size() == 0) {
-    out.derivatives() = y.derivatives() * (xv * inv_r2);
-  } else {
-    out.derivatives() = (y.derivatives() * xv - x.derivatives() * yv) * inv_r2;
-  }
-  return out;
-}
-
-/// The Kim-Kim-Shin log of quaternion.h's quat_log (exp(v) = rotation by 2|v|, |v| = θ in
-/// [0, π], no sign folding), with the same Taylor switch, but built on atan2_same_type so that
-/// fixed-size AD stays allocation-free in the hot span evaluation.
-template <typename Scalar>
-Vec3<Scalar> span_log(const Quat<Scalar>& q) {
-  using std::sqrt;
-  const Vec3<Scalar> u = q.vec();
-  const Scalar s2 = u.squaredNorm();
-  Scalar factor;  // θ / sin θ with θ = atan2(|u|, w)
-  if (value_of(s2) < 1e-12 && value_of(q.w()) > 0) {
-    // atan2(s, w)/s = (1/w)(1 − s²/(3w²) + ...) for small s, w > 0.
-    const Scalar w = q.w();
-    factor = (Scalar(1.0) - s2 / (Scalar(3.0) * w * w)) / w;
-  } else {
-    const Scalar s = sqrt(s2);
-    factor = atan2_same_type(s, q.w()) / s;
-  }
-  return factor * u;
-}
-
-}  // namespace detail
-
-namespace detail {
-
 /// The span evaluation once the relative rotations w_j = log(c_{j−1}⁻¹ c_j) are known.
 /// Kim, Kim & Shin (1995) eq. (11) in local form: q = c0 · Π_{j=1..3} exp(w_j B̃_j(t)). The
 /// product is built left to right; for P = A·B with B = exp(w b(t)) (w constant, so B and Ḃ
@@ -100,9 +49,9 @@ template <typename Scalar>
 QuaternionSample<Scalar> evaluate_quaternion_span(const Quat<Scalar>& c0, const Quat<Scalar>& c1,
                                                   const Quat<Scalar>& c2, const Quat<Scalar>& c3,
                                                   const SpanBasis<Scalar>& basis) {
-  const Vec3<Scalar> w[3] = {detail::span_log(Quat<Scalar>(c0.conjugate() * c1)),
-                             detail::span_log(Quat<Scalar>(c1.conjugate() * c2)),
-                             detail::span_log(Quat<Scalar>(c2.conjugate() * c3))};
+  const Vec3<Scalar> w[3] = {quat_log(Quat<Scalar>(c0.conjugate() * c1)),
+                             quat_log(Quat<Scalar>(c1.conjugate() * c2)),
+                             quat_log(Quat<Scalar>(c2.conjugate() * c3))};
   return detail::evaluate_span_from_logs(c0, w, basis);
 }
 
@@ -120,7 +69,7 @@ QuaternionSpline<Scalar>::QuaternionSpline(std::vector<Scalar> knots,
                                 " control quaternions, got " + std::to_string(control_.size()));
   relative_log_.resize(control_.size(), Vec3<Scalar>::Zero());
   for (std::size_t j = 1; j < control_.size(); ++j)
-    relative_log_[j] = detail::span_log(Quat<Scalar>(control_[j - 1].conjugate() * control_[j]));
+    relative_log_[j] = quat_log(Quat<Scalar>(control_[j - 1].conjugate() * control_[j]));
 }
 
 template <typename Scalar>
