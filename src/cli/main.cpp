@@ -1,5 +1,6 @@
 // `saltus`: command-line front end. Parses arguments, calls the library, prints a summary.
-// Exit status: 0 success, 2 bad input (message names file and field), 1 internal error.
+// Exit status: 0 success, 2 bad input (message names file and field), 3 optimisation did not
+// converge (results written anyway), 1 internal error.
 
 #include <CLI/CLI.hpp>
 #include <chrono>
@@ -12,11 +13,13 @@
 #include "saltus/io/input_error.h"
 #include "saltus/io/result_files.h"
 #include "saltus/motion/motion.h"
+#include "saltus/optim/optimize.h"
 
 namespace {
 
 constexpr int kExitBadInput = 2;
 constexpr int kExitInternal = 1;
+constexpr int kExitNotSolved = 3;
 
 struct CommonArgs {
   std::string motion_path;
@@ -115,6 +118,105 @@ int run_simulate(const CommonArgs& args) {
   return 0;
 }
 
+struct OptimizeArgs {
+  CommonArgs common;
+  std::string formulation = "relaxed";
+  double epsilon = 100.0;
+  bool no_timing = false;
+  int max_iterations = 100;
+  double tolerance = 1e-8;
+  double max_time_shift = 0.25;
+  double max_joint_deviation_deg = 45.0;
+};
+
+void add_optimize(CLI::App* cmd, OptimizeArgs& args) {
+  add_common(cmd, args.common);
+  cmd->add_option("--formulation", args.formulation,
+                  "relaxed: minimise the root force (the paper's model); strict: classic "
+                  "spacetime constraints |F_i| <= epsilon at every sample")
+      ->check(CLI::IsMember({"relaxed", "strict"}))
+      ->capture_default_str();
+  cmd->add_option("--epsilon", args.epsilon, "strict model's bound on each |F_i|, N or N·m")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->add_flag("--no-timing", args.no_timing, "keep the keyframe times fixed");
+  cmd->add_option("--max-iter", args.max_iterations, "Ipopt iteration limit")
+      ->check(CLI::Range(0, 100000))
+      ->capture_default_str();
+  cmd->add_option("--tol", args.tolerance, "Ipopt convergence tolerance")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->add_option("--max-time-shift", args.max_time_shift,
+                  "how far (s) a keyframe time may move from the given one")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_option("--max-joint-deviation", args.max_joint_deviation_deg,
+                  "degrees a joint's spline control point may turn away from the interpolated "
+                  "motion before a steep penalty sets in (keeps light limbs from flailing)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+}
+
+int run_optimize(const OptimizeArgs& args) {
+  const auto start = std::chrono::steady_clock::now();
+  const saltus::MotionFile file =
+      saltus::load_motion_file(args.common.motion_path, args.common.model_override);
+  saltus::OptimizeOptions options;
+  options.nlp.formulation =
+      args.formulation == "strict" ? saltus::Formulation::kStrict : saltus::Formulation::kRelaxed;
+  options.nlp.epsilon = args.epsilon;
+  options.nlp.optimize_timing = !args.no_timing;
+  options.nlp.knots_per_interval = args.common.knots_per_interval;
+  options.nlp.samples = args.common.samples;
+  options.nlp.max_time_shift = args.max_time_shift;
+  options.nlp.max_joint_deviation_deg = args.max_joint_deviation_deg;
+  options.solver.max_iterations = args.max_iterations;
+  options.solver.tolerance = args.tolerance;
+  options.solver.acceptable_tolerance = std::max(args.tolerance, 1e-6);
+
+  const bool quiet = args.common.quiet;
+  const saltus::ProgressCallback progress = [quiet](const saltus::ProgressInfo& p) {
+    if (quiet) return;
+    std::fprintf(stderr, "  iter %3d  objective %.6e  constraint violation %.2e  %.3f s\n",
+                 p.iteration, p.objective, p.constraint_violation, p.elapsed_seconds);
+  };
+  const saltus::OptimizationResult result =
+      saltus::optimize_motion(file.motion, file.model, options, progress);
+  saltus::write_optimization_outputs(args.common.out_dir, file, result, options);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!quiet) {
+    saltus::EvaluateOptions shown;
+    shown.samples = args.common.samples;
+    print_header("optimize", file, shown);
+    std::printf("  %s model, %d variables, %d constraints: %s (%s) after %d iterations, %.3f s\n",
+                args.formulation.c_str(), result.variables, result.constraints,
+                result.solve.status.c_str(), result.solve.ipopt_status.c_str(),
+                result.solve.iterations, result.solve.seconds);
+    std::printf("  average root force sqrt(J/6): %.4g N before, %.4g N after\n",
+                result.before.metrics.avg_root_force, result.after.metrics.avg_root_force);
+    std::printf("  root force  RMS %.4g -> %.4g N, max %.4g -> %.4g N\n",
+                result.before.metrics.rms_force_N, result.after.metrics.rms_force_N,
+                result.before.metrics.max_force_N, result.after.metrics.max_force_N);
+    std::printf("  root moment RMS %.4g -> %.4g N·m, max %.4g -> %.4g N·m\n",
+                result.before.metrics.rms_moment_Nm, result.after.metrics.rms_moment_Nm,
+                result.before.metrics.max_moment_Nm, result.after.metrics.max_moment_Nm);
+    std::printf("  keyframe times:");
+    for (std::size_t i = 0; i < result.after.keyframe_times.size(); ++i)
+      std::printf(" %.3f->%.3f", result.before.keyframe_times[i], result.after.keyframe_times[i]);
+    std::printf(
+        "\n  keyframes: max root translation error %.3g m (tolerance %.3g), max quaternion "
+        "error %.3g (tolerance %.3g)\n",
+        result.after.keyframe_errors.max_translation_error_m, file.motion.tolerances.translation_m,
+        result.after.keyframe_errors.max_quaternion_error, file.motion.tolerances.quaternion);
+    std::printf(
+        "  wrote %s/{result.json, trajectory_before.csv, trajectory_after.csv, model.json, "
+        "optimized.motion.json} in %.3f s\n",
+        absolute(args.common.out_dir).c_str(), seconds);
+  }
+  return result.solve.solved ? 0 : kExitNotSolved;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -139,6 +241,15 @@ int main(int argc, char** argv) {
       "follow Newton's laws; reports how far the landing is from the last keyframe");
   add_common(simulate, simulate_args);
 
+  OptimizeArgs optimize_args;
+  CLI::App* optimize = app.add_subcommand(
+      "optimize",
+      "Optimise the motion so it obeys Newton's laws as nearly as possible while keeping the "
+      "keyframes within tolerance (paper eqs. 1-4), keyframe times included; writes before/after "
+      "trajectories, result.json and optimized.motion.json. Exit status 3 if Ipopt does not "
+      "converge (results are still written)");
+  add_optimize(optimize, optimize_args);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -155,6 +266,7 @@ int main(int argc, char** argv) {
   try {
     if (evaluate->parsed()) return run_evaluate(evaluate_args);
     if (simulate->parsed()) return run_simulate(simulate_args);
+    if (optimize->parsed()) return run_optimize(optimize_args);
   } catch (const saltus::InputError& e) {
     std::fprintf(stderr, "saltus: error: %s\n", e.what());
     return kExitBadInput;

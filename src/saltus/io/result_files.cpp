@@ -52,17 +52,33 @@ void write_text_file(const std::string& path, const std::string& what,
   if (!out) throw std::runtime_error(path + ": writing " + what + " failed");
 }
 
-nlohmann::json write_outputs(const std::string& out_dir, const MotionFile& file,
-                             const std::vector<SampleRecord>& samples, nlohmann::json result) {
-  OutputFolder folder(out_dir);
-  write_text_file(folder.file("trajectory.csv"), "the trajectory",
-                  [&](std::ostream& o) { write_trajectory_csv(o, file.model, samples); });
+void write_common_files(OutputFolder& folder, const MotionFile& file,
+                        const nlohmann::json& result) {
   write_text_file(folder.file("model.json"), "the model",
                   [&](std::ostream& o) { o << body_model_to_json(file.model).dump(2) << '\n'; });
   write_text_file(folder.file("result.json"), "the result",
                   [&](std::ostream& o) { o << result.dump(2) << '\n'; });
+}
+
+void write_csv(OutputFolder& folder, const std::string& name, const BodyModel& model,
+               const std::vector<SampleRecord>& samples) {
+  write_text_file(folder.file(name), "the trajectory",
+                  [&](std::ostream& o) { write_trajectory_csv(o, model, samples); });
+}
+
+nlohmann::json write_outputs(const std::string& out_dir, const MotionFile& file,
+                             const std::vector<SampleRecord>& samples, nlohmann::json result) {
+  OutputFolder folder(out_dir);
+  write_csv(folder, "trajectory.csv", file.model, samples);
+  write_common_files(folder, file, result);
   folder.commit();
   return result;
+}
+
+void put_keyframe_errors(nlohmann::json& r, const KeyframeErrors& e) {
+  r["max_translation_error_m"] = e.max_translation_error_m;
+  r["max_quaternion_error"] = e.max_quaternion_error;
+  r["max_rotation_error_deg"] = e.max_rotation_error_deg;
 }
 
 }  // namespace
@@ -72,9 +88,7 @@ nlohmann::json evaluation_result_json(const MotionFile& file, const MotionEvalua
   nlohmann::json r = base_result(file, options, "evaluated");
   r["before"] = force_metrics_to_json(e.metrics);
   r["keyframe_times_before"] = e.keyframe_times;
-  r["max_translation_error_m"] = e.keyframe_errors.max_translation_error_m;
-  r["max_quaternion_error"] = e.keyframe_errors.max_quaternion_error;
-  r["max_rotation_error_deg"] = e.keyframe_errors.max_rotation_error_deg;
+  put_keyframe_errors(r, e.keyframe_errors);
   r["takeoff_angular_momentum"] = vector_json(e.samples.front().angular_momentum);
   return r;
 }
@@ -113,6 +127,49 @@ nlohmann::json write_simulation_outputs(const std::string& out_dir, const Motion
                                         const EvaluateOptions& options) {
   return write_outputs(out_dir, file, simulation.samples,
                        simulation_result_json(file, simulation, options));
+}
+
+nlohmann::json optimization_result_json(const MotionFile& file, const OptimizationResult& result,
+                                        const OptimizeOptions& options) {
+  EvaluateOptions evaluate;
+  evaluate.samples = options.nlp.samples;
+  evaluate.interpolation.knots_per_interval = options.nlp.knots_per_interval;
+  nlohmann::json r = base_result(file, evaluate, result.solve.status);
+  r["ipopt_status"] = result.solve.ipopt_status;
+  r["formulation"] = options.nlp.formulation == Formulation::kRelaxed ? "relaxed" : "strict";
+  if (options.nlp.formulation == Formulation::kStrict) r["epsilon"] = options.nlp.epsilon;
+  r["timing_optimized"] = options.nlp.optimize_timing;
+  r["iterations"] = result.solve.iterations;
+  r["solve_seconds"] = result.solve.seconds;
+  r["variables"] = result.variables;
+  r["constraints"] = result.constraints;
+  r["before"] = force_metrics_to_json(result.before.metrics);
+  r["after"] = force_metrics_to_json(result.after.metrics);
+  r["keyframe_times_before"] = result.before.keyframe_times;
+  r["keyframe_times_after"] = result.after.keyframe_times;
+  put_keyframe_errors(r, result.after.keyframe_errors);
+  r["tolerances"] = {{"translation_m", file.motion.tolerances.translation_m},
+                     {"quaternion", file.motion.tolerances.quaternion}};
+  return r;
+}
+
+nlohmann::json write_optimization_outputs(const std::string& out_dir, const MotionFile& file,
+                                          const OptimizationResult& result,
+                                          const OptimizeOptions& options) {
+  const nlohmann::json r = optimization_result_json(file, result, options);
+  OutputFolder folder(out_dir);
+  write_csv(folder, "trajectory_before.csv", file.model, result.before.samples);
+  write_csv(folder, "trajectory_after.csv", file.model, result.after.samples);
+  // The optimised motion names the model copy written beside it, so the folder is
+  // self-contained: `saltus evaluate DIR/optimized.motion.json` works wherever DIR goes.
+  Motion optimized = result.optimized_motion;
+  optimized.model = "model.json";
+  write_text_file(
+      folder.file("optimized.motion.json"), "the optimised motion",
+      [&](std::ostream& o) { o << motion_to_json(optimized, file.model).dump(2) << '\n'; });
+  write_common_files(folder, file, r);
+  folder.commit();
+  return r;
 }
 
 }  // namespace saltus

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "saltus/analysis/motion_analysis.h"
+#include "saltus/optim/optimize.h"
 
 namespace saltus {
 
@@ -30,5 +31,16 @@ nlohmann::json write_evaluation_outputs(const std::string& out_dir, const Motion
 nlohmann::json write_simulation_outputs(const std::string& out_dir, const MotionFile& file,
                                         const SimulationResult& simulation,
                                         const EvaluateOptions& options);
+
+/// result.json of an optimisation: before and after, solver figures, keyframe times before and
+/// after, keyframe errors of the optimised motion.
+nlohmann::json optimization_result_json(const MotionFile& file, const OptimizationResult& result,
+                                        const OptimizeOptions& options);
+
+/// Writes result.json, trajectory_before.csv, trajectory_after.csv, model.json and
+/// optimized.motion.json into `out_dir` atomically. Returns the result.json written.
+nlohmann::json write_optimization_outputs(const std::string& out_dir, const MotionFile& file,
+                                          const OptimizationResult& result,
+                                          const OptimizeOptions& options);
 
 }  // namespace saltus

@@ -1,0 +1,49 @@
+#pragma once
+/// @file
+/// Solving an Nlp with Ipopt. The adapter only translates (Drake's style): Ipopt's TNLP calls map
+/// onto Nlp; evaluation caching keyed on x is the Nlp's business. Progress is reported once per
+/// iteration and a cancel flag stops the solver cleanly at the next iteration.
+
+#include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "saltus/optim/nlp.h"
+
+namespace saltus {
+
+struct SolverOptions {
+  int max_iterations = 100;
+  double tolerance = 1e-8;             ///< Ipopt's tol (scaled NLP error)
+  double acceptable_tolerance = 1e-6;  ///< Ipopt's acceptable_tol
+  bool verbose = false;                ///< Ipopt's own iteration log on stdout
+};
+
+struct ProgressInfo {
+  int iteration = 0;
+  double objective = 0.0;             ///< of the NLP being solved
+  double constraint_violation = 0.0;  ///< Ipopt's inf_pr
+  double elapsed_seconds = 0.0;
+};
+
+using ProgressCallback = std::function<void(const ProgressInfo&)>;
+
+struct SolveReport {
+  /// "solved" (Ipopt optimal or acceptable), else why not: "max_iterations", "infeasible",
+  /// "cancelled", "diverging", "restoration_failed", "error".
+  std::string status;
+  std::string ipopt_status;  ///< Ipopt's own name of its return status
+  bool solved = false;
+  int iterations = 0;
+  double seconds = 0.0;
+  double objective = 0.0;
+  std::vector<double> x;  ///< the final point (the last iterate if not solved)
+};
+
+/// Solves `nlp` from its initial point. Never throws for solver failures: they are reported.
+SolveReport solve_with_ipopt(Nlp& nlp, const SolverOptions& options,
+                             const ProgressCallback& progress = {},
+                             const std::atomic<bool>* cancel = nullptr);
+
+}  // namespace saltus

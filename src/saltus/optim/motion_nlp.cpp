@@ -1,0 +1,515 @@
+#include "saltus/optim/motion_nlp.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+
+#include "saltus/analysis/evaluation.h"
+#include "saltus/motion/interpolate.h"
+
+namespace saltus {
+
+namespace {
+
+/// The entry of a local Jacobian (weighted over its rows) for variable `column`, 0 if the
+/// quantity does not depend on it at this x.
+template <int Rows>
+double local_derivative(const LocalJacobian<Rows>& jac,
+                        const Eigen::Matrix<double, 1, Rows>& weights, int column) {
+  const int local = column - jac.first_control_variable;
+  if (local >= 0 && local < jac.control.cols()) return weights * jac.control.col(local);
+  for (int s = 0; s < jac.time_count; ++s)
+    if (jac.time_variable[s] == column) return weights * jac.time.col(s);
+  return 0.0;
+}
+
+Eigen::Quaterniond aligned(const Eigen::Quaterniond& target, const Eigen::Vector4d& q) {
+  // Sign-align the target to the curve (paper eq. 3 compares rotations, not signs).
+  const Eigen::Vector4d t(target.w(), target.x(), target.y(), target.z());
+  return t.dot(q) < 0 ? Eigen::Quaterniond(-target.w(), -target.x(), -target.y(), -target.z())
+                      : target;
+}
+
+Eigen::Vector4d wxyz(const Eigen::Quaterniond& q) {
+  return {q.w(), q.x(), q.y(), q.z()};
+}
+
+}  // namespace
+
+MotionNlp::MotionNlp(const Motion& motion, const BodyModel& model,
+                     const Trajectory<double>& initial, const MotionNlpOptions& options)
+    : model_(model), options_(options), takeoff_(motion.takeoff), tolerances_(motion.tolerances) {
+  const int n_key = static_cast<int>(motion.keyframes.size());
+  if (n_key < 2) throw std::invalid_argument("a motion needs at least two keyframes");
+  if (options.samples < 2) throw std::invalid_argument("samples must be at least 2");
+  if (options.knots_per_interval < 1)
+    throw std::invalid_argument("knots per interval must be at least 1");
+  if (options.formulation == Formulation::kStrict && !(options.epsilon > 0))
+    throw std::invalid_argument("epsilon must be positive");
+
+  layout_.segment_count = model.size();
+  layout_.keyframe_count = n_key;
+  layout_.knots_per_interval = options.knots_per_interval;
+  layout_.optimize_timing = options.optimize_timing && n_key >= 3;
+  if (static_cast<int>(initial.knots.size()) != layout_.control_count() + 4)
+    throw std::invalid_argument("initial trajectory is not on the layout's knots");
+
+  for (const Keyframe& k : motion.keyframes)
+    reference_.keyframe_times.push_back(k.time);
+  for (const auto& r : initial.rotations)
+    reference_.joint_control.push_back(r.control());
+  initial_x_ = variables_from(layout_, reference_, initial, reference_.keyframe_times);
+  duration_ = motion.flight_time();
+  double shortest = duration_;
+  for (int i = 0; i + 1 < n_key; ++i)
+    shortest = std::min(shortest, reference_.keyframe_times[i + 1] - reference_.keyframe_times[i]);
+  time_gap_ = std::min(options.min_time_gap, 0.5 * shortest);
+
+  for (const Keyframe& k : motion.keyframes) {
+    keyframe_com_offset_.push_back(com_with_root_at_origin(model, k.rotations));
+    fixed_root_.push_back(k.root_position);
+    keyframe_rotation_.push_back(k.rotations);
+  }
+
+  sample_times_ = uniform_times(duration_, options.samples);
+  sample_weights_.assign(options.samples, 0.0);
+  for (int s = 0; s + 1 < options.samples; ++s) {
+    const double half = 0.5 * (sample_times_[s + 1] - sample_times_[s]) / duration_;
+    sample_weights_[s] += half;
+    sample_weights_[s + 1] += half;
+  }
+
+  derivatives_ = std::make_unique<RootWrenchDerivatives>(model, layout_, reference_);
+
+  // Jacobian structure, row by row.
+  std::vector<int> time_variables;
+  for (int i = 0; i < n_key; ++i)
+    if (layout_.time_variable(i) >= 0) time_variables.push_back(layout_.time_variable(i));
+  int row = 0;
+  auto add_row = [&](const std::vector<int>& columns) {
+    row_begin_.push_back(static_cast<int>(jacobian_columns_.size()));
+    for (int c : columns) {
+      jacobian_rows_.push_back(row);
+      jacobian_columns_.push_back(c);
+    }
+    ++row;
+  };
+  for (int i = 0; i < n_key; ++i) {
+    const int c0 = layout_.keyframe_span(i) - 3;
+    for (int d = 0; d < 3; ++d) {
+      std::vector<int> columns;
+      for (int c = c0; c < c0 + 4; ++c)
+        columns.push_back(layout_.control_variable(0, c, d));
+      columns.insert(columns.end(), time_variables.begin(), time_variables.end());
+      add_row(columns);
+      ++translation_rows_;
+    }
+  }
+  for (int i = 0; i < n_key; ++i) {
+    const int c0 = layout_.keyframe_span(i) - 3;
+    for (int k = 0; k < model.size(); ++k) {
+      std::vector<int> columns;
+      for (int c = c0; c < c0 + 4; ++c)
+        for (int d = 0; d < 3; ++d)
+          columns.push_back(layout_.control_variable(k + 1, c, d));
+      columns.insert(columns.end(), time_variables.begin(), time_variables.end());
+      add_row(columns);
+      ++rotation_rows_;
+    }
+  }
+  if (layout_.optimize_timing) {
+    for (int i = 0; i + 1 < n_key; ++i) {
+      std::vector<int> columns;
+      if (layout_.time_variable(i) >= 0) columns.push_back(layout_.time_variable(i));
+      if (layout_.time_variable(i + 1) >= 0) columns.push_back(layout_.time_variable(i + 1));
+      order_pairs_.push_back(i);
+      add_row(columns);
+      ++order_rows_;
+    }
+  }
+  if (options.formulation == Formulation::kStrict) {
+    // A sample's span can change when the times move: its row covers every span it can reach
+    // within the time bounds (exactly one span when timing is fixed).
+    std::vector<double> x_lower(layout_.size()), x_upper(layout_.size());
+    std::vector<double> g_lower(constraint_count() + 6 * options.samples), g_upper(g_lower.size());
+    bounds(x_lower.data(), x_upper.data(), g_lower.data(), g_upper.data());
+    const auto knots_at = [&](const std::vector<double>& x) {
+      return clamped_cubic_knots(refine_breakpoints(
+          keyframe_times_from(layout_, reference_, x.data()), layout_.knots_per_interval));
+    };
+    const std::vector<double> earliest = knots_at(x_lower), latest = knots_at(x_upper);
+    for (double t : sample_times_) {
+      const int first_span = find_span(latest, t), last_span = find_span(earliest, t);
+      std::vector<int> columns;
+      for (int v = layout_.control_variable(0, first_span - 3, 0);
+           v < layout_.control_variable(0, last_span + 1, 0); ++v)
+        columns.push_back(v);
+      columns.insert(columns.end(), time_variables.begin(), time_variables.end());
+      for (int component = 0; component < 6; ++component) {
+        add_row(columns);
+        ++strict_rows_;
+      }
+    }
+  }
+  row_begin_.push_back(static_cast<int>(jacobian_columns_.size()));
+
+  // Hessian band (lower triangle): a control variable couples with controls at most 3 indices
+  // below its own (they share a span) and with every time; a time couples with everything.
+  const int n = layout_.size();
+  hessian_first_column_.resize(n);
+  hessian_row_start_.resize(n + 1);
+  long total = 0;
+  for (int r = 0; r < n; ++r) {
+    if (r < layout_.control_variable_count()) {
+      const int control = r / layout_.curve_block();
+      hessian_first_column_[r] = std::max(0, control - 3) * layout_.curve_block();
+    } else {
+      hessian_first_column_[r] = 0;
+    }
+    hessian_row_start_[r] = total;
+    total += r - hessian_first_column_[r] + 1;
+  }
+  hessian_row_start_[n] = total;
+  hessian_nonzeros_ = static_cast<int>(total);
+
+  wrench_.resize(options.samples);
+  wrench_jacobian_.resize(options.samples);
+  translation_jacobian_.resize(n_key);
+  rotation_jacobian_.resize(n_key * model.size());
+  initial_objective_ = 1.0;  // deviation_penalty reads it; δ = 0 there, so no penalty
+  initial_objective_ = options.formulation == Formulation::kRelaxed
+                           ? force_objective(initial_x_.data())
+                           : objective(initial_x_.data());
+}
+
+MotionNlp::~MotionNlp() = default;
+
+double MotionNlp::deviation_limit() const {
+  // exp(δ) turns by 2|δ|: half the allowed angle per tangent component.
+  return 0.5 * options_.max_joint_deviation_deg * M_PI / 180.0;
+}
+
+double MotionNlp::deviation_penalty(const double* x, double* gradient,
+                                    double* hessian_diagonal_scale) const {
+  // w Σ max(0, |δ| − limit)²: zero inside the limit, so the optimum is that of J wherever the
+  // limit is not reached; w makes a 1° excess cost a tenth of the starting objective.
+  const double limit = deviation_limit();
+  const double excess_1deg = 0.5 * M_PI / 180.0;
+  const double w = 0.1 * std::max(initial_objective_, 1e-6) / (excess_1deg * excess_1deg);
+  double penalty = 0.0;
+  for (int v = 0; v < layout_.control_variable_count(); ++v) {
+    if (v % layout_.curve_block() < 3) continue;  // root translation
+    const double excess = std::abs(x[v]) - limit;
+    if (excess <= 0) continue;
+    penalty += w * excess * excess;
+    if (gradient) gradient[v] += 2.0 * w * excess * (x[v] > 0 ? 1.0 : -1.0);
+    if (hessian_diagonal_scale) hessian_diagonal_scale[v] += 2.0 * w;
+  }
+  return penalty;
+}
+
+int MotionNlp::constraint_count() const {
+  return translation_rows_ + rotation_rows_ + order_rows_ + strict_rows_;
+}
+
+void MotionNlp::bounds(double* x_lower, double* x_upper, double* g_lower, double* g_upper) const {
+  for (int v = 0; v < layout_.control_variable_count(); ++v) {
+    const bool joint = v % layout_.curve_block() >= 3;
+    // Tangent coordinates stay well inside |δ| < π/2 where exp is a one-to-one chart. The
+    // deviation limit itself is a penalty (deviation_penalty), not a bound: hundreds of bounded
+    // variables would add barrier terms that swamp a small objective.
+    x_lower[v] = joint ? -1.5 : -kUnbounded;
+    x_upper[v] = joint ? 1.5 : kUnbounded;
+  }
+  for (int i = 0; i < layout_.keyframe_count; ++i) {
+    const int v = layout_.time_variable(i);
+    if (v < 0) continue;
+    const double t0 = reference_.keyframe_times[i];
+    x_lower[v] = std::max(t0 - options_.max_time_shift, time_gap_ * i);
+    x_upper[v] = std::min(t0 + options_.max_time_shift,
+                          duration_ - time_gap_ * (layout_.keyframe_count - 1 - i));
+  }
+  int row = 0;
+  for (int r = 0; r < translation_rows_; ++r, ++row) {
+    g_lower[row] = -tolerances_.translation_m;
+    g_upper[row] = tolerances_.translation_m;
+  }
+  for (int r = 0; r < rotation_rows_; ++r, ++row) {
+    g_lower[row] = -kUnbounded;
+    g_upper[row] = tolerances_.quaternion * tolerances_.quaternion;
+  }
+  for (int r = 0; r < order_rows_; ++r, ++row) {
+    g_lower[row] = time_gap_;
+    g_upper[row] = kUnbounded;
+  }
+  for (int r = 0; r < strict_rows_; ++r, ++row) {
+    g_lower[row] = -options_.epsilon;
+    g_upper[row] = options_.epsilon;
+  }
+}
+
+void MotionNlp::initial_point(double* x) const {
+  std::copy(initial_x_.begin(), initial_x_.end(), x);
+}
+
+void MotionNlp::load(const double* x) {
+  const std::size_t n = layout_.size();
+  if (have_x_ && std::memcmp(x, x_.data(), n * sizeof(double)) == 0) return;
+  x_.assign(x, x + n);
+  have_x_ = true;
+  have_wrenches_ = have_wrench_jacobians_ = have_keyframes_ = false;
+  derivatives_->set_variables(x);
+}
+
+void MotionNlp::compute_wrenches() {
+  if (have_wrenches_) return;
+  for (std::size_t s = 0; s < sample_times_.size(); ++s)
+    wrench_[s] = derivatives_->wrench(sample_times_[s]);
+  have_wrenches_ = true;
+}
+
+void MotionNlp::compute_wrench_jacobians() {
+  if (have_wrench_jacobians_) return;
+  for (std::size_t s = 0; s < sample_times_.size(); ++s) {
+    derivatives_->wrench_jacobian(sample_times_[s], wrench_jacobian_[s]);
+    wrench_[s] = wrench_jacobian_[s].value;
+  }
+  have_wrenches_ = have_wrench_jacobians_ = true;
+}
+
+void MotionNlp::compute_keyframes() {
+  if (have_keyframes_) return;
+  keyframe_times_ = keyframe_times_from(layout_, reference_, x_.data());
+  for (int i = 0; i < layout_.keyframe_count; ++i) {
+    derivatives_->keyframe_translation(i, translation_jacobian_[i]);
+    for (int k = 0; k < layout_.segment_count; ++k)
+      derivatives_->keyframe_rotation(i, k, rotation_jacobian_[i * layout_.segment_count + k]);
+  }
+  have_keyframes_ = true;
+}
+
+Eigen::Vector3d MotionNlp::root_target(int keyframe, double time) const {
+  if (fixed_root_[keyframe]) return *fixed_root_[keyframe];
+  return ballistic_com(takeoff_, time) - keyframe_com_offset_[keyframe];
+}
+
+double MotionNlp::force_objective(const double* x) {
+  load(x);
+  compute_wrenches();
+  double j = 0.0;
+  for (std::size_t s = 0; s < sample_times_.size(); ++s)
+    j += sample_weights_[s] * wrench_[s].squaredNorm();
+  return j;
+}
+
+double MotionNlp::objective(const double* x) {
+  if (options_.formulation == Formulation::kRelaxed)
+    return force_objective(x) + deviation_penalty(x, nullptr, nullptr);
+  load(x);
+  compute_keyframes();
+  double f = 0.0;
+  for (int i = 0; i < layout_.keyframe_count; ++i) {
+    f += (translation_jacobian_[i].value - root_target(i, keyframe_times_[i])).squaredNorm();
+    for (int k = 0; k < layout_.segment_count; ++k) {
+      const Eigen::Vector4d q = rotation_jacobian_[i * layout_.segment_count + k].value;
+      f += (q - wxyz(aligned(keyframe_rotation_[i][k], q))).squaredNorm();
+    }
+  }
+  return f + deviation_penalty(x, nullptr, nullptr);
+}
+
+void MotionNlp::gradient(const double* x, double* gradient) {
+  load(x);
+  std::fill(gradient, gradient + layout_.size(), 0.0);
+  if (options_.formulation == Formulation::kRelaxed) {
+    compute_wrench_jacobians();
+    for (std::size_t s = 0; s < sample_times_.size(); ++s) {
+      const LocalJacobian<6>& jac = wrench_jacobian_[s];
+      const Eigen::Matrix<double, 1, 6> w = 2.0 * sample_weights_[s] * wrench_[s].transpose();
+      Eigen::Map<Eigen::RowVectorXd>(gradient + jac.first_control_variable, jac.control.cols()) +=
+          w * jac.control;
+      for (int p = 0; p < jac.time_count; ++p)
+        gradient[jac.time_variable[p]] += w * jac.time.col(p);
+    }
+    deviation_penalty(x, gradient, nullptr);
+    return;
+  }
+  compute_keyframes();
+  for (int i = 0; i < layout_.keyframe_count; ++i) {
+    const LocalJacobian<3>& tj = translation_jacobian_[i];
+    const Eigen::Vector3d r = tj.value - root_target(i, keyframe_times_[i]);
+    const Eigen::Matrix<double, 1, 3> w = 2.0 * r.transpose();
+    Eigen::Map<Eigen::RowVectorXd>(gradient + tj.first_control_variable, tj.control.cols()) +=
+        w * tj.control;
+    for (int p = 0; p < tj.time_count; ++p)
+      gradient[tj.time_variable[p]] += w * tj.time.col(p);
+    const int tv = layout_.time_variable(i);
+    if (tv >= 0 && !fixed_root_[i])
+      gradient[tv] -= w * ballistic_com_velocity(takeoff_, keyframe_times_[i]);
+    for (int k = 0; k < layout_.segment_count; ++k) {
+      const LocalJacobian<4>& rj = rotation_jacobian_[i * layout_.segment_count + k];
+      const Eigen::Matrix<double, 1, 4> wq =
+          2.0 * (rj.value - wxyz(aligned(keyframe_rotation_[i][k], rj.value))).transpose();
+      Eigen::Map<Eigen::RowVectorXd>(gradient + rj.first_control_variable, rj.control.cols()) +=
+          wq * rj.control;
+      for (int p = 0; p < rj.time_count; ++p)
+        gradient[rj.time_variable[p]] += wq * rj.time.col(p);
+    }
+  }
+  deviation_penalty(x, gradient, nullptr);
+}
+
+void MotionNlp::constraints(const double* x, double* g) {
+  load(x);
+  compute_keyframes();
+  int row = 0;
+  for (int i = 0; i < layout_.keyframe_count; ++i) {
+    const Eigen::Vector3d r = translation_jacobian_[i].value - root_target(i, keyframe_times_[i]);
+    for (int d = 0; d < 3; ++d)
+      g[row++] = r[d];
+  }
+  for (int i = 0; i < layout_.keyframe_count; ++i) {
+    for (int k = 0; k < layout_.segment_count; ++k) {
+      const Eigen::Vector4d q = rotation_jacobian_[i * layout_.segment_count + k].value;
+      g[row++] = (q - wxyz(aligned(keyframe_rotation_[i][k], q))).squaredNorm();
+    }
+  }
+  for (int i : order_pairs_)
+    g[row++] = keyframe_times_[i + 1] - keyframe_times_[i];
+  if (strict_rows_ > 0) {
+    compute_wrenches();
+    for (std::size_t s = 0; s < sample_times_.size(); ++s)
+      for (int c = 0; c < 6; ++c)
+        g[row++] = wrench_[s][c];
+  }
+}
+
+void MotionNlp::jacobian_structure(int* rows, int* columns) const {
+  std::copy(jacobian_rows_.begin(), jacobian_rows_.end(), rows);
+  std::copy(jacobian_columns_.begin(), jacobian_columns_.end(), columns);
+}
+
+void MotionNlp::jacobian_values(const double* x, double* values) {
+  load(x);
+  compute_keyframes();
+  if (strict_rows_ > 0) compute_wrench_jacobians();
+  int row = 0;
+  auto entries = [&](int r, auto&& derivative) {
+    for (int e = row_begin_[r]; e < row_begin_[r + 1]; ++e)
+      values[e] = derivative(jacobian_columns_[e]);
+  };
+  for (int i = 0; i < layout_.keyframe_count; ++i) {
+    const LocalJacobian<3>& tj = translation_jacobian_[i];
+    const int own_time = layout_.time_variable(i);
+    const Eigen::Vector3d target_rate =
+        fixed_root_[i] ? Eigen::Vector3d::Zero()
+                       : Eigen::Vector3d(ballistic_com_velocity(takeoff_, keyframe_times_[i]));
+    for (int d = 0; d < 3; ++d, ++row) {
+      Eigen::Matrix<double, 1, 3> pick = Eigen::Matrix<double, 1, 3>::Zero();
+      pick[d] = 1.0;
+      entries(row, [&](int column) {
+        return local_derivative<3>(tj, pick, column) - (column == own_time ? target_rate[d] : 0.0);
+      });
+    }
+  }
+  for (int i = 0; i < layout_.keyframe_count; ++i) {
+    for (int k = 0; k < layout_.segment_count; ++k, ++row) {
+      const LocalJacobian<4>& rj = rotation_jacobian_[i * layout_.segment_count + k];
+      const Eigen::Matrix<double, 1, 4> w =
+          2.0 * (rj.value - wxyz(aligned(keyframe_rotation_[i][k], rj.value))).transpose();
+      entries(row, [&](int column) { return local_derivative<4>(rj, w, column); });
+    }
+  }
+  for (int i : order_pairs_) {
+    const int earlier = layout_.time_variable(i);
+    entries(row++, [&](int column) { return column == earlier ? -1.0 : 1.0; });
+  }
+  for (std::size_t s = 0; s < sample_times_.size() && strict_rows_ > 0; ++s) {
+    for (int c = 0; c < 6; ++c, ++row) {
+      Eigen::Matrix<double, 1, 6> pick = Eigen::Matrix<double, 1, 6>::Zero();
+      pick[c] = 1.0;
+      entries(row,
+              [&](int column) { return local_derivative<6>(wrench_jacobian_[s], pick, column); });
+    }
+  }
+}
+
+void MotionNlp::hessian_structure(int* rows, int* columns) const {
+  long e = 0;
+  for (int r = 0; r < layout_.size(); ++r)
+    for (int c = hessian_first_column_[r]; c <= r; ++c, ++e) {
+      rows[e] = r;
+      columns[e] = c;
+    }
+}
+
+int MotionNlp::hessian_index(int row, int column) const {
+  if (column > row) std::swap(row, column);
+  return static_cast<int>(hessian_row_start_[row] + (column - hessian_first_column_[row]));
+}
+
+void MotionNlp::hessian_values(const double* x, double objective_factor, const double* multipliers,
+                               double* values) {
+  load(x);
+  std::fill(values, values + hessian_nonzeros_, 0.0);
+  if (options_.formulation != Formulation::kRelaxed) return;
+  compute_wrench_jacobians();
+  Eigen::MatrixXd block;
+  for (std::size_t s = 0; s < sample_times_.size(); ++s) {
+    const LocalJacobian<6>& jac = wrench_jacobian_[s];
+    const double weight = 2.0 * objective_factor * sample_weights_[s];
+    const int first = jac.first_control_variable;
+    const int width = static_cast<int>(jac.control.cols());
+    block.noalias() = weight * jac.control.transpose() * jac.control;
+    for (int a = 0; a < width; ++a) {
+      Eigen::Map<Eigen::RowVectorXd>(values + hessian_index(first + a, first), a + 1) +=
+          block.row(a).head(a + 1);
+    }
+    for (int p = 0; p < jac.time_count; ++p) {
+      const int tv = jac.time_variable[p];
+      Eigen::Map<Eigen::RowVectorXd>(values + hessian_index(tv, first), width) +=
+          weight * jac.time.col(p).transpose() * jac.control;
+      for (int q = 0; q < jac.time_count; ++q)
+        if (jac.time_variable[q] <= tv)
+          values[hessian_index(tv, jac.time_variable[q])] +=
+              weight * jac.time.col(p).dot(jac.time.col(q));
+    }
+  }
+  const double damping = objective_factor * options_.damping * force_objective(x);
+  std::vector<double> penalty_curvature(layout_.size(), 0.0);
+  deviation_penalty(x, nullptr, penalty_curvature.data());
+  for (int v = 0; v < layout_.size(); ++v)
+    values[hessian_index(v, v)] += damping + objective_factor * penalty_curvature[v];
+
+  // Gauss-Newton curvature of the quaternion-distance constraints g = ‖r‖² (∇²g ≈ 2 JᵀJ),
+  // counted only where the multiplier makes it positive semi-definite.
+  compute_keyframes();
+  const int first_rotation_row = translation_rows_;
+  for (int i = 0; i < layout_.keyframe_count; ++i) {
+    for (int k = 0; k < layout_.segment_count; ++k) {
+      const double lambda = multipliers[first_rotation_row + i * layout_.segment_count + k];
+      if (lambda <= 0) continue;
+      const LocalJacobian<4>& rj = rotation_jacobian_[i * layout_.segment_count + k];
+      const int row = first_rotation_row + i * layout_.segment_count + k;
+      std::vector<int> columns(jacobian_columns_.begin() + row_begin_[row],
+                               jacobian_columns_.begin() + row_begin_[row + 1]);
+      std::vector<Eigen::Vector4d> derivative(columns.size());
+      for (std::size_t a = 0; a < columns.size(); ++a)
+        for (int c = 0; c < 4; ++c) {
+          Eigen::Matrix<double, 1, 4> pick = Eigen::Matrix<double, 1, 4>::Zero();
+          pick[c] = 1.0;
+          derivative[a][c] = local_derivative<4>(rj, pick, columns[a]);
+        }
+      for (std::size_t a = 0; a < columns.size(); ++a)
+        for (std::size_t b = 0; b <= a; ++b) {
+          const int r = std::max(columns[a], columns[b]), c = std::min(columns[a], columns[b]);
+          if (c < hessian_first_column_[r]) continue;  // outside the band: cannot happen
+          values[hessian_index(r, c)] += 2.0 * lambda * derivative[a].dot(derivative[b]);
+        }
+    }
+  }
+}
+
+}  // namespace saltus

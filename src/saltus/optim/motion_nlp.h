@@ -1,0 +1,141 @@
+#pragma once
+/// @file
+/// The optimisation models of DESIGN §5 over a keyframed motion.
+///
+/// Relaxed (the paper's eqs. 1-4): minimise J = (1/T) ∫ Σ F_i² dt (trapezoidal rule on a fixed
+/// grid of `samples` times) subject to
+///   |B_d(t_i) − B̄_d(t_i)| <= ε1   per keyframe i and coordinate d              (eq. 2)
+///   ‖Q_k(t_i) − Q̄_k‖² <= ε2²       per keyframe and joint, sign-aligned         (eq. 3)
+///   t_{i+1} − t_i >= gap           per pair of consecutive keyframes            (eq. 4)
+/// with B̄(t) = s(t) − s'_i (the CoM parabola at the keyframe's current time minus the keyframe
+/// pose's CoM offset) unless the keyframe gives root_position.
+/// The Hessian is Gauss-Newton, (2/T) Σ w_s J_sᵀ J_s: J is a sum of squares whose residuals vanish
+/// at the physical optimum, where Gauss-Newton is exact.
+///
+/// Strict (classic spacetime constraints): the same variables and keyframe constraints plus
+/// |F_i(t_s)| <= ε at every grid time; objective the keyframe distance
+/// Σ‖B(t_i) − B̄_i‖² + Σ‖Q_k(t_i) − Q̄_k‖². Its Hessian is left to Ipopt's quasi-Newton
+/// approximation (the constraint curvature is not available).
+
+#include <memory>
+#include <vector>
+
+#include "saltus/body/body_model.h"
+#include "saltus/motion/motion.h"
+#include "saltus/optim/nlp.h"
+#include "saltus/optim/root_wrench_derivatives.h"
+#include "saltus/optim/trajectory_layout.h"
+
+namespace saltus {
+
+enum class Formulation { kRelaxed, kStrict };
+
+struct MotionNlpOptions {
+  Formulation formulation = Formulation::kRelaxed;
+  double epsilon = 100.0;        ///< strict: bound on each |F_i(t_s)|, N or N·m
+  bool optimize_timing = true;   ///< interior keyframe times are variables
+  int knots_per_interval = 1;    ///< spline refinement K (1 = the paper's resolution)
+  int samples = 201;             ///< quadrature grid on [0, T], ends included
+  double min_time_gap = 0.05;    ///< s, eq. (4)'s gap (capped at half the shortest interval)
+  double max_time_shift = 0.25;  ///< s, how far a keyframe time may move from the given one
+  /// Levenberg-Marquardt damping of the Gauss-Newton Hessian: c·J(x)·I is added (Yamashita &
+  /// Fukushima 2001: damping ∝ ‖F‖² keeps quadratic local convergence at a zero residual).
+  /// Light segments (feet, forearms) barely change the root force, so undamped Gauss-Newton
+  /// steps would swing them by radians on a linear model that no longer holds.
+  double damping = 1.0;
+  /// Rotation (degrees) by which a joint's spline control point may depart from the interpolated
+  /// one, per tangent axis, before a steep penalty sets in. The root force hardly depends on
+  /// light segments, so without it the optimum swings feet and forearms through large angles
+  /// between keyframes for tiny gains; with it the optimised motion stays recognisably the one
+  /// the keyframes describe. A penalty, not a bound: hundreds of bounds would bring barrier
+  /// terms into Ipopt that swamp a small objective.
+  double max_joint_deviation_deg = 45.0;
+};
+
+class MotionNlp : public Nlp {
+ public:
+  /// @param initial  the starting trajectory (the §5 interpolation) on the knots of the motion's
+  ///                 keyframe times refined by options.knots_per_interval; its joint control
+  ///                 points become the reference q̄ of the tangent coordinates.
+  MotionNlp(const Motion& motion, const BodyModel& model, const Trajectory<double>& initial,
+            const MotionNlpOptions& options);
+  ~MotionNlp() override;
+
+  const TrajectoryLayout& layout() const { return layout_; }
+  const TrajectoryReference& reference() const { return reference_; }
+  const std::vector<double>& sample_times() const { return sample_times_; }
+  const MotionNlpOptions& options() const { return options_; }
+
+  int variable_count() const override { return layout_.size(); }
+  int constraint_count() const override;
+  void bounds(double* x_lower, double* x_upper, double* g_lower, double* g_upper) const override;
+  void initial_point(double* x) const override;
+
+  double objective(const double* x) override;
+  void gradient(const double* x, double* gradient) override;
+  void constraints(const double* x, double* g) override;
+
+  int jacobian_nonzeros() const override { return static_cast<int>(jacobian_columns_.size()); }
+  void jacobian_structure(int* rows, int* columns) const override;
+  void jacobian_values(const double* x, double* values) override;
+
+  bool has_hessian() const override { return options_.formulation == Formulation::kRelaxed; }
+  int hessian_nonzeros() const override { return hessian_nonzeros_; }
+  void hessian_structure(int* rows, int* columns) const override;
+  void hessian_values(const double* x, double objective_factor, const double* multipliers,
+                      double* values) override;
+
+  /// Relaxed objective J at x on the quadrature grid (also defined for the strict model).
+  double force_objective(const double* x);
+
+ private:
+  void load(const double* x);
+  void compute_wrenches();
+  void compute_wrench_jacobians();
+  void compute_keyframes();
+  Eigen::Vector3d root_target(int keyframe, double time) const;
+  int hessian_index(int row, int column) const;
+  double deviation_limit() const;
+  /// The joint-deviation penalty at x; adds its gradient and Hessian diagonal when given.
+  double deviation_penalty(const double* x, double* gradient, double* hessian_diagonal) const;
+
+  const BodyModel& model_;
+  MotionNlpOptions options_;
+  TrajectoryLayout layout_;
+  TrajectoryReference reference_;
+  std::vector<double> initial_x_;
+  double initial_objective_ = 1.0;
+  double duration_ = 0.0;
+  double time_gap_ = 0.0;
+  Takeoff takeoff_;
+  Tolerances tolerances_;
+  std::vector<Eigen::Vector3d> keyframe_com_offset_;                ///< s'_i of each keyframe pose
+  std::vector<std::optional<Eigen::Vector3d>> fixed_root_;          ///< root_position if given
+  std::vector<std::vector<Eigen::Quaterniond>> keyframe_rotation_;  ///< [keyframe][segment]
+  std::vector<double> sample_times_;
+  std::vector<double> sample_weights_;  ///< trapezoid weights / T
+
+  // Constraint rows.
+  int translation_rows_ = 0, rotation_rows_ = 0, order_rows_ = 0, strict_rows_ = 0;
+  std::vector<int> order_pairs_;  ///< keyframe i of each ordering row (t_{i+1} − t_i)
+  std::vector<int> jacobian_rows_, jacobian_columns_;
+  std::vector<int> row_begin_;  ///< first Jacobian entry of each row (size rows + 1)
+
+  // Hessian band: row r holds columns [hessian_first_column_[r], r].
+  std::vector<int> hessian_first_column_;
+  std::vector<long> hessian_row_start_;
+  int hessian_nonzeros_ = 0;
+
+  // Evaluation cache keyed on x.
+  std::unique_ptr<RootWrenchDerivatives> derivatives_;
+  std::vector<double> x_;
+  bool have_x_ = false, have_wrenches_ = false, have_wrench_jacobians_ = false,
+       have_keyframes_ = false;
+  std::vector<Vector6d> wrench_;
+  std::vector<LocalJacobian<6>> wrench_jacobian_;
+  std::vector<LocalJacobian<3>> translation_jacobian_;  ///< [keyframe]
+  std::vector<LocalJacobian<4>> rotation_jacobian_;     ///< [keyframe * segments + segment]
+  std::vector<double> keyframe_times_;
+};
+
+}  // namespace saltus

@@ -1,0 +1,316 @@
+#include "saltus/optim/root_wrench_derivatives.h"
+
+#include <algorithm>
+
+#include "saltus/math/quaternion_spline.h"
+#include "saltus/math/vector_spline.h"
+
+namespace saltus {
+
+namespace {
+
+/// Spline stage: 12 control-tangent directions (control c, coordinate d -> 3c + d) followed by
+/// the local keyframe-time slots.
+constexpr int kControlDirections = 12;
+constexpr int kSplineDirections = kControlDirections + kMaxLocalTimes;
+using SplineDerivative = Eigen::Matrix<double, kSplineDirections, 1>;
+using SplineAD = Eigen::AutoDiffScalar<SplineDerivative>;
+
+/// Dynamics stage chunk: directions per pass through inverse dynamics.
+constexpr int kStateChunk = 32;
+using StateDerivative = Eigen::Matrix<double, kStateChunk, 1>;
+using StateAD = Eigen::AutoDiffScalar<StateDerivative>;
+
+/// Per joint: η (rotation tangent, q = q₀·exp(η)), ω, α. Root translation: ṗ, p̈.
+constexpr int kJointStateSize = 9;
+constexpr int kRootStateSize = 6;
+
+SplineAD spline_variable(double value, int direction) {
+  SplineAD a(value);
+  a.derivatives()[direction] = 1.0;
+  return a;
+}
+
+StateAD state_variable(double value, int direction, int chunk_start) {
+  StateAD a(value);
+  const int local = direction - chunk_start;
+  if (local >= 0 && local < kStateChunk) a.derivatives()[local] = 1.0;
+  return a;
+}
+
+Eigen::Quaterniond quaternion_value(const Quat<SplineAD>& q) {
+  return Eigen::Quaterniond(q.w().value(), q.x().value(), q.y().value(), q.z().value());
+}
+
+}  // namespace
+
+struct RootWrenchDerivatives::Workspace {
+  explicit Workspace(const BodyModel& model)
+      : data(model),
+        state(model.size()),
+        data_ad(model),
+        state_ad(model.size()),
+        joint_state_jacobian(model.size()),
+        wrench_state_jacobian(6, kJointStateSize * model.size() + kRootStateSize) {}
+
+  DynamicsData<double> data;
+  BodyState<double> state;
+  DynamicsData<StateAD> data_ad;
+  BodyState<StateAD> state_ad;
+  std::vector<SplineAD> knots_ad;
+  int time_count = 0;
+  std::array<int, kMaxLocalTimes> time_variable{};
+  std::vector<Eigen::Matrix<double, kJointStateSize, kSplineDirections>> joint_state_jacobian;
+  Eigen::Matrix<double, kRootStateSize, kSplineDirections> root_state_jacobian;
+  Eigen::Matrix<double, 6, Eigen::Dynamic> wrench_state_jacobian;
+};
+
+RootWrenchDerivatives::RootWrenchDerivatives(const BodyModel& model, const TrajectoryLayout& layout,
+                                             const TrajectoryReference& reference)
+    : model_(model),
+      layout_(layout),
+      reference_(reference),
+      root_control_(layout.control_count()),
+      joint_control_(layout.segment_count, std::vector<Eigen::Quaterniond>(layout.control_count())),
+      joint_delta_(layout.segment_count, std::vector<Eigen::Vector3d>(layout.control_count())),
+      work_(std::make_unique<Workspace>(model)) {}
+
+RootWrenchDerivatives::~RootWrenchDerivatives() = default;
+
+void RootWrenchDerivatives::set_variables(const double* x) {
+  keyframe_times_ = keyframe_times_from(layout_, reference_, x);
+  knots_ = clamped_cubic_knots(refine_breakpoints(keyframe_times_, layout_.knots_per_interval));
+  for (int j = 0; j < layout_.control_count(); ++j) {
+    for (int d = 0; d < 3; ++d)
+      root_control_[j][d] = x[layout_.control_variable(0, j, d)];
+    for (int k = 0; k < layout_.segment_count; ++k) {
+      Eigen::Vector3d& delta = joint_delta_[k][j];
+      for (int d = 0; d < 3; ++d)
+        delta[d] = x[layout_.control_variable(k + 1, j, d)];
+      joint_control_[k][j] = reference_.joint_control[k][j] * quat_exp(delta);
+    }
+  }
+}
+
+namespace {
+
+/// Knots as AD scalars whose derivatives are the local time slots, for the knots that shape
+/// span `span` (indices span−3 .. span+4). Returns the slots' x indices.
+void seed_knots(const TrajectoryLayout& layout, const std::vector<double>& knots, int span,
+                std::vector<SplineAD>& knots_ad, int& time_count,
+                std::array<int, kMaxLocalTimes>& time_variable) {
+  knots_ad.assign(knots.size(), SplineAD(0.0));
+  for (std::size_t m = 0; m < knots.size(); ++m)
+    knots_ad[m] = SplineAD(knots[m]);
+  time_count = 0;
+  auto slot_of = [&](int variable) {
+    for (int s = 0; s < time_count; ++s)
+      if (time_variable[s] == variable) return s;
+    time_variable[time_count] = variable;
+    return time_count++;
+  };
+  const int first = std::max(0, span - 3);
+  const int last = std::min(static_cast<int>(knots.size()) - 1, span + 4);
+  for (int m = first; m <= last; ++m) {
+    const TrajectoryLayout::KnotDependence dep = layout.knot_dependence(m);
+    const int left = layout.time_variable(dep.left);
+    const int right = layout.time_variable(dep.left + 1);
+    if (left >= 0 && dep.weight < 1.0)
+      knots_ad[m].derivatives()[kControlDirections + slot_of(left)] += 1.0 - dep.weight;
+    if (right >= 0 && dep.weight > 0.0)
+      knots_ad[m].derivatives()[kControlDirections + slot_of(right)] += dep.weight;
+  }
+}
+
+template <int Rows>
+void scatter(const Eigen::Matrix<double, Rows, kSplineDirections>& m, int curve, int curve_block,
+             int time_count, LocalJacobian<Rows>& out) {
+  for (int c = 0; c < 4; ++c)
+    for (int d = 0; d < 3; ++d)
+      out.control.col(c * curve_block + 3 * curve + d) += m.col(3 * c + d);
+  out.time.leftCols(time_count) += m.middleCols(kControlDirections, time_count);
+}
+
+template <int Rows>
+void reset(LocalJacobian<Rows>& out, const TrajectoryLayout& layout, int span, int time_count,
+           const std::array<int, kMaxLocalTimes>& time_variable) {
+  out.first_control_variable = layout.control_variable(0, span - 3, 0);
+  out.control.setZero(Rows, 4 * layout.curve_block());
+  out.time.setZero();
+  out.time_count = time_count;
+  out.time_variable = time_variable;
+}
+
+}  // namespace
+
+Vector6d RootWrenchDerivatives::wrench(double t) {
+  const int span = find_span(knots_, t);
+  const SpanBasis<double> basis = cubic_basis_on_span(knots_, span, t);
+  const int c0 = span - 3;
+  const VectorSample<double> b =
+      evaluate_vector_span(root_control_[c0], root_control_[c0 + 1], root_control_[c0 + 2],
+                           root_control_[c0 + 3], basis);
+  BodyState<double>& state = work_->state;
+  state.root_position = b.position;
+  state.root_velocity = b.velocity;
+  state.root_acceleration = b.acceleration;
+  for (int k = 0; k < layout_.segment_count; ++k) {
+    const auto& c = joint_control_[k];
+    const QuaternionSample<double> s =
+        evaluate_quaternion_span(c[c0], c[c0 + 1], c[c0 + 2], c[c0 + 3], basis);
+    state.joints[k] = {s.q, s.omega, s.alpha};
+  }
+  inverse_dynamics(model_, work_->data, state);
+  return root_wrench_force_first(work_->data);
+}
+
+void RootWrenchDerivatives::wrench_jacobian(double t, LocalJacobian<6>& out) {
+  Workspace& w = *work_;
+  const int n = layout_.segment_count;
+  const int span = find_span(knots_, t);
+  const int c0 = span - 3;
+  seed_knots(layout_, knots_, span, w.knots_ad, w.time_count, w.time_variable);
+  const SpanBasis<SplineAD> basis = cubic_basis_on_span(w.knots_ad, span, SplineAD(t));
+
+  // Stage 1: each curve's state and its derivatives with respect to controls and times.
+  std::vector<Eigen::Quaterniond> q(n);
+  std::vector<Eigen::Vector3d> omega(n), alpha(n);
+  for (int k = 0; k < n; ++k) {
+    Quat<SplineAD> c[4];
+    for (int i = 0; i < 4; ++i) {
+      Vec3<SplineAD> delta;
+      for (int d = 0; d < 3; ++d)
+        delta[d] = spline_variable(joint_delta_[k][c0 + i][d], 3 * i + d);
+      c[i] = reference_.joint_control[k][c0 + i].cast<SplineAD>() * quat_exp(delta);
+    }
+    const QuaternionSample<SplineAD> s = evaluate_quaternion_span(c[0], c[1], c[2], c[3], basis);
+    q[k] = quaternion_value(s.q);
+    auto& jac = w.joint_state_jacobian[k];
+    for (int dir = 0; dir < kSplineDirections; ++dir) {
+      const Eigen::Quaterniond dq(s.q.w().derivatives()[dir], s.q.x().derivatives()[dir],
+                                  s.q.y().derivatives()[dir], s.q.z().derivatives()[dir]);
+      // q(ε) = q·exp(η(ε)) ⇒ dη = vec(q⁻¹ dq) (the real part vanishes for unit q).
+      jac.block<3, 1>(0, dir) = (q[k].conjugate() * dq).vec();
+    }
+    for (int i = 0; i < 3; ++i) {
+      omega[k][i] = s.omega[i].value();
+      alpha[k][i] = s.alpha[i].value();
+      jac.row(3 + i) = s.omega[i].derivatives().transpose();
+      jac.row(6 + i) = s.alpha[i].derivatives().transpose();
+    }
+  }
+  Vec3<SplineAD> p[4];
+  for (int i = 0; i < 4; ++i)
+    for (int d = 0; d < 3; ++d)
+      p[i][d] = spline_variable(root_control_[c0 + i][d], 3 * i + d);
+  const VectorSample<SplineAD> b = evaluate_vector_span(p[0], p[1], p[2], p[3], basis);
+  Eigen::Vector3d position, velocity, acceleration;
+  for (int i = 0; i < 3; ++i) {
+    position[i] = b.position[i].value();
+    velocity[i] = b.velocity[i].value();
+    acceleration[i] = b.acceleration[i].value();
+    w.root_state_jacobian.row(i) = b.velocity[i].derivatives().transpose();
+    w.root_state_jacobian.row(3 + i) = b.acceleration[i].derivatives().transpose();
+  }
+
+  // Stage 2: the root wrench differentiated with respect to every curve's state, in chunks.
+  const int state_size = kJointStateSize * n + kRootStateSize;
+  const int root_offset = kJointStateSize * n;
+  for (int start = 0; start < state_size; start += kStateChunk) {
+    BodyState<StateAD>& s = w.state_ad;
+    for (int k = 0; k < n; ++k) {
+      Vec3<StateAD> eta, om, al;
+      for (int i = 0; i < 3; ++i) {
+        eta[i] = state_variable(0.0, kJointStateSize * k + i, start);
+        om[i] = state_variable(omega[k][i], kJointStateSize * k + 3 + i, start);
+        al[i] = state_variable(alpha[k][i], kJointStateSize * k + 6 + i, start);
+      }
+      s.joints[k].q = q[k].cast<StateAD>() * quat_exp(eta);
+      s.joints[k].omega = om;
+      s.joints[k].alpha = al;
+    }
+    for (int i = 0; i < 3; ++i) {
+      s.root_position[i] = StateAD(position[i]);
+      s.root_velocity[i] = state_variable(velocity[i], root_offset + i, start);
+      s.root_acceleration[i] = state_variable(acceleration[i], root_offset + 3 + i, start);
+    }
+    inverse_dynamics(model_, w.data_ad, s);
+    const Vec6<StateAD> f = root_wrench_force_first(w.data_ad);
+    const int width = std::min(kStateChunk, state_size - start);
+    for (int i = 0; i < 6; ++i) {
+      out.value[i] = f[i].value();
+      w.wrench_state_jacobian.block(i, start, 1, width) =
+          f[i].derivatives().head(width).transpose();
+    }
+  }
+
+  // Chain rule.
+  reset(out, layout_, span, w.time_count, w.time_variable);
+  const int block = layout_.curve_block();
+  const Eigen::Matrix<double, 6, kSplineDirections> root_part =
+      w.wrench_state_jacobian.block<6, kRootStateSize>(0, root_offset) * w.root_state_jacobian;
+  scatter<6>(root_part, 0, block, w.time_count, out);
+  for (int k = 0; k < n; ++k) {
+    const Eigen::Matrix<double, 6, kSplineDirections> joint_part =
+        w.wrench_state_jacobian.block<6, kJointStateSize>(0, kJointStateSize * k) *
+        w.joint_state_jacobian[k];
+    scatter<6>(joint_part, k + 1, block, w.time_count, out);
+  }
+}
+
+namespace {
+/// The evaluation time of keyframe i as an AD scalar: it is the knot itself, so it carries that
+/// knot's time derivative.
+SplineAD keyframe_time(const std::vector<SplineAD>& knots_ad, const TrajectoryLayout& layout,
+                       int keyframe) {
+  return knots_ad[3 + keyframe * layout.knots_per_interval];
+}
+}  // namespace
+
+void RootWrenchDerivatives::keyframe_translation(int keyframe, LocalJacobian<3>& out) {
+  Workspace& w = *work_;
+  const int span = layout_.keyframe_span(keyframe);
+  const int c0 = span - 3;
+  seed_knots(layout_, knots_, span, w.knots_ad, w.time_count, w.time_variable);
+  const SpanBasis<SplineAD> basis =
+      cubic_basis_on_span(w.knots_ad, span, keyframe_time(w.knots_ad, layout_, keyframe));
+  Vec3<SplineAD> p[4];
+  for (int i = 0; i < 4; ++i)
+    for (int d = 0; d < 3; ++d)
+      p[i][d] = spline_variable(root_control_[c0 + i][d], 3 * i + d);
+  const VectorSample<SplineAD> b = evaluate_vector_span(p[0], p[1], p[2], p[3], basis);
+  Eigen::Matrix<double, 3, kSplineDirections> jac;
+  for (int i = 0; i < 3; ++i) {
+    out.value[i] = b.position[i].value();
+    jac.row(i) = b.position[i].derivatives().transpose();
+  }
+  reset(out, layout_, span, w.time_count, w.time_variable);
+  scatter<3>(jac, 0, layout_.curve_block(), w.time_count, out);
+}
+
+void RootWrenchDerivatives::keyframe_rotation(int keyframe, int segment, LocalJacobian<4>& out) {
+  Workspace& w = *work_;
+  const int span = layout_.keyframe_span(keyframe);
+  const int c0 = span - 3;
+  seed_knots(layout_, knots_, span, w.knots_ad, w.time_count, w.time_variable);
+  const SpanBasis<SplineAD> basis =
+      cubic_basis_on_span(w.knots_ad, span, keyframe_time(w.knots_ad, layout_, keyframe));
+  Quat<SplineAD> c[4];
+  for (int i = 0; i < 4; ++i) {
+    Vec3<SplineAD> delta;
+    for (int d = 0; d < 3; ++d)
+      delta[d] = spline_variable(joint_delta_[segment][c0 + i][d], 3 * i + d);
+    c[i] = reference_.joint_control[segment][c0 + i].cast<SplineAD>() * quat_exp(delta);
+  }
+  const QuaternionSample<SplineAD> s = evaluate_quaternion_span(c[0], c[1], c[2], c[3], basis);
+  Eigen::Matrix<double, 4, kSplineDirections> jac;
+  const SplineAD* coefficient[4] = {&s.q.w(), &s.q.x(), &s.q.y(), &s.q.z()};
+  for (int i = 0; i < 4; ++i) {
+    out.value[i] = coefficient[i]->value();
+    jac.row(i) = coefficient[i]->derivatives().transpose();
+  }
+  reset(out, layout_, span, w.time_count, w.time_variable);
+  scatter<4>(jac, segment + 1, layout_.curve_block(), w.time_count, out);
+}
+
+}  // namespace saltus

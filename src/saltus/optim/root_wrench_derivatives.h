@@ -1,0 +1,78 @@
+#pragma once
+/// @file
+/// The root wrench F1..F6 at a time sample and its exact derivatives with respect to the
+/// optimiser's variables, by forward-mode automatic differentiation in two stages:
+///
+///  1. spline stage — each curve's state at t (rotation tangent η, ω, α for a joint; ṗ, p̈ for the
+///     root translation) differentiated with respect to the curve's 4 active control points
+///     (12 directions) and the keyframe times that move the span's knots (<= 8 directions);
+///  2. dynamics stage — F differentiated with respect to every joint's state tangent (9 per
+///     segment) and the root's ṗ, p̈, in chunks of 32 directions through the templated
+///     inverse dynamics.
+///
+/// The chain rule joins them. This keeps both AD passes small (the spline stage never sees the
+/// dynamics, the dynamics stage never sees the controls) and the result exactly sparse: a sample
+/// touches one contiguous block of control variables (4 controls × all curves) and a few times.
+
+#include <array>
+#include <memory>
+
+#include "saltus/body/body_model.h"
+#include "saltus/dynamics/inverse_dynamics.h"
+#include "saltus/optim/trajectory_layout.h"
+
+namespace saltus {
+
+using Vector6d = Eigen::Matrix<double, 6, 1>;
+
+/// Maximum number of keyframe times one span's knots depend on (8 knots, K = 1).
+inline constexpr int kMaxLocalTimes = 8;
+
+/// Derivatives of a vector-valued quantity at one time with respect to the local variables.
+template <int Rows>
+struct LocalJacobian {
+  Eigen::Matrix<double, Rows, 1> value;
+  int first_control_variable = 0;  ///< x index of the block's first column
+  /// Rows × (4·curve_block): columns follow the layout's control-major order.
+  Eigen::Matrix<double, Rows, Eigen::Dynamic> control;
+  int time_count = 0;
+  std::array<int, kMaxLocalTimes> time_variable{};  ///< x indices of the time columns
+  Eigen::Matrix<double, Rows, kMaxLocalTimes> time;
+};
+
+class RootWrenchDerivatives {
+ public:
+  RootWrenchDerivatives(const BodyModel& model, const TrajectoryLayout& layout,
+                        const TrajectoryReference& reference);
+  ~RootWrenchDerivatives();
+
+  /// Loads a new point x (knots and control points); every query below uses it.
+  void set_variables(const double* x);
+
+  /// Root wrench at t (force then moment, root frame): value only.
+  Vector6d wrench(double t);
+  /// Root wrench at t and its derivatives.
+  void wrench_jacobian(double t, LocalJacobian<6>& out);
+
+  /// Root translation at keyframe i's (current) time and its derivatives.
+  void keyframe_translation(int keyframe, LocalJacobian<3>& out);
+  /// Segment `segment`'s rotation at keyframe i's time as 4 coefficients (w, x, y, z) and their
+  /// derivatives.
+  void keyframe_rotation(int keyframe, int segment, LocalJacobian<4>& out);
+
+  const std::vector<double>& knots() const { return knots_; }
+
+ private:
+  struct Workspace;
+  const BodyModel& model_;
+  TrajectoryLayout layout_;
+  TrajectoryReference reference_;
+  std::vector<double> knots_;
+  std::vector<double> keyframe_times_;
+  std::vector<Eigen::Vector3d> root_control_;                   ///< [control]
+  std::vector<std::vector<Eigen::Quaterniond>> joint_control_;  ///< [segment][control]
+  std::vector<std::vector<Eigen::Vector3d>> joint_delta_;       ///< [segment][control]
+  std::unique_ptr<Workspace> work_;
+};
+
+}  // namespace saltus

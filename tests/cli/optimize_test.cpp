@@ -1,0 +1,90 @@
+// `saltus optimize` end to end: outputs as DESIGN §6, the residual reduced, the keyframe
+// constraints held in the written trajectory (not only on the solver's word), and the optimised
+// motion reloading to the same numbers through `saltus evaluate`.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "saltus/io/trajectory_csv.h"
+#include "support/cli_runner.h"
+
+namespace saltus {
+namespace {
+
+nlohmann::json read_json(const std::string& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);
+}
+
+TEST(CliOptimize, ReducesTheResidualKeepsKeyframesAndReloads) {
+  test::TempDir dir;
+  const std::string out = dir / "opt";
+  const auto run = test::run_cli("optimize " + test::m1_path() + " --out " + out +
+                                 " --samples 61 --max-iter 25 --quiet");
+  // 0 = converged, 3 = iteration limit reached; both write complete results.
+  ASSERT_TRUE(run.status == 0 || run.status == 3) << run.output;
+  for (const char* name : {"result.json", "trajectory_before.csv", "trajectory_after.csv",
+                           "model.json", "optimized.motion.json"})
+    EXPECT_TRUE(std::filesystem::exists(out + "/" + name)) << name;
+
+  const auto result = read_json(out + "/result.json");
+  EXPECT_EQ(result["status"] == "solved", run.status == 0);
+  const double before = result["before"]["avg_root_force"];
+  const double after = result["after"]["avg_root_force"];
+  EXPECT_LT(after, before / 5) << "before " << before << " after " << after;
+  EXPECT_GT(result["variables"].get<int>(), 0);
+  EXPECT_GT(result["constraints"].get<int>(), 0);
+  if (result["status"] == "solved") {
+    // Checked on the written trajectory by `keyframe_errors`, not on Ipopt's word.
+    EXPECT_LE(result["max_translation_error_m"].get<double>(), 0.25 + 1e-6);
+    EXPECT_LE(result["max_quaternion_error"].get<double>(), 0.05 + 1e-4);
+  } else {
+    // An unfinished solve may end slightly outside the tolerances; it must say so.
+    EXPECT_NE(result["status"], "solved");
+    EXPECT_LE(result["max_quaternion_error"].get<double>(), 0.1);
+  }
+
+  // The written trajectory itself: root force recomputed from the CSV's F columns.
+  const CsvTable after_csv = read_csv_table(out + "/trajectory_after.csv");
+  ASSERT_EQ(after_csv.rows.size(), 61u);
+  double sum = 0;
+  const int f0 = after_csv.column("root_fx");
+  for (std::size_t k = 0; k + 1 < after_csv.rows.size(); ++k) {
+    double a = 0, b = 0;
+    for (int i = 0; i < 6; ++i) {
+      a += after_csv.rows[k][f0 + i] * after_csv.rows[k][f0 + i];
+      b += after_csv.rows[k + 1][f0 + i] * after_csv.rows[k + 1][f0 + i];
+    }
+    sum += 0.5 * (a + b) * (after_csv.rows[k + 1][0] - after_csv.rows[k][0]);
+  }
+  const double duration = after_csv.rows.back()[0];
+  EXPECT_NEAR(std::sqrt(sum / duration / 6), after, 1e-9 * (1 + after));
+
+  // Reload: evaluate of the optimised motion reproduces the "after" numbers.
+  const auto again = test::run_cli("evaluate " + out + "/optimized.motion.json --out " +
+                                   (dir / "re") + " --samples 61 --quiet");
+  ASSERT_EQ(again.status, 0) << again.output;
+  const auto re = read_json(dir / "re/result.json");
+  for (const char* key : {"objective", "avg_root_force", "max_force_N", "max_moment_Nm"})
+    EXPECT_NEAR(re["before"][key].get<double>(), result["after"][key].get<double>(),
+                1e-9 * (1 + std::abs(result["after"][key].get<double>())))
+        << key;
+  EXPECT_EQ(re["keyframe_times_before"], result["keyframe_times_after"]);
+}
+
+TEST(CliOptimize, BadOptionsExitWithTwo) {
+  test::TempDir dir;
+  EXPECT_EQ(test::run_cli("optimize " + test::m1_path() + " --out " + (dir / "o") +
+                          " --formulation sloppy")
+                .status,
+            2);
+  EXPECT_EQ(test::run_cli("optimize " + test::m1_path() + " --out " + (dir / "o") + " --epsilon -1")
+                .status,
+            2);
+  EXPECT_FALSE(std::filesystem::exists(dir / "o"));
+}
+
+}  // namespace
+}  // namespace saltus

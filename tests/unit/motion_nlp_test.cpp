@@ -1,0 +1,158 @@
+// The optimiser's derivatives against central finite differences at random points, for every
+// kind of variable (root translation controls, joint tangent coordinates, keyframe times), both
+// formulations, with and without knot refinement.
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "saltus/motion/interpolate.h"
+#include "saltus/optim/motion_nlp.h"
+#include "support/test_motions.h"
+
+namespace saltus {
+namespace {
+
+struct NlpAtRandomPoint {
+  BodyModel model = test::bundled_model();
+  Motion motion;
+  std::unique_ptr<MotionNlp> nlp;
+  std::vector<double> x;
+
+  NlpAtRandomPoint(Formulation formulation, int knots_per_interval, unsigned seed) {
+    motion = test::tuck_motion(model);
+    MotionNlpOptions options;
+    options.formulation = formulation;
+    options.knots_per_interval = knots_per_interval;
+    options.samples = 23;
+    InterpolationOptions interpolation;
+    interpolation.knots_per_interval = knots_per_interval;
+    const Trajectory<double> initial = interpolate_keyframes(motion, model, interpolation);
+    nlp = std::make_unique<MotionNlp>(motion, model, initial, options);
+    x.resize(nlp->variable_count());
+    nlp->initial_point(x.data());
+    // A random point away from the start, every kind of variable moved.
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const TrajectoryLayout& layout = nlp->layout();
+    for (int v = 0; v < layout.control_variable_count(); ++v)
+      x[v] += (v % layout.curve_block() < 3 ? 0.02 : 0.08) * u(rng);
+    for (int i = 1; i + 1 < layout.keyframe_count; ++i)
+      x[layout.time_variable(i)] += 0.03 * u(rng);
+  }
+};
+
+/// Relative agreement of an analytic derivative with a central difference.
+void expect_close(double analytic, double numeric, double scale, const std::string& what) {
+  EXPECT_NEAR(analytic, numeric, 2e-5 * scale + 1e-6 * std::abs(numeric)) << what;
+}
+
+class NlpDerivatives : public ::testing::TestWithParam<std::tuple<Formulation, int>> {};
+
+TEST_P(NlpDerivatives, GradientMatchesFiniteDifferences) {
+  NlpAtRandomPoint s(std::get<0>(GetParam()), std::get<1>(GetParam()), 7);
+  MotionNlp& nlp = *s.nlp;
+  std::vector<double> gradient(nlp.variable_count());
+  nlp.gradient(s.x.data(), gradient.data());
+  const double scale =
+      Eigen::Map<Eigen::VectorXd>(gradient.data(), gradient.size()).cwiseAbs().maxCoeff();
+  ASSERT_GT(scale, 0.0);
+  const double h = 1e-6;
+  int checked = 0;
+  for (int v = 0; v < nlp.variable_count();
+       v += (v < nlp.layout().control_variable_count() ? 5 : 1)) {
+    std::vector<double> xp = s.x, xm = s.x;
+    xp[v] += h;
+    xm[v] -= h;
+    const double numeric = (nlp.objective(xp.data()) - nlp.objective(xm.data())) / (2 * h);
+    expect_close(gradient[v], numeric, scale, "variable " + std::to_string(v));
+    ++checked;
+  }
+  EXPECT_GT(checked, 50);
+}
+
+TEST_P(NlpDerivatives, ConstraintJacobianMatchesFiniteDifferences) {
+  NlpAtRandomPoint s(std::get<0>(GetParam()), std::get<1>(GetParam()), 11);
+  MotionNlp& nlp = *s.nlp;
+  const int n = nlp.variable_count(), m = nlp.constraint_count();
+  const int nnz = nlp.jacobian_nonzeros();
+  std::vector<int> rows(nnz), cols(nnz);
+  std::vector<double> values(nnz);
+  nlp.jacobian_structure(rows.data(), cols.data());
+  nlp.jacobian_values(s.x.data(), values.data());
+  Eigen::MatrixXd analytic = Eigen::MatrixXd::Zero(m, n);
+  for (int e = 0; e < nnz; ++e)
+    analytic(rows[e], cols[e]) += values[e];
+
+  const double h = 1e-6;
+  std::vector<double> gp(m), gm(m);
+  for (int v = 0; v < n; v += (v < nlp.layout().control_variable_count() ? 3 : 1)) {
+    std::vector<double> xp = s.x, xm = s.x;
+    xp[v] += h;
+    xm[v] -= h;
+    nlp.constraints(xp.data(), gp.data());
+    nlp.constraints(xm.data(), gm.data());
+    for (int r = 0; r < m; ++r) {
+      const double numeric = (gp[r] - gm[r]) / (2 * h);
+      // Also proves the sparsity: a derivative outside the declared structure shows up here.
+      const double scale = std::max(1.0, analytic.row(r).cwiseAbs().maxCoeff());
+      expect_close(analytic(r, v), numeric, scale,
+                   "row " + std::to_string(r) + " variable " + std::to_string(v));
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Formulations, NlpDerivatives,
+                         ::testing::Combine(::testing::Values(Formulation::kRelaxed,
+                                                              Formulation::kStrict),
+                                            ::testing::Values(1, 2)));
+
+TEST(NlpHessian, IsDampedGaussNewtonOfTheRootWrench) {
+  // vᵀHv = Σ_s 2 w_s ‖J_s v‖² + c·J(x)·‖v‖² (damping), with J_s v taken by central differences of
+  // the root wrench along v: an independent path to the Hessian's assembly and band indexing.
+  NlpAtRandomPoint s(Formulation::kRelaxed, 2, 3);
+  MotionNlp& nlp = *s.nlp;
+  const int n = nlp.variable_count();
+  const int nnz = nlp.hessian_nonzeros();
+  std::vector<int> rows(nnz), cols(nnz);
+  std::vector<double> values(nnz);
+  nlp.hessian_structure(rows.data(), cols.data());
+  std::vector<double> lambda(nlp.constraint_count(), 0.0);
+  nlp.hessian_values(s.x.data(), 1.0, lambda.data(), values.data());
+  Eigen::MatrixXd h = Eigen::MatrixXd::Zero(n, n);
+  for (int e = 0; e < nnz; ++e) {
+    ASSERT_LE(cols[e], rows[e]);  // lower triangle
+    h(rows[e], cols[e]) += values[e];
+    if (rows[e] != cols[e]) h(cols[e], rows[e]) += values[e];
+  }
+  std::mt19937 rng(5);
+  std::normal_distribution<double> g;
+  Eigen::VectorXd v(n);
+  for (int i = 0; i < n; ++i)
+    v[i] = g(rng);
+
+  RootWrenchDerivatives wrench(s.model, nlp.layout(), nlp.reference());
+  const std::vector<double>& times = nlp.sample_times();
+  const double duration = times.back();
+  const double eps = 1e-6;
+  std::vector<double> xp = s.x, xm = s.x;
+  for (int i = 0; i < n; ++i)
+    xp[i] += eps * v[i], xm[i] -= eps * v[i];
+  double expected = 0.0;
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    const double dt_left = k > 0 ? times[k] - times[k - 1] : 0.0;
+    const double dt_right = k + 1 < times.size() ? times[k + 1] - times[k] : 0.0;
+    const double weight = 0.5 * (dt_left + dt_right) / duration;
+    wrench.set_variables(xp.data());
+    const Vector6d fp = wrench.wrench(times[k]);
+    wrench.set_variables(xm.data());
+    const Vector6d fm = wrench.wrench(times[k]);
+    expected += 2.0 * weight * ((fp - fm) / (2 * eps)).squaredNorm();
+  }
+  expected += nlp.options().damping * nlp.force_objective(s.x.data()) * v.squaredNorm();
+  const double actual = v.dot(h * v);
+  EXPECT_NEAR(actual, expected, 1e-5 * expected);
+}
+
+}  // namespace
+}  // namespace saltus
