@@ -1,5 +1,6 @@
 #include "saltus/io/trajectory_csv.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -27,14 +28,21 @@ void write_trajectory_csv(std::ostream& out, const BodyModel& model,
   for (std::size_t i = 0; i < header.size(); ++i)
     out << (i ? "," : "") << header[i];
   out << '\n';
+  // std::to_chars writes the shortest text that reads back to the same double: exact, and several
+  // times faster than printf's %.17g (it dominated `saltus evaluate` at 1000 samples).
+  std::string line;
   char buffer[32];
+  auto append = [&](double v) {
+    const auto end = std::to_chars(buffer, buffer + sizeof buffer, v).ptr;
+    line.append(buffer, end);
+  };
   auto put = [&](double v) {
-    std::snprintf(buffer, sizeof buffer, ",%.17g", v);
-    out << buffer;
+    line.push_back(',');
+    append(v);
   };
   for (const SampleRecord& r : samples) {
-    std::snprintf(buffer, sizeof buffer, "%.17g", r.time);
-    out << buffer;
+    line.clear();
+    append(r.time);
     for (int s = 0; s < model.size(); ++s) {
       const Eigen::Vector3d& p = r.segment_position[s];
       Eigen::Quaterniond q = r.segment_rotation[s];
@@ -48,7 +56,8 @@ void write_trajectory_csv(std::ostream& out, const BodyModel& model,
       put(r.root_wrench[i]);
     for (int i = 0; i < 6; ++i)
       put(r.residual[i]);
-    out << '\n';
+    line.push_back('\n');
+    out << line;
   }
 }
 

@@ -15,8 +15,8 @@ namespace saltus {
 /// Column names in order.
 std::vector<std::string> trajectory_csv_header(const BodyModel& model);
 
-/// Writes header and rows (17 significant digits: the file is an exact record, and independent
-/// checks differentiate it numerically).
+/// Writes header and rows, each double in the shortest text that reads back exactly: the file is
+/// an exact record, and independent checks differentiate it numerically.
 void write_trajectory_csv(std::ostream& out, const BodyModel& model,
                           const std::vector<SampleRecord>& samples);
 
