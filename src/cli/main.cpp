@@ -126,7 +126,7 @@ struct OptimizeArgs {
   int max_iterations = 100;
   double tolerance = 1e-8;
   double max_time_shift = 0.25;
-  double max_joint_deviation_deg = 45.0;
+  double regularization = 1e-3;
 };
 
 void add_optimize(CLI::App* cmd, OptimizeArgs& args) {
@@ -150,10 +150,10 @@ void add_optimize(CLI::App* cmd, OptimizeArgs& args) {
                   "how far (s) a keyframe time may move from the given one")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  cmd->add_option("--max-joint-deviation", args.max_joint_deviation_deg,
-                  "degrees a joint's spline control point may turn away from the interpolated "
-                  "motion before a steep penalty sets in (keeps light limbs from flailing)")
-      ->check(CLI::PositiveNumber)
+  cmd->add_option("--regularization", args.regularization,
+                  "weight k of the proximity term k*J(start)*sum(delta^2) that keeps the joints "
+                  "near the interpolated motion (light limbs would otherwise flail); 0 = none")
+      ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
 }
 
@@ -169,7 +169,7 @@ int run_optimize(const OptimizeArgs& args) {
   options.nlp.knots_per_interval = args.common.knots_per_interval;
   options.nlp.samples = args.common.samples;
   options.nlp.max_time_shift = args.max_time_shift;
-  options.nlp.max_joint_deviation_deg = args.max_joint_deviation_deg;
+  options.nlp.regularization = args.regularization;
   options.solver.max_iterations = args.max_iterations;
   options.solver.tolerance = args.tolerance;
   options.solver.acceptable_tolerance = std::max(args.tolerance, 1e-6);

@@ -15,7 +15,7 @@ namespace saltus {
 
 struct SolverOptions {
   int max_iterations = 100;
-  double tolerance = 1e-8;             ///< Ipopt's tol (scaled NLP error)
+  double tolerance = 1e-6;             ///< Ipopt's tol (scaled NLP error)
   double acceptable_tolerance = 1e-6;  ///< Ipopt's acceptable_tol
   bool verbose = false;                ///< Ipopt's own iteration log on stdout
 };

@@ -178,7 +178,7 @@ MotionNlp::MotionNlp(const Motion& motion, const BodyModel& model,
   wrench_jacobian_.resize(options.samples);
   translation_jacobian_.resize(n_key);
   rotation_jacobian_.resize(n_key * model.size());
-  initial_objective_ = 1.0;  // deviation_penalty reads it; δ = 0 there, so no penalty
+  initial_objective_ = 0.0;  // deviation_penalty reads it (and is zero at δ = 0 anyway)
   initial_objective_ = options.formulation == Formulation::kRelaxed
                            ? force_objective(initial_x_.data())
                            : objective(initial_x_.data());
@@ -186,26 +186,18 @@ MotionNlp::MotionNlp(const Motion& motion, const BodyModel& model,
 
 MotionNlp::~MotionNlp() = default;
 
-double MotionNlp::deviation_limit() const {
-  // exp(δ) turns by 2|δ|: half the allowed angle per tangent component.
-  return 0.5 * options_.max_joint_deviation_deg * M_PI / 180.0;
-}
-
 double MotionNlp::deviation_penalty(const double* x, double* gradient,
-                                    double* hessian_diagonal_scale) const {
-  // w Σ max(0, |δ| − limit)²: zero inside the limit, so the optimum is that of J wherever the
-  // limit is not reached; w makes a 1° excess cost a tenth of the starting objective.
-  const double limit = deviation_limit();
-  const double excess_1deg = 0.5 * M_PI / 180.0;
-  const double w = 0.1 * std::max(initial_objective_, 1e-6) / (excess_1deg * excess_1deg);
+                                    double* hessian_diagonal) const {
+  // w Σ ‖δ‖² over the joints' tangent coordinates, w = κ·J(start): smooth and convex, it makes
+  // the directions the root force hardly sees (light limbs) well posed without bounds.
+  const double w = options_.regularization * initial_objective_;
+  if (w <= 0) return 0.0;
   double penalty = 0.0;
   for (int v = 0; v < layout_.control_variable_count(); ++v) {
     if (v % layout_.curve_block() < 3) continue;  // root translation
-    const double excess = std::abs(x[v]) - limit;
-    if (excess <= 0) continue;
-    penalty += w * excess * excess;
-    if (gradient) gradient[v] += 2.0 * w * excess * (x[v] > 0 ? 1.0 : -1.0);
-    if (hessian_diagonal_scale) hessian_diagonal_scale[v] += 2.0 * w;
+    penalty += w * x[v] * x[v];
+    if (gradient) gradient[v] += 2.0 * w * x[v];
+    if (hessian_diagonal) hessian_diagonal[v] += 2.0 * w;
   }
   return penalty;
 }
@@ -217,9 +209,8 @@ int MotionNlp::constraint_count() const {
 void MotionNlp::bounds(double* x_lower, double* x_upper, double* g_lower, double* g_upper) const {
   for (int v = 0; v < layout_.control_variable_count(); ++v) {
     const bool joint = v % layout_.curve_block() >= 3;
-    // Tangent coordinates stay well inside |δ| < π/2 where exp is a one-to-one chart. The
-    // deviation limit itself is a penalty (deviation_penalty), not a bound: hundreds of bounded
-    // variables would add barrier terms that swamp a small objective.
+    // Tangent coordinates stay well inside |δ| < π/2 where exp is a one-to-one chart. Nothing
+    // tighter: hundreds of bounded variables would add barrier terms that swamp a small J.
     x_lower[v] = joint ? -1.5 : -kUnbounded;
     x_upper[v] = joint ? 1.5 : kUnbounded;
   }
