@@ -108,7 +108,8 @@ INSTANTIATE_TEST_SUITE_P(Formulations, NlpDerivatives,
                                             ::testing::Values(1, 2)));
 
 TEST(NlpHessian, IsDampedGaussNewtonOfTheRootWrench) {
-  // vᵀHv = Σ_s 2 w_s ‖J_s v‖² + c·J(x)·‖v‖² (damping), with J_s v taken by central differences of
+  // vᵀHv = Σ_s 2 w_s ‖J_s v‖² + c·J(x)·‖v‖² (damping) + proximity curvature, with J_s v by central
+  // differences of
   // the root wrench along v: an independent path to the Hessian's assembly and band indexing.
   NlpAtRandomPoint s(Formulation::kRelaxed, 2, 3);
   MotionNlp& nlp = *s.nlp;
@@ -150,6 +151,13 @@ TEST(NlpHessian, IsDampedGaussNewtonOfTheRootWrench) {
     expected += 2.0 * weight * ((fp - fm) / (2 * eps)).squaredNorm();
   }
   expected += nlp.options().damping * nlp.force_objective(s.x.data()) * v.squaredNorm();
+  // Proximity term κ·J(start)·Σ‖δ‖² over the joints' tangent coordinates: curvature 2κJ(start).
+  std::vector<double> start(n);
+  nlp.initial_point(start.data());
+  const double w = nlp.options().regularization * nlp.force_objective(start.data());
+  const TrajectoryLayout& layout = nlp.layout();
+  for (int i = 0; i < layout.control_variable_count(); ++i)
+    if (i % layout.curve_block() >= 3) expected += 2.0 * w * v[i] * v[i];
   const double actual = v.dot(h * v);
   EXPECT_NEAR(actual, expected, 1e-5 * expected);
 }
