@@ -34,6 +34,16 @@ JointMotion joints_of(const Trajectory<double>& trajectory) {
   };
 }
 
+/// Take-off as in every test motion (test::base_motion) with the case's angular momentum.
+FreeFlightInitialState initial_state(const Trajectory<double>& trajectory) {
+  const Motion reference = test::base_motion("take-off");
+  FreeFlightInitialState initial;
+  initial.com_position = reference.takeoff.com_position;
+  initial.com_velocity = reference.takeoff.com_velocity;
+  initial.root_orientation = trajectory.rotations[0].evaluate(0.0).q;
+  return initial;
+}
+
 Eigen::Vector3d body_rate(const Eigen::Quaterniond& before, const Eigen::Quaterniond& after,
                           const Eigen::Quaterniond& at, double span) {
   // ω = 2 vec(q* q̇), q̇ by central difference (quaternions kept in one hemisphere).
@@ -47,13 +57,9 @@ Eigen::Vector3d body_rate(const Eigen::Quaterniond& before, const Eigen::Quatern
 
 TEST_P(FreeFlight, RootWrenchVanishesByFiniteDifferences) {
   const BodyModel model = test::bundled_model();
-  const Motion motion = GetParam().make(model);
-  const Trajectory<double> trajectory = interpolate_keyframes(motion, model);
-  FreeFlightInitialState initial;
-  initial.com_position = motion.takeoff.com_position;
-  initial.com_velocity = motion.takeoff.com_velocity;
+  const Trajectory<double> trajectory = interpolate_keyframes(GetParam().make(model), model);
+  FreeFlightInitialState initial = initial_state(trajectory);
   initial.angular_momentum = GetParam().angular_momentum;
-  initial.root_orientation = trajectory.rotations[0].evaluate(0.0).q;
 
   const double h = 2e-3;
   std::vector<double> times;
@@ -95,13 +101,9 @@ TEST_P(FreeFlight, RootWrenchVanishesByFiniteDifferences) {
 
 TEST_P(FreeFlight, ConservesAngularMomentumAndFollowsTheParabola) {
   const BodyModel model = test::bundled_model();
-  const Motion motion = GetParam().make(model);
-  const Trajectory<double> trajectory = interpolate_keyframes(motion, model);
-  FreeFlightInitialState initial;
-  initial.com_position = motion.takeoff.com_position;
-  initial.com_velocity = motion.takeoff.com_velocity;
+  const Trajectory<double> trajectory = interpolate_keyframes(GetParam().make(model), model);
+  FreeFlightInitialState initial = initial_state(trajectory);
   initial.angular_momentum = GetParam().angular_momentum;
-  initial.root_orientation = trajectory.rotations[0].evaluate(0.0).q;
   std::vector<double> times;
   for (int k = 0; k <= 51; ++k)
     times.push_back(2.04 * k / 51);

@@ -1,10 +1,7 @@
 #include "saltus/io/json_reader.h"
 
 #include <cmath>
-#include <cstdio>
-#include <filesystem>
 #include <fstream>
-#include <random>
 #include <sstream>
 
 namespace saltus {
@@ -23,19 +20,6 @@ nlohmann::json read_json_file(const std::string& path) {
     throw InputError(path, "",
                      "invalid JSON: " + (pos == std::string::npos ? what : what.substr(pos)));
   }
-}
-
-void write_json_file_atomic(const std::string& path, const nlohmann::json& value, int indent) {
-  namespace fs = std::filesystem;
-  std::random_device rd;
-  const std::string tmp = path + ".tmp-" + std::to_string(rd());
-  {
-    std::ofstream out(tmp);
-    if (!out) throw std::runtime_error(path + ": cannot open for writing");
-    out << value.dump(indent) << '\n';
-    if (!out) throw std::runtime_error(path + ": write failed");
-  }
-  fs::rename(tmp, path);
 }
 
 std::string json_pointer_escape(const std::string& key) {

@@ -17,9 +17,6 @@ namespace saltus {
 /// Parses a whole JSON file. Throws InputError naming the file (and line/column for syntax).
 nlohmann::json read_json_file(const std::string& path);
 
-/// Writes JSON atomically: to "<path>.tmp-XXXX" first, then renames over `path`.
-void write_json_file_atomic(const std::string& path, const nlohmann::json& value, int indent = 2);
-
 /// A view of one JSON value plus where it sits (file label and JSON pointer).
 class JsonNode {
  public:

@@ -45,11 +45,4 @@ Quat<double> quat_from_euler_deg(const Eigen::Vector3d& angles_deg, const std::s
   return q.normalized();
 }
 
-Eigen::Vector3d euler_deg_from_quat(const Quat<double>& q, const std::string& order) {
-  check_order(order);
-  const Eigen::Vector3d a = q.toRotationMatrix().eulerAngles(
-      axis_index(order[0]), axis_index(order[1]), axis_index(order[2]));
-  return a * (180.0 / M_PI);
-}
-
 }  // namespace saltus

@@ -81,8 +81,4 @@ Scalar quaternion_distance(const Quat<Scalar>& a, const Quat<Scalar>& b) {
 /// for an order that is not three letters from {X, Y, Z} with no two adjacent equal.
 Quat<double> quat_from_euler_deg(const Eigen::Vector3d& angles_deg, const std::string& order);
 
-/// Intrinsic Euler angles in degrees for the given order (inverse of quat_from_euler_deg away
-/// from gimbal lock).
-Eigen::Vector3d euler_deg_from_quat(const Quat<double>& q, const std::string& order);
-
 }  // namespace saltus

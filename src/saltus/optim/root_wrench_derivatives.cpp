@@ -122,6 +122,31 @@ void seed_knots(const TrajectoryLayout& layout, const std::vector<double>& knots
   }
 }
 
+/// Curve k's span evaluated with its 4 active control tangents as AD directions 0..11 (the
+/// basis carries the time directions).
+QuaternionSample<SplineAD> seeded_joint_span(const std::vector<Eigen::Vector3d>& delta,
+                                             const std::vector<Eigen::Quaterniond>& reference,
+                                             int c0, const SpanBasis<SplineAD>& basis) {
+  Quat<SplineAD> c[4];
+  for (int i = 0; i < 4; ++i) {
+    Vec3<SplineAD> d;
+    for (int j = 0; j < 3; ++j)
+      d[j] = spline_variable(delta[c0 + i][j], 3 * i + j);
+    c[i] = reference[c0 + i].cast<SplineAD>() * quat_exp(d);
+  }
+  return evaluate_quaternion_span(c[0], c[1], c[2], c[3], basis);
+}
+
+/// The root translation's span with its 4 active control points as AD directions 0..11.
+VectorSample<SplineAD> seeded_root_span(const std::vector<Eigen::Vector3d>& control, int c0,
+                                        const SpanBasis<SplineAD>& basis) {
+  Vec3<SplineAD> p[4];
+  for (int i = 0; i < 4; ++i)
+    for (int d = 0; d < 3; ++d)
+      p[i][d] = spline_variable(control[c0 + i][d], 3 * i + d);
+  return evaluate_vector_span(p[0], p[1], p[2], p[3], basis);
+}
+
 template <int Rows>
 void scatter(const Eigen::Matrix<double, Rows, kSplineDirections>& m, int curve, int curve_block,
              int time_count, LocalJacobian<Rows>& out) {
@@ -176,14 +201,8 @@ void RootWrenchDerivatives::wrench_jacobian(double t, LocalJacobian<6>& out) {
   std::vector<Eigen::Quaterniond> q(n);
   std::vector<Eigen::Vector3d> omega(n), alpha(n);
   for (int k = 0; k < n; ++k) {
-    Quat<SplineAD> c[4];
-    for (int i = 0; i < 4; ++i) {
-      Vec3<SplineAD> delta;
-      for (int d = 0; d < 3; ++d)
-        delta[d] = spline_variable(joint_delta_[k][c0 + i][d], 3 * i + d);
-      c[i] = reference_.joint_control[k][c0 + i].cast<SplineAD>() * quat_exp(delta);
-    }
-    const QuaternionSample<SplineAD> s = evaluate_quaternion_span(c[0], c[1], c[2], c[3], basis);
+    const QuaternionSample<SplineAD> s =
+        seeded_joint_span(joint_delta_[k], reference_.joint_control[k], c0, basis);
     q[k] = quaternion_value(s.q);
     auto& jac = w.joint_state_jacobian[k];
     for (int dir = 0; dir < kSplineDirections; ++dir) {
@@ -199,11 +218,7 @@ void RootWrenchDerivatives::wrench_jacobian(double t, LocalJacobian<6>& out) {
       jac.row(6 + i) = s.alpha[i].derivatives().transpose();
     }
   }
-  Vec3<SplineAD> p[4];
-  for (int i = 0; i < 4; ++i)
-    for (int d = 0; d < 3; ++d)
-      p[i][d] = spline_variable(root_control_[c0 + i][d], 3 * i + d);
-  const VectorSample<SplineAD> b = evaluate_vector_span(p[0], p[1], p[2], p[3], basis);
+  const VectorSample<SplineAD> b = seeded_root_span(root_control_, c0, basis);
   Eigen::Vector3d position, velocity, acceleration;
   for (int i = 0; i < 3; ++i) {
     position[i] = b.position[i].value();
@@ -274,11 +289,7 @@ void RootWrenchDerivatives::keyframe_translation(int keyframe, LocalJacobian<3>&
   seed_knots(layout_, knots_, span, w.knots_ad, w.time_count, w.time_variable);
   const SpanBasis<SplineAD> basis =
       cubic_basis_on_span(w.knots_ad, span, keyframe_time(w.knots_ad, layout_, keyframe));
-  Vec3<SplineAD> p[4];
-  for (int i = 0; i < 4; ++i)
-    for (int d = 0; d < 3; ++d)
-      p[i][d] = spline_variable(root_control_[c0 + i][d], 3 * i + d);
-  const VectorSample<SplineAD> b = evaluate_vector_span(p[0], p[1], p[2], p[3], basis);
+  const VectorSample<SplineAD> b = seeded_root_span(root_control_, c0, basis);
   Eigen::Matrix<double, 3, kSplineDirections> jac;
   for (int i = 0; i < 3; ++i) {
     out.value[i] = b.position[i].value();
@@ -295,14 +306,8 @@ void RootWrenchDerivatives::keyframe_rotation(int keyframe, int segment, LocalJa
   seed_knots(layout_, knots_, span, w.knots_ad, w.time_count, w.time_variable);
   const SpanBasis<SplineAD> basis =
       cubic_basis_on_span(w.knots_ad, span, keyframe_time(w.knots_ad, layout_, keyframe));
-  Quat<SplineAD> c[4];
-  for (int i = 0; i < 4; ++i) {
-    Vec3<SplineAD> delta;
-    for (int d = 0; d < 3; ++d)
-      delta[d] = spline_variable(joint_delta_[segment][c0 + i][d], 3 * i + d);
-    c[i] = reference_.joint_control[segment][c0 + i].cast<SplineAD>() * quat_exp(delta);
-  }
-  const QuaternionSample<SplineAD> s = evaluate_quaternion_span(c[0], c[1], c[2], c[3], basis);
+  const QuaternionSample<SplineAD> s =
+      seeded_joint_span(joint_delta_[segment], reference_.joint_control[segment], c0, basis);
   Eigen::Matrix<double, 4, kSplineDirections> jac;
   const SplineAD* coefficient[4] = {&s.q.w(), &s.q.x(), &s.q.y(), &s.q.z()};
   for (int i = 0; i < 4; ++i) {
