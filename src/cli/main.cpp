@@ -126,7 +126,7 @@ struct OptimizeArgs {
   int max_iterations = 100;
   double tolerance = 1e-8;
   double max_time_shift = 0.25;
-  double regularization = 1e-3;
+  double regularization = 1.0;
 };
 
 void add_optimize(CLI::App* cmd, OptimizeArgs& args) {
@@ -151,8 +151,8 @@ void add_optimize(CLI::App* cmd, OptimizeArgs& args) {
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   cmd->add_option("--regularization", args.regularization,
-                  "weight k of the proximity term k*J(start)*sum(delta^2) that keeps the joints "
-                  "near the interpolated motion (light limbs would otherwise flail); 0 = none")
+                  "weight (N^2/rad^2) of the proximity term that keeps the joints near the "
+                  "interpolated motion (light limbs would otherwise flail); 0 = none")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
 }

@@ -178,19 +178,15 @@ MotionNlp::MotionNlp(const Motion& motion, const BodyModel& model,
   wrench_jacobian_.resize(options.samples);
   translation_jacobian_.resize(n_key);
   rotation_jacobian_.resize(n_key * model.size());
-  initial_objective_ = 0.0;  // deviation_penalty reads it (and is zero at δ = 0 anyway)
-  initial_objective_ = options.formulation == Formulation::kRelaxed
-                           ? force_objective(initial_x_.data())
-                           : objective(initial_x_.data());
 }
 
 MotionNlp::~MotionNlp() = default;
 
 double MotionNlp::deviation_penalty(const double* x, double* gradient,
                                     double* hessian_diagonal) const {
-  // w Σ ‖δ‖² over the joints' tangent coordinates, w = κ·J(start): smooth and convex, it makes
-  // the directions the root force hardly sees (light limbs) well posed without bounds.
-  const double w = options_.regularization * initial_objective_;
+  // w Σ ‖δ‖² over the joints' tangent coordinates: smooth and convex, it makes the directions
+  // the root force hardly sees (light limbs) well posed without bounds.
+  const double w = options_.regularization;
   if (w <= 0) return 0.0;
   double penalty = 0.0;
   for (int v = 0; v < layout_.control_variable_count(); ++v) {

@@ -45,14 +45,15 @@ struct MotionNlpOptions {
   /// Light segments (feet, forearms) barely change the root force, so undamped Gauss-Newton
   /// steps would swing them by radians on a linear model that no longer holds.
   double damping = 1.0;
-  /// κ of the proximity term κ·J(start)·Σ‖δ‖² added to the relaxed objective (δ: the joints'
-  /// control-point tangents relative to the interpolation, rad). The root force hardly depends
+  /// Weight w (N²/rad²) of the proximity term w·Σ‖δ‖² added to the relaxed objective (δ: the
+  /// joints' control-point tangents relative to the interpolation, rad): turning a joint control
+  /// by 1 rad costs as much as 1 N² of mean squared root wrench. The root force hardly depends
   /// on light segments, so without it the optimum swings feet and forearms through large angles
-  /// between keyframes for tiny gains; with κ = 1e-3 moving every joint control by 0.1 rad costs
-  /// 0.3 % of the starting objective. Measured on M1: every segment stays within 28° of the
-  /// interpolation (70° with κ = 1e-4, 180° with none) while the root force falls 20×. Reported
-  /// objectives are J alone. 0 disables it.
-  double regularization = 1e-3;
+  /// between keyframes for tiny gains. Measured on M1: with w = 1 every segment stays within
+  /// about 30° of the interpolation (180° with none) while the root force falls 20×. A fixed
+  /// physical weight, not one relative to the starting J, so that a bad start (wrong timing) is
+  /// not held near its own interpolation. Reported objectives are J alone. 0 disables it.
+  double regularization = 1.0;
 };
 
 class MotionNlp : public Nlp {
@@ -106,7 +107,6 @@ class MotionNlp : public Nlp {
   TrajectoryLayout layout_;
   TrajectoryReference reference_;
   std::vector<double> initial_x_;
-  double initial_objective_ = 1.0;
   double duration_ = 0.0;
   double time_gap_ = 0.0;
   Takeoff takeoff_;
