@@ -159,6 +159,20 @@ SolveReport solve_with_ipopt(Nlp& nlp, const SolverOptions& options,
   // Keyframe constraints are ‖Q − Q̄‖² <= ε2² = 0.0025: Ipopt's default 1e-4 violation would let
   // "solved" exceed ε2 by 2%.
   app->Options()->SetNumericValue("constr_viol_tol", 1e-7);
+  if (!options.derivative_test_file.empty()) {
+    app->Options()->SetStringValue("derivative_test", "first-order");
+    // Ipopt's checker uses one-sided differences: truncation h·f''/2 against rounding
+    // ~1e-16·Σ|F_i²|/h (J sums squared forces of up to 1e4 N²). No step makes both small, so
+    // this is a coarse check of the adapter's plumbing; the exact derivatives are checked by
+    // central differences in tests/unit/motion_nlp_test.cpp.
+    app->Options()->SetNumericValue("derivative_test_perturbation", 1e-7);
+    // Check at the given point, not at Ipopt's default random perturbation of it (radius 10
+    // within the bounds lands on wild poses where J is enormous and differences meaningless).
+    app->Options()->SetNumericValue("point_perturbation_radius", 0.0);
+    app->Options()->SetNumericValue("derivative_test_tol", 2e-2);
+    app->Options()->SetStringValue("output_file", options.derivative_test_file);
+    app->Options()->SetIntegerValue("file_print_level", 5);
+  }
   if (!nlp.has_hessian()) app->Options()->SetStringValue("hessian_approximation", "limited-memory");
   if (app->Initialize() != Ipopt::Solve_Succeeded) {
     report.ipopt_status = "initialisation failed";

@@ -18,6 +18,9 @@ struct SolverOptions {
   double tolerance = 1e-6;             ///< Ipopt's tol (scaled NLP error)
   double acceptable_tolerance = 1e-6;  ///< Ipopt's acceptable_tol
   bool verbose = false;                ///< Ipopt's own iteration log on stdout
+  /// Run Ipopt's first-order derivative checker at the starting point and write its report
+  /// (and the iteration log) to this file; empty: off.
+  std::string derivative_test_file;
 };
 
 struct ProgressInfo {

@@ -437,64 +437,78 @@ int MotionNlp::hessian_index(int row, int column) const {
   return static_cast<int>(hessian_row_start_[row] + (column - hessian_first_column_[row]));
 }
 
+template <int Rows>
+void MotionNlp::add_gauss_newton(const LocalJacobian<Rows>& jac, double weight,
+                                 double* values) const {
+  // weight·JᵀJ into the lower band: the control block is contiguous, times come after it.
+  const int first = jac.first_control_variable;
+  const int width = static_cast<int>(jac.control.cols());
+  const Eigen::MatrixXd block = weight * jac.control.transpose() * jac.control;
+  for (int a = 0; a < width; ++a)
+    Eigen::Map<Eigen::RowVectorXd>(values + hessian_index(first + a, first), a + 1) +=
+        block.row(a).head(a + 1);
+  for (int p = 0; p < jac.time_count; ++p) {
+    const int tv = jac.time_variable[p];
+    Eigen::Map<Eigen::RowVectorXd>(values + hessian_index(tv, first), width) +=
+        weight * jac.time.col(p).transpose() * jac.control;
+    for (int q = 0; q < jac.time_count; ++q)
+      if (jac.time_variable[q] <= tv)
+        values[hessian_index(tv, jac.time_variable[q])] +=
+            weight * jac.time.col(p).dot(jac.time.col(q));
+  }
+}
+
+LocalJacobian<3> MotionNlp::translation_residual_jacobian(int keyframe) const {
+  // r = B(t_i) − B̄(t_i): the target moves along the parabola with the keyframe's time.
+  LocalJacobian<3> jac = translation_jacobian_[keyframe];
+  const int tv = layout_.time_variable(keyframe);
+  if (tv < 0 || fixed_root_[keyframe]) return jac;
+  int slot = 0;
+  while (slot < jac.time_count && jac.time_variable[slot] != tv)
+    ++slot;
+  if (slot == jac.time_count) {
+    jac.time_variable[jac.time_count++] = tv;
+    jac.time.col(slot).setZero();
+  }
+  jac.time.col(slot) -= ballistic_com_velocity(takeoff_, keyframe_times_[keyframe]);
+  return jac;
+}
+
 void MotionNlp::hessian_values(const double* x, double objective_factor, const double* multipliers,
                                double* values) {
   load(x);
   std::fill(values, values + hessian_nonzeros_, 0.0);
-  if (options_.formulation != Formulation::kRelaxed) return;
-  compute_wrench_jacobians();
-  Eigen::MatrixXd block;
-  for (std::size_t s = 0; s < sample_times_.size(); ++s) {
-    const LocalJacobian<6>& jac = wrench_jacobian_[s];
-    const double weight = 2.0 * objective_factor * sample_weights_[s];
-    const int first = jac.first_control_variable;
-    const int width = static_cast<int>(jac.control.cols());
-    block.noalias() = weight * jac.control.transpose() * jac.control;
-    for (int a = 0; a < width; ++a) {
-      Eigen::Map<Eigen::RowVectorXd>(values + hessian_index(first + a, first), a + 1) +=
-          block.row(a).head(a + 1);
-    }
-    for (int p = 0; p < jac.time_count; ++p) {
-      const int tv = jac.time_variable[p];
-      Eigen::Map<Eigen::RowVectorXd>(values + hessian_index(tv, first), width) +=
-          weight * jac.time.col(p).transpose() * jac.control;
-      for (int q = 0; q < jac.time_count; ++q)
-        if (jac.time_variable[q] <= tv)
-          values[hessian_index(tv, jac.time_variable[q])] +=
-              weight * jac.time.col(p).dot(jac.time.col(q));
+  compute_keyframes();
+  if (options_.formulation == Formulation::kRelaxed) {
+    // Gauss-Newton of J = Σ w_s ‖F_s‖², damped (Levenberg-Marquardt, see MotionNlpOptions).
+    compute_wrench_jacobians();
+    for (std::size_t s = 0; s < sample_times_.size(); ++s)
+      add_gauss_newton(wrench_jacobian_[s], 2.0 * objective_factor * sample_weights_[s], values);
+    const double damping = objective_factor * options_.damping * force_objective(x);
+    for (int v = 0; v < layout_.size(); ++v)
+      values[hessian_index(v, v)] += damping;
+  } else {
+    // Gauss-Newton of the keyframe distance Σ‖B − B̄‖² + Σ‖Q − Q̄‖² (exact at zero distance).
+    // The force constraints' curvature is left out: it is not available.
+    for (int i = 0; i < layout_.keyframe_count; ++i) {
+      add_gauss_newton(translation_residual_jacobian(i), 2.0 * objective_factor, values);
+      for (int k = 0; k < layout_.segment_count; ++k)
+        add_gauss_newton(rotation_jacobian_[i * layout_.segment_count + k], 2.0 * objective_factor,
+                         values);
     }
   }
-  const double damping = objective_factor * options_.damping * force_objective(x);
   std::vector<double> penalty_curvature(layout_.size(), 0.0);
   deviation_penalty(x, nullptr, penalty_curvature.data());
   for (int v = 0; v < layout_.size(); ++v)
-    values[hessian_index(v, v)] += damping + objective_factor * penalty_curvature[v];
+    values[hessian_index(v, v)] += objective_factor * penalty_curvature[v];
 
   // Gauss-Newton curvature of the quaternion-distance constraints g = ‖r‖² (∇²g ≈ 2 JᵀJ),
   // counted only where the multiplier makes it positive semi-definite.
-  compute_keyframes();
-  const int first_rotation_row = translation_rows_;
   for (int i = 0; i < layout_.keyframe_count; ++i) {
     for (int k = 0; k < layout_.segment_count; ++k) {
-      const double lambda = multipliers[first_rotation_row + i * layout_.segment_count + k];
-      if (lambda <= 0) continue;
-      const LocalJacobian<4>& rj = rotation_jacobian_[i * layout_.segment_count + k];
-      const int row = first_rotation_row + i * layout_.segment_count + k;
-      std::vector<int> columns(jacobian_columns_.begin() + row_begin_[row],
-                               jacobian_columns_.begin() + row_begin_[row + 1]);
-      std::vector<Eigen::Vector4d> derivative(columns.size());
-      for (std::size_t a = 0; a < columns.size(); ++a)
-        for (int c = 0; c < 4; ++c) {
-          Eigen::Matrix<double, 1, 4> pick = Eigen::Matrix<double, 1, 4>::Zero();
-          pick[c] = 1.0;
-          derivative[a][c] = local_derivative<4>(rj, pick, columns[a]);
-        }
-      for (std::size_t a = 0; a < columns.size(); ++a)
-        for (std::size_t b = 0; b <= a; ++b) {
-          const int r = std::max(columns[a], columns[b]), c = std::min(columns[a], columns[b]);
-          if (c < hessian_first_column_[r]) continue;  // outside the band: cannot happen
-          values[hessian_index(r, c)] += 2.0 * lambda * derivative[a].dot(derivative[b]);
-        }
+      const int index = i * layout_.segment_count + k;
+      const double lambda = multipliers[translation_rows_ + index];
+      if (lambda > 0) add_gauss_newton(rotation_jacobian_[index], 2.0 * lambda, values);
     }
   }
 }

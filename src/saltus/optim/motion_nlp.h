@@ -14,8 +14,8 @@
 ///
 /// Strict (classic spacetime constraints): the same variables and keyframe constraints plus
 /// |F_i(t_s)| <= ε at every grid time; objective the keyframe distance
-/// Σ‖B(t_i) − B̄_i‖² + Σ‖Q_k(t_i) − Q̄_k‖². Its Hessian is left to Ipopt's quasi-Newton
-/// approximation (the constraint curvature is not available).
+/// Σ‖B(t_i) − B̄_i‖² + Σ‖Q_k(t_i) − Q̄_k‖². Its Hessian is the Gauss-Newton one of that
+/// objective; the force constraints' curvature is not available and left out.
 
 #include <memory>
 #include <vector>
@@ -83,7 +83,7 @@ class MotionNlp : public Nlp {
   void jacobian_structure(int* rows, int* columns) const override;
   void jacobian_values(const double* x, double* values) override;
 
-  bool has_hessian() const override { return options_.formulation == Formulation::kRelaxed; }
+  bool has_hessian() const override { return true; }
   int hessian_nonzeros() const override { return hessian_nonzeros_; }
   void hessian_structure(int* rows, int* columns) const override;
   void hessian_values(const double* x, double objective_factor, const double* multipliers,
@@ -99,6 +99,11 @@ class MotionNlp : public Nlp {
   void compute_keyframes();
   Eigen::Vector3d root_target(int keyframe, double time) const;
   int hessian_index(int row, int column) const;
+  /// Adds weight·JᵀJ of a local Jacobian to the Hessian band.
+  template <int Rows>
+  void add_gauss_newton(const LocalJacobian<Rows>& jac, double weight, double* values) const;
+  /// Jacobian of B(t_i) − B̄(t_i) (the target's motion along the parabola included).
+  LocalJacobian<3> translation_residual_jacobian(int keyframe) const;
   /// The proximity term at x; adds its gradient and Hessian diagonal when given.
   double deviation_penalty(const double* x, double* gradient, double* hessian_diagonal) const;
 
