@@ -32,7 +32,8 @@ GroundTruth make_ground_truth() {
   initial.root_orientation = joints.rotations[0].evaluate(0.0).q;
   const int count = 11;
   const double duration = source.flight_time();
-  for (int i = 0; i < count; ++i) g.true_times.push_back(duration * i / (count - 1));
+  for (int i = 0; i < count; ++i)
+    g.true_times.push_back(duration * i / (count - 1));
   const auto states = simulate_free_flight(
       g.model,
       [&joints](double t, BodyState<double>& s) {
@@ -42,12 +43,14 @@ GroundTruth make_ground_truth() {
         }
       },
       initial, g.true_times);
-  const double disturbance[count] = {0, 0.06, -0.05, 0.04, -0.06, 0.05, -0.04, 0.06, -0.05, 0.04, 0};
+  const double disturbance[count] = {0,     0.06, -0.05, 0.04, -0.06, 0.05,
+                                     -0.04, 0.06, -0.05, 0.04, 0};
   g.motion = test::base_motion("ground truth");
   for (int i = 0; i < count; ++i) {
     Keyframe k;
     k.time = g.true_times[i] + disturbance[i];
-    for (const auto& j : states[i].joints) k.rotations.push_back(j.q);
+    for (const auto& j : states[i].joints)
+      k.rotations.push_back(j.q);
     g.motion.keyframes.push_back(k);
   }
   return g;
@@ -55,7 +58,8 @@ GroundTruth make_ground_truth() {
 
 double time_error(const std::vector<double>& times, const std::vector<double>& truth) {
   double sum = 0;
-  for (std::size_t i = 0; i < times.size(); ++i) sum += std::abs(times[i] - truth[i]);
+  for (std::size_t i = 0; i < times.size(); ++i)
+    sum += std::abs(times[i] - truth[i]);
   return sum;
 }
 
@@ -70,11 +74,12 @@ TEST(GroundTruth, DisturbedTimesOptimiseBackToFreeFlight) {
   const OptimizationResult r = optimize_motion(g.motion, g.model, options);
   const double before = r.before.metrics.avg_root_force;
   const double after = r.after.metrics.avg_root_force;
-  std::printf("ground truth: %s after %d iterations, %.2f s; avg root force %.3f -> %.3f N; "
-              "time error %.3f -> %.3f s\n",
-              r.solve.status.c_str(), r.solve.iterations, r.solve.seconds, before, after,
-              time_error(r.before.keyframe_times, g.true_times),
-              time_error(r.after.keyframe_times, g.true_times));
+  std::printf(
+      "ground truth: %s after %d iterations, %.2f s; avg root force %.3f -> %.3f N; "
+      "time error %.3f -> %.3f s\n",
+      r.solve.status.c_str(), r.solve.iterations, r.solve.seconds, before, after,
+      time_error(r.before.keyframe_times, g.true_times),
+      time_error(r.after.keyframe_times, g.true_times));
   EXPECT_GT(before, 5.0);  // the disturbed timing really breaks the physics
   EXPECT_LT(after, before / 100);
   EXPECT_LT(after, 1.0);
