@@ -40,7 +40,7 @@ Eigen::Vector4d wxyz(const Eigen::Quaterniond& q) {
 
 MotionNlp::MotionNlp(const Motion& motion, const BodyModel& model,
                      const Trajectory<double>& initial, const MotionNlpOptions& options)
-    : model_(model), options_(options), takeoff_(motion.takeoff), tolerances_(motion.tolerances) {
+    : options_(options), takeoff_(motion.takeoff), tolerances_(motion.tolerances) {
   const int n_key = static_cast<int>(motion.keyframes.size());
   if (n_key < 2) throw std::invalid_argument("a motion needs at least two keyframes");
   if (options.samples < 2) throw std::invalid_argument("samples must be at least 2");
@@ -182,8 +182,8 @@ MotionNlp::MotionNlp(const Motion& motion, const BodyModel& model,
 
 MotionNlp::~MotionNlp() = default;
 
-double MotionNlp::deviation_penalty(const double* x, double* gradient,
-                                    double* hessian_diagonal) const {
+double MotionNlp::proximity_term(const double* x, double* gradient,
+                                 double* hessian_diagonal) const {
   // w Σ ‖δ‖² over the joints' tangent coordinates: smooth and convex, it makes the directions
   // the root force hardly sees (light limbs) well posed without bounds.
   const double w = options_.regularization;
@@ -293,7 +293,7 @@ double MotionNlp::force_objective(const double* x) {
 
 double MotionNlp::objective(const double* x) {
   if (options_.formulation == Formulation::kRelaxed)
-    return force_objective(x) + deviation_penalty(x, nullptr, nullptr);
+    return force_objective(x) + proximity_term(x, nullptr, nullptr);
   load(x);
   compute_keyframes();
   double f = 0.0;
@@ -304,7 +304,7 @@ double MotionNlp::objective(const double* x) {
       f += (q - wxyz(aligned(keyframe_rotation_[i][k], q))).squaredNorm();
     }
   }
-  return f + deviation_penalty(x, nullptr, nullptr);
+  return f + proximity_term(x, nullptr, nullptr);
 }
 
 void MotionNlp::gradient(const double* x, double* gradient) {
@@ -320,7 +320,7 @@ void MotionNlp::gradient(const double* x, double* gradient) {
       for (int p = 0; p < jac.time_count; ++p)
         gradient[jac.time_variable[p]] += w * jac.time.col(p);
     }
-    deviation_penalty(x, gradient, nullptr);
+    proximity_term(x, gradient, nullptr);
     return;
   }
   compute_keyframes();
@@ -345,7 +345,7 @@ void MotionNlp::gradient(const double* x, double* gradient) {
         gradient[rj.time_variable[p]] += wq * rj.time.col(p);
     }
   }
-  deviation_penalty(x, gradient, nullptr);
+  proximity_term(x, gradient, nullptr);
 }
 
 void MotionNlp::constraints(const double* x, double* g) {
@@ -498,7 +498,7 @@ void MotionNlp::hessian_values(const double* x, double objective_factor, const d
     }
   }
   std::vector<double> penalty_curvature(layout_.size(), 0.0);
-  deviation_penalty(x, nullptr, penalty_curvature.data());
+  proximity_term(x, nullptr, penalty_curvature.data());
   for (int v = 0; v < layout_.size(); ++v)
     values[hessian_index(v, v)] += objective_factor * penalty_curvature[v];
 

@@ -105,9 +105,8 @@ class MotionNlp : public Nlp {
   /// Jacobian of B(t_i) − B̄(t_i) (the target's motion along the parabola included).
   LocalJacobian<3> translation_residual_jacobian(int keyframe) const;
   /// The proximity term at x; adds its gradient and Hessian diagonal when given.
-  double deviation_penalty(const double* x, double* gradient, double* hessian_diagonal) const;
+  double proximity_term(const double* x, double* gradient, double* hessian_diagonal) const;
 
-  const BodyModel& model_;
   MotionNlpOptions options_;
   TrajectoryLayout layout_;
   TrajectoryReference reference_;
