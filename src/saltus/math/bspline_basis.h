@@ -49,6 +49,7 @@ template <typename Scalar>
 int find_span(const std::vector<Scalar>& knots, double t);
 
 /// Basis on the span containing t (Cox-de Boor with derivatives; exact for non-uniform knots).
+/// t outside the knot range is evaluated at the nearest end knot (value, rates of that end).
 template <typename Scalar>
 SpanBasis<Scalar> cubic_basis(const std::vector<Scalar>& knots, const Scalar& t);
 

@@ -80,7 +80,13 @@ int find_span(const std::vector<Scalar>& knots, double t) {
 
 template <typename Scalar>
 SpanBasis<Scalar> cubic_basis(const std::vector<Scalar>& knots, const Scalar& t) {
-  return cubic_basis_on_span(knots, find_span(knots, value_of(t)), t);
+  // Outside [knots[3], knots[n]] evaluate at the nearest end knot itself (not a copy of its
+  // value), so derivatives with respect to the knots stay exact there too.
+  const int n = control_count(knots);
+  const Scalar* clamped = &t;
+  if (value_of(t) < value_of(knots[3])) clamped = &knots[3];
+  if (value_of(t) > value_of(knots[n])) clamped = &knots[n];
+  return cubic_basis_on_span(knots, find_span(knots, value_of(*clamped)), *clamped);
 }
 
 template <typename Scalar>

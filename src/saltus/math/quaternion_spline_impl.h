@@ -74,14 +74,9 @@ QuaternionSpline<Scalar>::QuaternionSpline(std::vector<Scalar> knots,
 
 template <typename Scalar>
 QuaternionSample<Scalar> QuaternionSpline<Scalar>::evaluate(const Scalar& t) const {
-  const int n = control_count(knots_);
-  // Outside [knots[3], knots[n]] the curve is evaluated at the nearest end (value, ω and α of
-  // that end); the clamped time is the end knot itself, so knot derivatives stay exact.
-  const Scalar* tc = &t;
-  if (value_of(t) < value_of(knots_[3])) tc = &knots_[3];
-  if (value_of(t) > value_of(knots_[n])) tc = &knots_[n];
-  const int s = find_span(knots_, value_of(*tc));
-  const SpanBasis<Scalar> basis = cubic_basis_on_span(knots_, s, *tc);
+  // t outside the knot range: the nearest end's value, ω and α (see cubic_basis).
+  const SpanBasis<Scalar> basis = cubic_basis(knots_, t);
+  const int s = basis.span;
   // Same as evaluate_quaternion_span(control_[s−3..s], basis), with the logs precomputed.
   const Vec3<Scalar> w[3] = {relative_log_[s - 2], relative_log_[s - 1], relative_log_[s]};
   return detail::evaluate_span_from_logs(control_[s - 3], w, basis);

@@ -37,14 +37,9 @@ VectorSpline<Scalar>::VectorSpline(std::vector<Scalar> knots, std::vector<Vec3<S
 
 template <typename Scalar>
 VectorSample<Scalar> VectorSpline<Scalar>::evaluate(const Scalar& t) const {
-  const int n = control_count(knots_);
-  // Same convention as QuaternionSpline::evaluate: t outside the knot range is clamped to the
-  // nearest end knot (t = T uses the last span).
-  const Scalar* tc = &t;
-  if (value_of(t) < value_of(knots_[3])) tc = &knots_[3];
-  if (value_of(t) > value_of(knots_[n])) tc = &knots_[n];
-  const int s = find_span(knots_, value_of(*tc));
-  const SpanBasis<Scalar> basis = cubic_basis_on_span(knots_, s, *tc);
+  // t outside the knot range: the nearest end's value and rates (see cubic_basis).
+  const SpanBasis<Scalar> basis = cubic_basis(knots_, t);
+  const int s = basis.span;
   return evaluate_vector_span(control_[s - 3], control_[s - 2], control_[s - 1], control_[s],
                               basis);
 }
