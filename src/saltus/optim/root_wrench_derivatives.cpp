@@ -63,6 +63,8 @@ struct RootWrenchDerivatives::Workspace {
   std::vector<Eigen::Matrix<double, kJointStateSize, kSplineDirections>> joint_state_jacobian;
   Eigen::Matrix<double, kRootStateSize, kSplineDirections> root_state_jacobian;
   Eigen::Matrix<double, 6, Eigen::Dynamic> wrench_state_jacobian;
+  int basis_keyframe = -1;  ///< keyframe whose basis is in keyframe_basis, −1 for none
+  SpanBasis<SplineAD> keyframe_basis;
 };
 
 RootWrenchDerivatives::RootWrenchDerivatives(const BodyModel& model, const TrajectoryLayout& layout,
@@ -78,6 +80,7 @@ RootWrenchDerivatives::RootWrenchDerivatives(const BodyModel& model, const Traje
 RootWrenchDerivatives::~RootWrenchDerivatives() = default;
 
 void RootWrenchDerivatives::set_variables(const double* x) {
+  work_->basis_keyframe = -1;
   keyframe_times_ = keyframe_times_from(layout_, reference_, x);
   knots_ = clamped_cubic_knots(refine_breakpoints(keyframe_times_, layout_.knots_per_interval));
   for (int j = 0; j < layout_.control_count(); ++j) {
@@ -194,6 +197,7 @@ void RootWrenchDerivatives::wrench_jacobian(double t, LocalJacobian<6>& out) {
   const int n = layout_.segment_count;
   const int span = find_span(knots_, t);
   const int c0 = span - 3;
+  w.basis_keyframe = -1;  // the time slots below are the sample's, not a keyframe's
   seed_knots(layout_, knots_, span, w.knots_ad, w.time_count, w.time_variable);
   const SpanBasis<SplineAD> basis = cubic_basis_on_span(w.knots_ad, span, SplineAD(t));
 
@@ -282,14 +286,21 @@ SplineAD keyframe_time(const std::vector<SplineAD>& knots_ad, const TrajectoryLa
 }
 }  // namespace
 
+void RootWrenchDerivatives::prepare_keyframe(int keyframe) {
+  Workspace& w = *work_;
+  if (w.basis_keyframe == keyframe) return;
+  const int span = layout_.keyframe_span(keyframe);
+  seed_knots(layout_, knots_, span, w.knots_ad, w.time_count, w.time_variable);
+  w.keyframe_basis =
+      cubic_basis_on_span(w.knots_ad, span, keyframe_time(w.knots_ad, layout_, keyframe));
+  w.basis_keyframe = keyframe;
+}
+
 void RootWrenchDerivatives::keyframe_translation(int keyframe, LocalJacobian<3>& out) {
   Workspace& w = *work_;
+  prepare_keyframe(keyframe);
   const int span = layout_.keyframe_span(keyframe);
-  const int c0 = span - 3;
-  seed_knots(layout_, knots_, span, w.knots_ad, w.time_count, w.time_variable);
-  const SpanBasis<SplineAD> basis =
-      cubic_basis_on_span(w.knots_ad, span, keyframe_time(w.knots_ad, layout_, keyframe));
-  const VectorSample<SplineAD> b = seeded_root_span(root_control_, c0, basis);
+  const VectorSample<SplineAD> b = seeded_root_span(root_control_, span - 3, w.keyframe_basis);
   Eigen::Matrix<double, 3, kSplineDirections> jac;
   for (int i = 0; i < 3; ++i) {
     out.value[i] = b.position[i].value();
@@ -301,13 +312,10 @@ void RootWrenchDerivatives::keyframe_translation(int keyframe, LocalJacobian<3>&
 
 void RootWrenchDerivatives::keyframe_rotation(int keyframe, int segment, LocalJacobian<4>& out) {
   Workspace& w = *work_;
+  prepare_keyframe(keyframe);
   const int span = layout_.keyframe_span(keyframe);
-  const int c0 = span - 3;
-  seed_knots(layout_, knots_, span, w.knots_ad, w.time_count, w.time_variable);
-  const SpanBasis<SplineAD> basis =
-      cubic_basis_on_span(w.knots_ad, span, keyframe_time(w.knots_ad, layout_, keyframe));
-  const QuaternionSample<SplineAD> s =
-      seeded_joint_span(joint_delta_[segment], reference_.joint_control[segment], c0, basis);
+  const QuaternionSample<SplineAD> s = seeded_joint_span(
+      joint_delta_[segment], reference_.joint_control[segment], span - 3, w.keyframe_basis);
   Eigen::Matrix<double, 4, kSplineDirections> jac;
   const SplineAD* coefficient[4] = {&s.q.w(), &s.q.x(), &s.q.y(), &s.q.z()};
   for (int i = 0; i < 4; ++i) {

@@ -64,6 +64,9 @@ class RootWrenchDerivatives {
 
  private:
   struct Workspace;
+  /// Seeds the knots and builds the AD basis at keyframe i's time into the workspace, once per
+  /// keyframe and point (every segment's rotation at that keyframe shares it).
+  void prepare_keyframe(int keyframe);
   const BodyModel& model_;
   TrajectoryLayout layout_;
   TrajectoryReference reference_;
