@@ -125,6 +125,7 @@ struct OptimizeArgs {
   bool no_timing = false;
   int max_iterations = 100;
   double tolerance = 1e-8;
+  double objective_change_tolerance = 1e-3;
   double max_time_shift = 0.25;
   double regularization = 1.0;
 };
@@ -145,6 +146,11 @@ void add_optimize(CLI::App* cmd, OptimizeArgs& args) {
       ->capture_default_str();
   cmd->add_option("--tol", args.tolerance, "Ipopt convergence tolerance")
       ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->add_option("--objective-change-tol", args.objective_change_tolerance,
+                  "also stop (solved, Ipopt 'acceptable') once the objective changes by less "
+                  "than this fraction for 3 iterations with the keyframes met; 0 = off")
+      ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   cmd->add_option("--max-time-shift", args.max_time_shift,
                   "how far (s) a keyframe time may move from the given one")
@@ -172,7 +178,7 @@ int run_optimize(const OptimizeArgs& args) {
   options.nlp.regularization = args.regularization;
   options.solver.max_iterations = args.max_iterations;
   options.solver.tolerance = args.tolerance;
-  options.solver.acceptable_tolerance = std::max(args.tolerance, 1e-6);
+  options.solver.objective_change_tolerance = args.objective_change_tolerance;
 
   const bool quiet = args.common.quiet;
   const saltus::ProgressCallback progress = [quiet](const saltus::ProgressInfo& p) {

@@ -15,9 +15,18 @@ namespace saltus {
 
 struct SolverOptions {
   int max_iterations = 100;
-  double tolerance = 1e-6;             ///< Ipopt's tol (scaled NLP error)
-  double acceptable_tolerance = 1e-6;  ///< Ipopt's acceptable_tol
-  bool verbose = false;                ///< Ipopt's own iteration log on stdout
+  double tolerance = 1e-6;  ///< Ipopt's tol: the NLP error for an "optimal" exit
+  /// "Acceptable" exit (reported as solved): for `acceptable_iterations` consecutive iterations the
+  /// objective changes by less than this fraction of max(1, |f|) while the constraints are
+  /// violated by at most `acceptable_constraint_violation`. A sum of squared residuals that
+  /// stays non-zero at the optimum converges linearly under Gauss–Newton: the last digits of J
+  /// cost most of the iterations and move the average root force by < 0.1 %. 0 disables.
+  double objective_change_tolerance = 1e-3;
+  int acceptable_iterations = 3;
+  /// Absolute; the NLP keeps its keyframe bounds this much inside the user's tolerances, so an
+  /// acceptable point still meets them exactly (see MotionNlp::bounds).
+  double acceptable_constraint_violation = 1e-5;
+  bool verbose = false;  ///< Ipopt's own iteration log on stdout
   /// Run Ipopt's first-order derivative checker at the starting point and write its report
   /// (and the iteration log) to this file; empty: off.
   std::string derivative_test_file;

@@ -218,14 +218,22 @@ void MotionNlp::bounds(double* x_lower, double* x_upper, double* g_lower, double
     x_upper[v] = std::min(t0 + options_.max_time_shift,
                           duration_ - time_gap_ * (layout_.keyframe_count - 1 - i));
   }
+  // Keyframe bounds sit kKeyframeBoundMargin inside the user's tolerances: the solver may stop
+  // at a point that violates its bounds by that much (SolverOptions::
+  // acceptable_constraint_violation), and the written motion must still meet ε1 and ε2.
+  const double translation =
+      std::max(0.5 * tolerances_.translation_m, tolerances_.translation_m - kKeyframeBoundMargin);
+  const double quaternion_squared =
+      std::max(0.25 * tolerances_.quaternion * tolerances_.quaternion,
+               tolerances_.quaternion * tolerances_.quaternion - kKeyframeBoundMargin);
   int row = 0;
   for (int r = 0; r < translation_rows_; ++r, ++row) {
-    g_lower[row] = -tolerances_.translation_m;
-    g_upper[row] = tolerances_.translation_m;
+    g_lower[row] = -translation;
+    g_upper[row] = translation;
   }
   for (int r = 0; r < rotation_rows_; ++r, ++row) {
     g_lower[row] = -kUnbounded;
-    g_upper[row] = tolerances_.quaternion * tolerances_.quaternion;
+    g_upper[row] = quaternion_squared;
   }
   for (int r = 0; r < order_rows_; ++r, ++row) {
     g_lower[row] = time_gap_;

@@ -30,6 +30,10 @@ namespace saltus {
 
 enum class Formulation { kRelaxed, kStrict };
 
+/// How far inside the user's keyframe tolerances the NLP's bounds lie (m for translation, and
+/// squared quaternion distance): 2× the solver's acceptable constraint violation.
+inline constexpr double kKeyframeBoundMargin = 2e-5;
+
 struct MotionNlpOptions {
   Formulation formulation = Formulation::kRelaxed;
   double epsilon = 100.0;        ///< strict: bound on each |F_i(t_s)|, N or N·m
