@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "saltus/dynamics/root_wrench_state_jacobian.h"
 #include "saltus/math/quaternion_spline.h"
 #include "saltus/math/vector_spline.h"
 
@@ -16,13 +17,8 @@ constexpr int kSplineDirections = kControlDirections + kMaxLocalTimes;
 using SplineDerivative = Eigen::Matrix<double, kSplineDirections, 1>;
 using SplineAD = Eigen::AutoDiffScalar<SplineDerivative>;
 
-/// Dynamics stage chunk: directions per pass through inverse dynamics.
-constexpr int kStateChunk = 32;
-using StateDerivative = Eigen::Matrix<double, kStateChunk, 1>;
-using StateAD = Eigen::AutoDiffScalar<StateDerivative>;
-
 /// Per joint: η (rotation tangent, q = q₀·exp(η)), ω, α. Root translation: ṗ, p̈.
-constexpr int kJointStateSize = 9;
+constexpr int kJointStateSize = kJointStateTangentSize;
 constexpr int kRootStateSize = 6;
 
 SplineAD spline_variable(double value, int direction) {
@@ -31,16 +27,17 @@ SplineAD spline_variable(double value, int direction) {
   return a;
 }
 
-StateAD state_variable(double value, int direction, int chunk_start) {
-  StateAD a(value);
-  const int local = direction - chunk_start;
-  if (local >= 0 && local < kStateChunk) a.derivatives()[local] = 1.0;
-  return a;
-}
-
 Eigen::Quaterniond quaternion_value(const Quat<SplineAD>& q) {
   return Eigen::Quaterniond(q.w().value(), q.x().value(), q.y().value(), q.z().value());
 }
+
+/// A joint curve's span with its 4 active control tangents as AD directions 0..11, in the form
+/// detail::evaluate_span_from_logs consumes: the first control and the relative logs
+/// w_j = log(c_{j−1}⁻¹ c_j). They do not depend on t, so every sample on the span shares them.
+struct JointSpanLogs {
+  Quat<SplineAD> first;
+  Vec3<SplineAD> logs[3];
+};
 
 }  // namespace
 
@@ -48,22 +45,23 @@ struct RootWrenchDerivatives::Workspace {
   explicit Workspace(const BodyModel& model)
       : data(model),
         state(model.size()),
-        data_ad(model),
-        state_ad(model.size()),
         joint_state_jacobian(model.size()),
-        wrench_state_jacobian(6, kJointStateSize * model.size() + kRootStateSize) {}
+        wrench_state(model),
+        span_logs(model.size()) {}
 
   DynamicsData<double> data;
   BodyState<double> state;
-  DynamicsData<StateAD> data_ad;
-  BodyState<StateAD> state_ad;
   std::vector<SplineAD> knots_ad;
   int time_count = 0;
   std::array<int, kMaxLocalTimes> time_variable{};
   std::vector<Eigen::Matrix<double, kJointStateSize, kSplineDirections>> joint_state_jacobian;
   Eigen::Matrix<double, kRootStateSize, kSplineDirections> root_state_jacobian;
-  Eigen::Matrix<double, 6, Eigen::Dynamic> wrench_state_jacobian;
+  RootWrenchStateJacobian wrench_state;
   int basis_keyframe = -1;  ///< keyframe whose basis is in keyframe_basis, −1 for none
+  /// Span whose joint logs are in span_logs (−1 for none). Samples come in time order, so
+  /// caching the last span computes each span's logs once per point.
+  int logs_span = -1;
+  std::vector<JointSpanLogs> span_logs;  ///< [segment]
   SpanBasis<SplineAD> keyframe_basis;
 };
 
@@ -81,6 +79,7 @@ RootWrenchDerivatives::~RootWrenchDerivatives() = default;
 
 void RootWrenchDerivatives::set_variables(const double* x) {
   work_->basis_keyframe = -1;
+  work_->logs_span = -1;
   keyframe_times_ = keyframe_times_from(layout_, reference_, x);
   knots_ = clamped_cubic_knots(refine_breakpoints(keyframe_times_, layout_.knots_per_interval));
   for (int j = 0; j < layout_.control_count(); ++j) {
@@ -125,19 +124,40 @@ void seed_knots(const TrajectoryLayout& layout, const std::vector<double>& knots
   }
 }
 
-/// Curve k's span evaluated with its 4 active control tangents as AD directions 0..11 (the
-/// basis carries the time directions).
-QuaternionSample<SplineAD> seeded_joint_span(const std::vector<Eigen::Vector3d>& delta,
-                                             const std::vector<Eigen::Quaterniond>& reference,
-                                             int c0, const SpanBasis<SplineAD>& basis) {
-  Quat<SplineAD> c[4];
+/// Curve k's 4 active control points c = c̄·exp(δ) with their tangents δ as AD directions
+/// 0..11.
+void seeded_joint_controls(const std::vector<Eigen::Vector3d>& delta,
+                           const std::vector<Eigen::Quaterniond>& reference, int c0,
+                           Quat<SplineAD> (&c)[4]) {
   for (int i = 0; i < 4; ++i) {
     Vec3<SplineAD> d;
     for (int j = 0; j < 3; ++j)
       d[j] = spline_variable(delta[c0 + i][j], 3 * i + j);
     c[i] = reference[c0 + i].cast<SplineAD>() * quat_exp(d);
   }
+}
+
+/// Curve k's span evaluated with its 4 active control tangents as AD directions 0..11 (the
+/// basis carries the time directions).
+QuaternionSample<SplineAD> seeded_joint_span(const std::vector<Eigen::Vector3d>& delta,
+                                             const std::vector<Eigen::Quaterniond>& reference,
+                                             int c0, const SpanBasis<SplineAD>& basis) {
+  Quat<SplineAD> c[4];
+  seeded_joint_controls(delta, reference, c0, c);
   return evaluate_quaternion_span(c[0], c[1], c[2], c[3], basis);
+}
+
+/// The t-independent part of seeded_joint_span, with the same operations as
+/// evaluate_quaternion_span; detail::evaluate_span_from_logs then does the rest, so the results
+/// agree to the last bit while the logs' AD (4 exps, 3 logs per curve) runs once per span.
+void seeded_joint_logs(const std::vector<Eigen::Vector3d>& delta,
+                       const std::vector<Eigen::Quaterniond>& reference, int c0,
+                       JointSpanLogs& out) {
+  Quat<SplineAD> c[4];
+  seeded_joint_controls(delta, reference, c0, c);
+  out.first = c[0];
+  for (int j = 0; j < 3; ++j)
+    out.logs[j] = quat_log(Quat<SplineAD>(c[j].conjugate() * c[j + 1]));
 }
 
 /// The root translation's span with its 4 active control points as AD directions 0..11.
@@ -202,77 +222,59 @@ void RootWrenchDerivatives::wrench_jacobian(double t, LocalJacobian<6>& out) {
   const SpanBasis<SplineAD> basis = cubic_basis_on_span(w.knots_ad, span, SplineAD(t));
 
   // Stage 1: each curve's state and its derivatives with respect to controls and times.
-  std::vector<Eigen::Quaterniond> q(n);
-  std::vector<Eigen::Vector3d> omega(n), alpha(n);
+  if (w.logs_span != span) {
+    for (int k = 0; k < n; ++k)
+      seeded_joint_logs(joint_delta_[k], reference_.joint_control[k], c0, w.span_logs[k]);
+    w.logs_span = span;
+  }
+  BodyState<double>& state = w.state;
   for (int k = 0; k < n; ++k) {
+    const JointSpanLogs& logs = w.span_logs[k];
     const QuaternionSample<SplineAD> s =
-        seeded_joint_span(joint_delta_[k], reference_.joint_control[k], c0, basis);
-    q[k] = quaternion_value(s.q);
+        detail::evaluate_span_from_logs(logs.first, logs.logs, basis);
+    const Eigen::Quaterniond q = quaternion_value(s.q);
     auto& jac = w.joint_state_jacobian[k];
     for (int dir = 0; dir < kSplineDirections; ++dir) {
       const Eigen::Quaterniond dq(s.q.w().derivatives()[dir], s.q.x().derivatives()[dir],
                                   s.q.y().derivatives()[dir], s.q.z().derivatives()[dir]);
       // q(ε) = q·exp(η(ε)) ⇒ dη = vec(q⁻¹ dq) (the real part vanishes for unit q).
-      jac.block<3, 1>(0, dir) = (q[k].conjugate() * dq).vec();
+      jac.block<3, 1>(0, dir) = (q.conjugate() * dq).vec();
     }
+    JointState<double>& joint = state.joints[k];
+    joint.q = q;
     for (int i = 0; i < 3; ++i) {
-      omega[k][i] = s.omega[i].value();
-      alpha[k][i] = s.alpha[i].value();
+      joint.omega[i] = s.omega[i].value();
+      joint.alpha[i] = s.alpha[i].value();
       jac.row(3 + i) = s.omega[i].derivatives().transpose();
       jac.row(6 + i) = s.alpha[i].derivatives().transpose();
     }
   }
   const VectorSample<SplineAD> b = seeded_root_span(root_control_, c0, basis);
-  Eigen::Vector3d position, velocity, acceleration;
   for (int i = 0; i < 3; ++i) {
-    position[i] = b.position[i].value();
-    velocity[i] = b.velocity[i].value();
-    acceleration[i] = b.acceleration[i].value();
+    state.root_position[i] = b.position[i].value();
+    state.root_velocity[i] = b.velocity[i].value();
+    state.root_acceleration[i] = b.acceleration[i].value();
     w.root_state_jacobian.row(i) = b.velocity[i].derivatives().transpose();
     w.root_state_jacobian.row(3 + i) = b.acceleration[i].derivatives().transpose();
   }
 
-  // Stage 2: the root wrench differentiated with respect to every curve's state, in chunks.
-  const int state_size = kJointStateSize * n + kRootStateSize;
-  const int root_offset = kJointStateSize * n;
-  for (int start = 0; start < state_size; start += kStateChunk) {
-    BodyState<StateAD>& s = w.state_ad;
-    for (int k = 0; k < n; ++k) {
-      Vec3<StateAD> eta, om, al;
-      for (int i = 0; i < 3; ++i) {
-        eta[i] = state_variable(0.0, kJointStateSize * k + i, start);
-        om[i] = state_variable(omega[k][i], kJointStateSize * k + 3 + i, start);
-        al[i] = state_variable(alpha[k][i], kJointStateSize * k + 6 + i, start);
-      }
-      s.joints[k].q = q[k].cast<StateAD>() * quat_exp(eta);
-      s.joints[k].omega = om;
-      s.joints[k].alpha = al;
-    }
-    for (int i = 0; i < 3; ++i) {
-      s.root_position[i] = StateAD(position[i]);
-      s.root_velocity[i] = state_variable(velocity[i], root_offset + i, start);
-      s.root_acceleration[i] = state_variable(acceleration[i], root_offset + 3 + i, start);
-    }
-    inverse_dynamics(model_, w.data_ad, s);
-    const Vec6<StateAD> f = root_wrench_force_first(w.data_ad);
-    const int width = std::min(kStateChunk, state_size - start);
-    for (int i = 0; i < 6; ++i) {
-      out.value[i] = f[i].value();
-      w.wrench_state_jacobian.block(i, start, 1, width) =
-          f[i].derivatives().head(width).transpose();
-    }
-  }
+  // Stage 2: the root wrench and its derivatives with respect to every curve's state, in closed
+  // form from one double inverse dynamics pass.
+  inverse_dynamics(model_, w.data, state);
+  out.value = root_wrench_force_first(w.data);
+  root_wrench_state_jacobian(model_, w.data, state, w.wrench_state);
 
-  // Chain rule.
+  // Chain rule. lazyProduct: these fixed-size products are past Eigen's small-product threshold
+  // and would otherwise go through the blocked GEMM kernel, whose packing costs more than the
+  // arithmetic here.
   reset(out, layout_, span, w.time_count, w.time_variable);
   const int block = layout_.curve_block();
   const Eigen::Matrix<double, 6, kSplineDirections> root_part =
-      w.wrench_state_jacobian.block<6, kRootStateSize>(0, root_offset) * w.root_state_jacobian;
+      w.wrench_state.root_translation.lazyProduct(w.root_state_jacobian);
   scatter<6>(root_part, 0, block, w.time_count, out);
   for (int k = 0; k < n; ++k) {
     const Eigen::Matrix<double, 6, kSplineDirections> joint_part =
-        w.wrench_state_jacobian.block<6, kJointStateSize>(0, kJointStateSize * k) *
-        w.joint_state_jacobian[k];
+        w.wrench_state.joint[k].lazyProduct(w.joint_state_jacobian[k]);
     scatter<6>(joint_part, k + 1, block, w.time_count, out);
   }
 }

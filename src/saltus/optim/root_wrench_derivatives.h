@@ -1,16 +1,18 @@
 #pragma once
 /// @file
 /// The root wrench F1..F6 at a time sample and its exact derivatives with respect to the
-/// optimiser's variables, by forward-mode automatic differentiation in two stages:
+/// optimiser's variables, in two stages:
 ///
 ///  1. spline stage — each curve's state at t (rotation tangent η, ω, α for a joint; ṗ, p̈ for the
-///     root translation) differentiated with respect to the curve's 4 active control points
-///     (12 directions) and the keyframe times that move the span's knots (<= 8 directions);
+///     root translation) differentiated by forward-mode AD with respect to the curve's 4 active
+///     control points (12 directions) and the keyframe times that move the span's knots
+///     (<= 8 directions);
 ///  2. dynamics stage — F differentiated with respect to every joint's state tangent (9 per
-///     segment) and the root's ṗ, p̈, in chunks of 32 directions through the templated
-///     inverse dynamics.
+///     segment) and the root's ṗ, p̈ in closed form, from one double inverse dynamics pass
+///     (dynamics/root_wrench_state_jacobian.h). This replaced AD through the whole inverse
+///     dynamics (9 directions per segment through every segment), which took most of the time.
 ///
-/// The chain rule joins them. This keeps both AD passes small (the spline stage never sees the
+/// The chain rule joins them. This keeps the AD pass small (the spline stage never sees the
 /// dynamics, the dynamics stage never sees the controls) and the result exactly sparse: a sample
 /// touches one contiguous block of control variables (4 controls × all curves) and a few times.
 
