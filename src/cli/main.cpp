@@ -25,7 +25,7 @@ struct CommonArgs {
   std::string motion_path;
   std::string out_dir;
   std::string model_override;
-  int samples = 201;
+  int samples = saltus::kDefaultSamples;
   int knots_per_interval = 1;
   bool quiet = false;
 };

@@ -30,6 +30,11 @@ struct SampleRecord {
   std::vector<Vector6d> joint_wrench;       ///< per segment, force first, child frame
 };
 
+/// Default time grid of every verb: 101 samples, 20.4 ms apart over the paper's 2.04 s flight,
+/// 8 or more per knot span at K = 1. On M1 the optimised J differs from a 201-sample run by
+/// 0.04 %; with many keyframes and --knots-per-interval 3, ask for more.
+inline constexpr int kDefaultSamples = 101;
+
 /// Uniform grid of `count` >= 2 times from 0 to duration, both ends included.
 std::vector<double> uniform_times(double duration, int count);
 

@@ -14,7 +14,7 @@
 namespace saltus {
 
 struct EvaluateOptions {
-  int samples = 201;  ///< time samples on [0, T], both ends included
+  int samples = kDefaultSamples;  ///< time samples on [0, T], both ends included
   InterpolationOptions interpolation;
 };
 

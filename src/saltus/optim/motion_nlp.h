@@ -20,6 +20,7 @@
 #include <memory>
 #include <vector>
 
+#include "saltus/analysis/evaluation.h"
 #include "saltus/body/body_model.h"
 #include "saltus/motion/motion.h"
 #include "saltus/optim/nlp.h"
@@ -39,7 +40,7 @@ struct MotionNlpOptions {
   double epsilon = 100.0;        ///< strict: bound on each |F_i(t_s)|, N or N·m
   bool optimize_timing = true;   ///< interior keyframe times are variables
   int knots_per_interval = 1;    ///< spline refinement K (1 = the paper's resolution)
-  int samples = 201;             ///< quadrature grid on [0, T], ends included
+  int samples = kDefaultSamples;  ///< quadrature grid on [0, T], ends included
   double min_time_gap = 0.05;    ///< s, eq. (4)'s gap (capped at half the shortest interval)
   double max_time_shift = 0.25;  ///< s, how far a keyframe time may move from the given one
   /// Levenberg-Marquardt damping of the Gauss-Newton Hessian: c·J(x)·I is added (Yamashita &
