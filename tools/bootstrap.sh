@@ -14,7 +14,8 @@ cd "$root"
 # Debian packages the build and the tests need (see README "Dependencies").
 packages=(build-essential cmake pkg-config clang-format
           libeigen3-dev coinor-libipopt-dev nlohmann-json3-dev libcli11-dev
-          libgtest-dev libbenchmark-dev)
+          libgtest-dev libbenchmark-dev
+          libvtk9-qt-dev libvtk9-dev qtbase5-dev xvfb xauth libgl1-mesa-dri)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -1,0 +1,133 @@
+#include "app/batch.h"
+
+#include <QApplication>
+#include <QDir>
+#include <QFileInfo>
+#include <QLoggingCategory>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+
+#include "app/main_window.h"
+#include "core/result_folder.h"
+#include "saltus/io/input_error.h"
+#include "scene/chart_view.h"
+
+namespace saltus::gui {
+
+namespace {
+
+constexpr int kExitFailure = 1;
+constexpr int kExitBadInput = 2;
+constexpr int kFigureWidth = 1200;
+constexpr int kFigureHeight = 600;
+constexpr int kOptimizationTimeoutMs = 6 * 60 * 60 * 1000;
+
+int export_figures(const CommandLine& c) {
+  std::vector<ResultFolder> folders;
+  try {
+    for (const std::string& dir : c.result_dirs)
+      folders.push_back(read_result_folder(dir));
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "saltus-gui: error: %s\n", e.what());
+    return kExitBadInput;
+  }
+  try {
+    std::filesystem::create_directories(c.export_figures);
+    for (const Figure& figure : paper_figures(folders)) {
+      const std::string path =
+          (std::filesystem::path(c.export_figures) / figure.file_name).string();
+      write_chart_png(figure.chart, path, kFigureWidth, kFigureHeight, 15);
+      std::printf("wrote %s\n", path.c_str());
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "saltus-gui: error: %s\n", e.what());
+    return kExitFailure;
+  }
+  return 0;
+}
+
+int show_motion(const CommandLine& c) {
+  MainWindow window(false);
+  // Laid out and rendered like a shown window, but never mapped on a screen; except for the
+  // benchmark, which must measure frames really drawn into a window (under Xvfb, a virtual one).
+  // Grabbing an unmapped window makes Qt's xcb plugin log a harmless X error (BadGC): the
+  // picture is complete, so that warning is silenced here.
+  if (!c.benchmark) {
+    window.setAttribute(Qt::WA_DontShowOnScreen);
+    QLoggingCategory::setFilterRules("qt.qpa.xcb.warning=false");
+  }
+  window.resize(c.width, c.height);
+  window.show();
+  QApplication::processEvents();
+
+  QString error;
+  if (!window.open_motion(QString::fromStdString(c.motion), &error)) {
+    std::fprintf(stderr, "saltus-gui: error: %s\n", qPrintable(error));
+    return kExitBadInput;
+  }
+  if (c.camera) window.set_camera(*c.camera);
+  if (c.optimize) {
+    // Library defaults, not the panel's remembered values: batch runs are reproducible.
+    OptimizeSettings settings;
+    if (c.max_iterations) settings.max_iterations = *c.max_iterations;
+    if (c.samples) settings.samples = *c.samples;
+    if (!window.start_optimization(settings, &error)) {
+      std::fprintf(stderr, "saltus-gui: error: %s\n", qPrintable(error));
+      return kExitBadInput;
+    }
+    window.wait_for_optimization(kOptimizationTimeoutMs);
+    if (!window.document().has_optimization()) {
+      std::fprintf(stderr, "saltus-gui: error: the optimisation failed\n");
+      return kExitFailure;
+    }
+    const OptimizationResult& r = window.document().optimization();
+    std::printf("optimised: %s after %d iterations, average root force %.4g N -> %.4g N\n",
+                r.solve.status.c_str(), r.solve.iterations, r.before.metrics.avg_root_force,
+                r.after.metrics.avg_root_force);
+  }
+  if (c.stage) window.set_stage(*c.stage);
+  if (c.time) window.seek(*c.time);
+  QApplication::processEvents();
+
+  if (!c.save_result.empty()) {
+    if (!window.save_result(QString::fromStdString(c.save_result), &error)) {
+      std::fprintf(stderr, "saltus-gui: error: %s\n", qPrintable(error));
+      return kExitBadInput;
+    }
+    std::printf("wrote %s\n", c.save_result.c_str());
+  }
+  if (!c.screenshot_view.empty()) {
+    if (!window.export_view_png(QString::fromStdString(c.screenshot_view), &error)) {
+      std::fprintf(stderr, "saltus-gui: error: %s\n", qPrintable(error));
+      return kExitFailure;
+    }
+    std::printf("wrote %s\n", c.screenshot_view.c_str());
+  }
+  if (!c.screenshot.empty()) {
+    if (!window.export_window_png(QString::fromStdString(c.screenshot), &error)) {
+      std::fprintf(stderr, "saltus-gui: error: %s\n", qPrintable(error));
+      return kExitFailure;
+    }
+    std::printf("wrote %s\n", c.screenshot.c_str());
+  }
+  if (c.benchmark) {
+    const double fps = window.benchmark_playback(c.benchmark_seconds);
+    std::printf("playback: %.1f frames per second at %dx%d over %.1f s (%d 3D renders)\n", fps,
+                c.width, c.height, c.benchmark_seconds, window.benchmark_renders());
+  }
+  return 0;
+}
+
+}  // namespace
+
+int run_batch(const CommandLine& c) {
+  if (!c.export_figures.empty()) {
+    const int status = export_figures(c);
+    if (status != 0) return status;
+  }
+  if (!c.motion.empty()) return show_motion(c);
+  return 0;
+}
+
+}  // namespace saltus::gui

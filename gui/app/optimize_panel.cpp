@@ -1,0 +1,162 @@
+#include "app/optimize_panel.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace saltus::gui {
+
+OptimizePanel::OptimizePanel(QWidget* parent) : QWidget(parent) {
+  auto* layout = new QVBoxLayout(this);
+  auto* form = new QFormLayout;
+  formulation_ = new QComboBox(this);
+  formulation_->addItem(tr("relaxed (paper)"));
+  formulation_->addItem(tr("strict: |F_i| ≤ ε"));
+  formulation_->setToolTip(
+      tr("Relaxed: the paper's model, keyframes within tolerance, root force minimised.\n"
+         "Strict: classic spacetime constraints, every root force/moment component bounded."));
+  epsilon_ = new QDoubleSpinBox(this);
+  epsilon_->setRange(0.001, 1e6);
+  epsilon_->setDecimals(3);
+  epsilon_->setSuffix(tr(" N / N·m"));
+  epsilon_->setToolTip(tr("Strict model: bound on each |F_i| at every sample"));
+  timing_ = new QCheckBox(tr("optimise keyframe times"), this);
+  knots_ = new QSpinBox(this);
+  knots_->setRange(1, kMaxKnotsPerInterval);
+  knots_->setToolTip(tr("Spline knot sub-intervals per keyframe interval (1 = the paper's)"));
+  samples_ = new QSpinBox(this);
+  samples_->setRange(kMinSamples, 5000);
+  samples_->setToolTip(tr("Time samples of the objective on [0, T] (fewer = faster)"));
+  iterations_ = new QSpinBox(this);
+  iterations_->setRange(0, kMaxIterations);
+  iterations_->setToolTip(tr("Ipopt iteration limit"));
+  form->addRow(tr("Model"), formulation_);
+  form->addRow(tr("ε (strict)"), epsilon_);
+  form->addRow(QString(), timing_);
+  form->addRow(tr("Knots per interval"), knots_);
+  form->addRow(tr("Samples"), samples_);
+  form->addRow(tr("Max iterations"), iterations_);
+  layout->addLayout(form);
+
+  auto* buttons = new QHBoxLayout;
+  run_ = new QPushButton(tr("Run optimisation"), this);
+  run_->setToolTip(tr("Optimise the open motion (Ctrl+R)"));
+  cancel_ = new QPushButton(tr("Cancel"), this);
+  cancel_->setToolTip(tr("Stop after the current iteration and show that point"));
+  buttons->addWidget(run_);
+  buttons->addWidget(cancel_);
+  layout->addLayout(buttons);
+  bar_ = new QProgressBar(this);
+  bar_->setTextVisible(true);
+  status_ = new QLabel(tr("Open a motion to optimise it."), this);
+  status_->setWordWrap(true);
+  layout->addWidget(bar_);
+  layout->addWidget(status_);
+
+  table_ = new QTableWidget(0, 3, this);
+  table_->setHorizontalHeaderLabels({tr("Quantity"), tr("Before"), tr("After")});
+  table_->verticalHeader()->setVisible(false);
+  // Values are short (numbers, one keyframe time per line): they get what they need and the
+  // quantity names wrap in the rest.
+  table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+  table_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
+  table_->horizontalHeader()->setSectionResizeMode(2, QHeaderView::ResizeToContents);
+  table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  table_->setWordWrap(true);
+  table_->setToolTip(tr("Before: the interpolated keyframes; after: the optimised motion"));
+  layout->addWidget(table_, 1);
+
+  connect(run_, &QPushButton::clicked, this, &OptimizePanel::run_requested);
+  connect(cancel_, &QPushButton::clicked, this, &OptimizePanel::cancel_requested);
+  connect(formulation_, qOverload<int>(&QComboBox::currentIndexChanged), this,
+          [this] { update_enabled(); });
+  set_settings(OptimizeSettings{});
+  update_enabled();
+}
+
+OptimizeSettings OptimizePanel::settings() const {
+  OptimizeSettings s;
+  s.strict = formulation_->currentIndex() == 1;
+  s.epsilon = epsilon_->value();
+  s.optimize_timing = timing_->isChecked();
+  s.knots_per_interval = knots_->value();
+  s.samples = samples_->value();
+  s.max_iterations = iterations_->value();
+  return s;
+}
+
+void OptimizePanel::set_settings(const OptimizeSettings& s) {
+  formulation_->setCurrentIndex(s.strict ? 1 : 0);
+  epsilon_->setValue(s.epsilon);
+  timing_->setChecked(s.optimize_timing);
+  knots_->setValue(s.knots_per_interval);
+  samples_->setValue(s.samples);
+  iterations_->setValue(s.max_iterations);
+  update_enabled();
+}
+
+void OptimizePanel::set_available(bool available) {
+  if (available && !available_ && !running_) status_->setText(tr("Ready."));
+  if (!available) status_->setText(tr("Open a motion to optimise it."));
+  available_ = available;
+  update_enabled();
+}
+
+void OptimizePanel::set_running(bool running) {
+  running_ = running;
+  if (running) {
+    bar_->setRange(0, std::max(1, iterations_->value()));
+    bar_->setValue(0);
+    bar_->setFormat(tr("iteration %v of at most %m"));
+    status_->setText(tr("Building the problem (first derivatives)…"));
+  }
+  update_enabled();
+}
+
+void OptimizePanel::show_progress(const ProgressInfo& progress) {
+  bar_->setValue(std::min(progress.iteration, bar_->maximum()));
+  status_->setText(QString::fromStdString(progress_text(progress)));
+}
+
+void OptimizePanel::show_message(const QString& message) {
+  status_->setText(message);
+}
+
+void OptimizePanel::show_result(const std::vector<ResultRow>& rows) {
+  table_->setRowCount(static_cast<int>(rows.size()));
+  for (int r = 0; r < static_cast<int>(rows.size()); ++r) {
+    const ResultRow& row = rows[r];
+    table_->setItem(r, 0, new QTableWidgetItem(QString::fromStdString(row.quantity)));
+    table_->setItem(r, 1, new QTableWidgetItem(QString::fromStdString(row.before)));
+    table_->setItem(r, 2, new QTableWidgetItem(QString::fromStdString(row.after)));
+    for (int c = 0; c < 3; ++c)
+      table_->item(r, c)->setToolTip(table_->item(r, c)->text());
+  }
+  table_->resizeRowsToContents();
+}
+
+void OptimizePanel::clear_result() {
+  table_->setRowCount(0);
+  bar_->setValue(0);
+}
+
+void OptimizePanel::update_enabled() {
+  const bool idle = !running_;
+  for (QWidget* w :
+       std::initializer_list<QWidget*>{formulation_, timing_, knots_, samples_, iterations_})
+    w->setEnabled(idle);
+  epsilon_->setEnabled(idle && formulation_->currentIndex() == 1);
+  run_->setEnabled(idle && available_);
+  cancel_->setEnabled(running_);
+}
+
+}  // namespace saltus::gui

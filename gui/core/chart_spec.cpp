@@ -1,0 +1,48 @@
+#include "core/chart_spec.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace saltus::gui {
+
+AxisRange y_range(const ChartSpec& chart, bool right_axis) {
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = -lo;
+  for (const LineSpec& line : chart.lines) {
+    if (line.right_axis != right_axis) continue;
+    for (double y : line.y) {
+      if (!std::isfinite(y)) continue;
+      lo = std::min(lo, y);
+      hi = std::max(hi, y);
+    }
+    if (line.kind == LineKind::kBars && !line.y.empty()) {
+      lo = std::min(lo, 0.0);
+      hi = std::max(hi, 0.0);
+    }
+  }
+  if (!(lo <= hi)) return {};
+  const double span = hi - lo;
+  const double pad = span > 0 ? 0.05 * span : std::max(1.0, 0.05 * std::abs(hi));
+  return {lo - pad, hi + pad};
+}
+
+AxisRange x_range(const ChartSpec& chart) {
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = -lo;
+  for (const LineSpec& line : chart.lines)
+    for (double x : line.x) {
+      if (!std::isfinite(x)) continue;
+      lo = std::min(lo, x);
+      hi = std::max(hi, x);
+    }
+  for (const MarkerSpec& m : chart.markers) {
+    lo = std::min(lo, m.x);
+    hi = std::max(hi, m.x);
+  }
+  if (!(lo <= hi)) return {};
+  if (lo == hi) return {lo - 0.5, hi + 0.5};
+  return {lo, hi};
+}
+
+}  // namespace saltus::gui

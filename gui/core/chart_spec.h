@@ -1,0 +1,58 @@
+#pragma once
+/// @file
+/// What a chart shows, independent of how it is drawn: lines with labels, colours and styles,
+/// axis titles with units and vertical markers (keyframe times, the time cursor). The core
+/// decides what to plot (tested without a window); gui/scene draws a ChartSpec with VTK, both in
+/// the app and for the exported figures.
+
+#include <string>
+#include <vector>
+
+namespace saltus::gui {
+
+struct Rgb {
+  double r = 0.0, g = 0.0, b = 0.0;  ///< each in [0, 1]
+};
+
+enum class LineKind { kLine, kPoints, kBars };
+
+struct LineSpec {
+  std::string label;  ///< legend entry
+  std::vector<double> x;
+  std::vector<double> y;
+  Rgb colour;
+  bool dashed = false;
+  double width = 2.0;       ///< pixels
+  bool right_axis = false;  ///< plotted against the right-hand y axis (y2_title)
+  LineKind kind = LineKind::kLine;
+};
+
+/// A vertical line across the plot at x (keyframe times).
+struct MarkerSpec {
+  double x = 0.0;
+  Rgb colour;
+  bool dashed = false;
+};
+
+struct ChartSpec {
+  std::string title;
+  std::string x_title;   ///< with unit, e.g. "time (s)"
+  std::string y_title;   ///< with unit, e.g. "root force (N)"
+  std::string y2_title;  ///< right axis; empty when no line uses it
+  std::vector<LineSpec> lines;
+  std::vector<MarkerSpec> markers;
+  /// Labels for integer x positions 0, 1, ... (bar charts); empty: numeric axis.
+  std::vector<std::string> x_labels;
+  bool legend = true;
+};
+
+/// Smallest and largest y over the lines on one axis (left: right_axis false), padded by 5 % of
+/// the span (and at least ±1 when flat); {0, 1} when there is no data. Bar charts include 0.
+struct AxisRange {
+  double min = 0.0, max = 1.0;
+};
+AxisRange y_range(const ChartSpec& chart, bool right_axis);
+/// Smallest and largest x over all lines and markers (unpadded); {0, 1} when empty.
+AxisRange x_range(const ChartSpec& chart);
+
+}  // namespace saltus::gui

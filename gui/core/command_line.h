@@ -1,0 +1,53 @@
+#pragma once
+/// @file
+/// The command line of saltus-gui (batch flags included), parsed without Qt so it is unit-tested:
+///   saltus-gui [MOTION] [--optimize] [--max-iter N] [--samples N] [--time T]
+///              [--stage before|after] [--camera side|front|top|follow] [--size WxH]
+///              [--screenshot FILE] [--screenshot-view FILE] [--save-result DIR]
+///              [--export-figures DIR RESULT_DIR...] [--benchmark-playback [--seconds S]]
+/// Positional arguments before --export-figures name the motion; after it, result folders.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/document.h"
+#include "core/scene_options.h"
+
+namespace saltus::gui {
+
+struct CommandLine {
+  std::string motion;                    ///< motion file to open ("" none)
+  std::vector<std::string> result_dirs;  ///< `saltus optimize` folders for --export-figures
+  bool optimize = false;
+  std::optional<int> max_iterations;
+  std::optional<int> samples;
+  std::optional<double> time;  ///< s
+  std::optional<Stage> stage;
+  std::optional<CameraPreset> camera;
+  int width = 1600;
+  int height = 1000;
+  std::string screenshot;       ///< whole window PNG
+  std::string screenshot_view;  ///< 3D view PNG
+  std::string save_result;      ///< output folder like the CLI's --out
+  std::string export_figures;   ///< folder for the paper-style figures
+  bool benchmark = false;
+  double benchmark_seconds = 5.0;
+  bool help = false;
+  bool version = false;
+
+  /// Whether the run writes files and exits by itself (no user interaction).
+  bool batch() const {
+    return !screenshot.empty() || !screenshot_view.empty() || !save_result.empty() ||
+           !export_figures.empty() || benchmark;
+  }
+};
+
+/// Parses the arguments after the program name. Throws std::invalid_argument with a message
+/// for the user on bad usage (unknown flag, missing or bad value, flags needing a motion).
+CommandLine parse_command_line(const std::vector<std::string>& args);
+
+/// The --help text.
+std::string usage_text();
+
+}  // namespace saltus::gui

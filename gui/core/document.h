@@ -1,0 +1,88 @@
+#pragma once
+/// @file
+/// The open motion and everything the views show about it: the model, the evaluation of the
+/// interpolated keyframes ("before"), the optimisation result ("after") when there is one, the
+/// rotation metrics of both and the glyph scales. All numbers come from library calls; the
+/// views only ask for them.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/glyph_scale.h"
+#include "core/parabola.h"
+#include "saltus/analysis/motion_analysis.h"
+#include "saltus/analysis/rotation_metrics.h"
+#include "saltus/optim/optimize.h"
+
+namespace saltus::gui {
+
+/// Which version of the motion: the keyframe interpolation, or the optimised one.
+enum class Stage { kBefore, kAfter };
+
+class Document {
+ public:
+  /// Loads a motion file and the model it names (or `model_override`, a name or path) and
+  /// evaluates it with `samples` time samples. Throws InputError for bad files and
+  /// std::invalid_argument for bad options; on failure the document keeps what it had.
+  void load(const std::string& motion_path, const std::string& model_override = "",
+            int samples = kDefaultSamples);
+  bool loaded() const { return file_.has_value(); }
+  /// The loaded motion and model; requires loaded().
+  const MotionFile& file() const { return *file_; }
+  const std::string& model_override() const { return model_override_; }
+  const EvaluateOptions& evaluate_options() const { return evaluate_options_; }
+
+  bool has_optimization() const { return optimization_.has_value(); }
+  const OptimizationResult& optimization() const { return *optimization_; }
+  const OptimizeOptions& optimization_options() const { return optimize_options_; }
+  /// Installs an optimisation result of this document's motion (from optimize_motion).
+  void set_optimization(OptimizationResult result, const OptimizeOptions& options);
+  void clear_optimization();
+
+  /// A stage that exists: kAfter only with an optimisation, else kBefore.
+  Stage available(Stage wanted) const;
+  /// The evaluation of a stage. With an optimisation both stages come from it (one sample grid);
+  /// otherwise kBefore is the document's own evaluation.
+  const MotionEvaluation& evaluation(Stage stage) const;
+  const std::vector<RotationSample>& rotation(Stage stage) const;
+
+  double duration() const { return file_->motion.flight_time(); }
+  /// Sample grid size of a stage (the timeline's frames).
+  int frame_count(Stage stage) const;
+
+  /// The exact state at time t: one inverse-dynamics evaluation of the stage's trajectory.
+  SampleRecord sample_at(Stage stage, double t) const;
+  /// Rotation quantities at t: instantaneous values exact at t, counts interpolated along the
+  /// stage's sample grid.
+  RotationSample rotation_at(Stage stage, double t) const;
+  /// Poses at the keyframe times of a stage (given times before, optimised times after).
+  std::vector<SampleRecord> keyframe_poses(Stage stage) const;
+  /// The ballistic CoM path of the take-off state over the flight.
+  ParabolaSamples parabola(int count) const;
+
+  /// Scales shared by both stages, so that before and after compare: residual force (N) and
+  /// moment (N·m) about the CoM, and the force across the joints except the root (N). Full scale
+  /// is the larger stage's 90th percentile over the samples (rounded up to 1, 2, 5 × 10^k): one
+  /// spike at an end of the flight must not shrink every other arrow to nothing.
+  GlyphScale residual_force_scale(double max_length_m) const;
+  GlyphScale residual_moment_scale(double max_length_m) const;
+  GlyphScale joint_force_scale(double max_length_m) const;
+
+  /// Writes the outputs the CLI would: `saltus optimize`'s when optimised, else `saltus
+  /// evaluate`'s (result.json, trajectories, model.json, ...), all or nothing.
+  void save_result(const std::string& out_dir) const;
+
+ private:
+  std::optional<MotionFile> file_;
+  std::string model_override_;
+  EvaluateOptions evaluate_options_;
+  MotionEvaluation evaluation_;
+  std::vector<RotationSample> rotation_;
+  std::optional<OptimizationResult> optimization_;
+  OptimizeOptions optimize_options_;
+  std::vector<RotationSample> rotation_opt_before_;
+  std::vector<RotationSample> rotation_opt_after_;
+};
+
+}  // namespace saltus::gui

@@ -1,0 +1,232 @@
+#include "scene/chart_view.h"
+
+#include <vtkAxis.h>
+#include <vtkBrush.h>
+#include <vtkChartLegend.h>
+#include <vtkChartXY.h>
+#include <vtkContextMouseEvent.h>
+#include <vtkContextScene.h>
+#include <vtkContextView.h>
+#include <vtkDoubleArray.h>
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+#include <vtkPen.h>
+#include <vtkPlot.h>
+#include <vtkPlotPoints.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+#include <vtkStringArray.h>
+#include <vtkTable.h>
+#include <vtkTextProperty.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+#include "scene/vtk_text.h"
+
+namespace saltus::gui {
+
+namespace {
+
+vtkSmartPointer<vtkTable> make_table(const std::string& x_name, const std::string& y_name,
+                                     const std::vector<double>& x, const std::vector<double>& y) {
+  auto table = vtkSmartPointer<vtkTable>::New();
+  vtkNew<vtkDoubleArray> xs, ys;
+  xs->SetName(x_name.c_str());
+  ys->SetName(y_name.c_str());
+  table->AddColumn(xs);
+  table->AddColumn(ys);
+  const std::size_t n = std::min(x.size(), y.size());
+  table->SetNumberOfRows(static_cast<vtkIdType>(n));
+  for (std::size_t i = 0; i < n; ++i) {
+    table->SetValue(static_cast<vtkIdType>(i), 0, x[i]);
+    table->SetValue(static_cast<vtkIdType>(i), 1, y[i]);
+  }
+  return table;
+}
+
+}  // namespace
+
+struct ChartView::Impl {
+  vtkNew<vtkContextView> view;
+  vtkNew<vtkChartXY> chart;
+  ChartSpec spec;
+  AxisRange left, right;
+  bool uses_right = false;
+  int font_points = 12;
+  /// Tables must outlive their plots' use; the plots hold references, this keeps them alive too.
+  std::vector<vtkSmartPointer<vtkTable>> tables;
+
+  Impl() {
+    view->GetScene()->AddItem(chart);
+    view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
+    // Clicking seeks (the widget handles it), so the chart's own mouse actions are off and
+    // the axes stay where set_chart puts them. Hover tooltips remain.
+    for (int action : {vtkChart::PAN, vtkChart::ZOOM, vtkChart::ZOOM_AXIS, vtkChart::SELECT,
+                       vtkChart::SELECT_POLYGON, vtkChart::CLICK_AND_DRAG})
+      chart->SetActionToButton(action, vtkContextMouseEvent::NO_BUTTON);
+    chart->SetZoomWithMouseWheel(false);
+    chart->SetShowLegend(true);
+    // Outside the plot area, on the right: small charts would otherwise hide their curves.
+    chart->GetLegend()->SetInline(false);
+    chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
+    chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
+    chart->GetLegend()->GetBrush()->SetColor(255, 255, 255, 215);
+    apply_fonts();
+  }
+
+  void apply_fonts() {
+    apply_font(chart->GetTitleProperties(), font_points + 1, 0.1, 0.1, 0.1, true);
+    for (int a : {vtkAxis::LEFT, vtkAxis::BOTTOM, vtkAxis::RIGHT}) {
+      apply_font(chart->GetAxis(a)->GetTitleProperties(), font_points, 0.1, 0.1, 0.1);
+      apply_font(chart->GetAxis(a)->GetLabelProperties(), font_points - 2, 0.2, 0.2, 0.2);
+    }
+    apply_font(chart->GetLegend()->GetLabelProperties(), font_points - 2, 0.1, 0.1, 0.1);
+    chart->GetLegend()->SetLabelSize(font_points - 2);
+  }
+
+  void rebuild() {
+    chart->ClearPlots();
+    tables.clear();
+    chart->SetTitle(spec.title);
+    chart->SetShowLegend(spec.legend && !spec.lines.empty());
+    vtkAxis* bottom = chart->GetAxis(vtkAxis::BOTTOM);
+    vtkAxis* left_axis = chart->GetAxis(vtkAxis::LEFT);
+    vtkAxis* right_axis = chart->GetAxis(vtkAxis::RIGHT);
+    bottom->SetTitle(spec.x_title);
+    left_axis->SetTitle(spec.y_title);
+    right_axis->SetTitle(spec.y2_title);
+
+    left = y_range(spec, false);
+    uses_right = false;
+    for (const LineSpec& line : spec.lines)
+      uses_right = uses_right || line.right_axis;
+    right = y_range(spec, true);
+    AxisRange x = x_range(spec);
+    const bool bars = !spec.x_labels.empty();
+    if (bars) x = {-0.5, static_cast<double>(spec.x_labels.size()) - 0.5};
+
+    for (const LineSpec& line : spec.lines) {
+      auto table =
+          make_table(spec.x_title.empty() ? "x" : spec.x_title, line.label, line.x, line.y);
+      tables.push_back(table);
+      // Point series are lines with markers, so keyframes before/after read as connected rows.
+      const int type = line.kind == LineKind::kBars ? vtkChart::BAR : vtkChart::LINE;
+      vtkPlot* plot = chart->AddPlot(type);
+      plot->SetInputData(table, 0, 1);
+      plot->SetColor(line.colour.r, line.colour.g, line.colour.b);
+      plot->SetWidth(static_cast<float>(line.width));
+      plot->SetLabel(line.label);
+      if (line.dashed) plot->GetPen()->SetLineType(vtkPen::DASH_LINE);
+      if (auto* points = vtkPlotPoints::SafeDownCast(plot)) {
+        // Lines carry no markers (hundreds of samples); point series (keyframes) do.
+        points->SetMarkerStyle(line.kind == LineKind::kPoints ? vtkPlotPoints::CIRCLE
+                                                              : vtkPlotPoints::NONE);
+        if (line.kind == LineKind::kPoints) points->SetMarkerSize(10.0f);
+      }
+      if (line.right_axis) chart->SetPlotCorner(plot, 1);
+    }
+
+    for (const MarkerSpec& marker : spec.markers) {
+      auto table = make_table("x", "marker", {marker.x, marker.x}, {left.min, left.max});
+      tables.push_back(table);
+      vtkPlot* plot = chart->AddPlot(vtkChart::LINE);
+      plot->SetInputData(table, 0, 1);
+      plot->SetColor(marker.colour.r, marker.colour.g, marker.colour.b);
+      plot->SetWidth(1.0f);
+      if (marker.dashed) plot->GetPen()->SetLineType(vtkPen::DOT_LINE);
+      plot->SetLegendVisibility(false);
+      plot->SetSelectable(false);
+    }
+
+    for (vtkAxis* axis : {bottom, left_axis, right_axis})
+      axis->SetBehavior(vtkAxis::FIXED);
+    bottom->SetRange(x.min, x.max);
+    left_axis->SetRange(left.min, left.max);
+    right_axis->SetRange(right.min, right.max);
+    right_axis->SetVisible(uses_right);
+    if (bars) {
+      vtkNew<vtkDoubleArray> positions;
+      vtkNew<vtkStringArray> labels;
+      for (std::size_t i = 0; i < spec.x_labels.size(); ++i) {
+        positions->InsertNextValue(static_cast<double>(i));
+        labels->InsertNextValue(spec.x_labels[i]);
+      }
+      bottom->SetCustomTickPositions(positions, labels);
+    } else {
+      bottom->SetCustomTickPositions(nullptr, nullptr);
+    }
+    chart->Update();
+  }
+};
+
+ChartView::ChartView() : impl_(std::make_unique<Impl>()) {}
+ChartView::~ChartView() = default;
+
+void ChartView::set_render_window(vtkRenderWindow* window, vtkRenderWindowInteractor* interactor) {
+  impl_->view->SetRenderWindow(window);
+  if (interactor) impl_->view->SetInteractor(interactor);
+}
+
+void ChartView::set_chart(const ChartSpec& spec) {
+  impl_->spec = spec;
+  impl_->rebuild();
+}
+
+const ChartSpec& ChartView::chart() const {
+  return impl_->spec;
+}
+
+ChartView::PlotArea ChartView::plot_area() const {
+  vtkAxis* bottom = impl_->chart->GetAxis(vtkAxis::BOTTOM);
+  vtkAxis* left = impl_->chart->GetAxis(vtkAxis::LEFT);
+  PlotArea area;
+  area.left = bottom->GetPoint1()[0];
+  area.right = bottom->GetPoint2()[0];
+  area.bottom = std::min(left->GetPoint1()[1], left->GetPoint2()[1]);
+  area.top = std::max(left->GetPoint1()[1], left->GetPoint2()[1]);
+  area.x_min = bottom->GetMinimum();
+  area.x_max = bottom->GetMaximum();
+  return area;
+}
+
+std::optional<double> ChartView::x_at_pixel(int x, int y) const {
+  const PlotArea a = plot_area();
+  if (!(a.right > a.left) || x < a.left || x > a.right || y < a.bottom || y > a.top)
+    return std::nullopt;
+  const double u = (x - a.left) / static_cast<double>(a.right - a.left);
+  return a.x_min + u * (a.x_max - a.x_min);
+}
+
+void ChartView::set_font_size(int points) {
+  impl_->font_points = points;
+  impl_->apply_fonts();
+}
+
+void write_chart_png(const ChartSpec& spec, const std::string& path, int width, int height,
+                     int font_points) {
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetSize(width, height);
+  window->SetMultiSamples(0);
+  ChartView view;
+  view.set_font_size(font_points);
+  view.set_render_window(window, nullptr);
+  view.set_chart(spec);
+  window->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetFileName(path.c_str());
+  writer->SetInputConnection(grab->GetOutputPort());
+  writer->Write();
+  if (writer->GetErrorCode() != 0 || !std::filesystem::exists(path))
+    throw std::runtime_error(path + ": cannot write the figure");
+}
+
+}  // namespace saltus::gui

@@ -1,0 +1,97 @@
+// saltus-gui as a program: batch screenshots, paper figures from `saltus optimize` folders,
+// bad usage. Runs the built executables (under the same Xvfb display as this test).
+
+#include <gtest/gtest.h>
+
+#include <QImage>
+#include <filesystem>
+
+#include "gui/support/image_checks.h"
+#include "gui_core/test_motion.h"
+#include "support/cli_runner.h"
+
+namespace saltus::gui {
+namespace {
+
+saltus::test::CliRun run_gui(const std::string& arguments) {
+  const std::string command = std::string(SALTUS_GUI_PATH) + " " + arguments + " 2>&1";
+  saltus::test::CliRun run;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return run;
+  std::array<char, 4096> buffer{};
+  while (fgets(buffer.data(), buffer.size(), pipe))
+    run.output += buffer.data();
+  const int raw = pclose(pipe);
+  run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  return run;
+}
+
+void expect_sane_png(const std::string& path, int min_width, int min_height) {
+  const QImage image(QString::fromStdString(path));
+  ASSERT_FALSE(image.isNull()) << path << " missing or not a PNG";
+  EXPECT_GE(image.width(), min_width) << path;
+  EXPECT_GE(image.height(), min_height) << path;
+  EXPECT_GT(std::filesystem::file_size(path), 10000u) << path;
+  const test::BlankCheck check = test::blank_check(image);
+  EXPECT_GT(check.distinct_colours, 8) << path << " looks blank";
+  EXPECT_GT(check.non_background, 0.01) << path << " looks blank";
+}
+
+TEST(GuiBatch, OptimisesAndWritesAScreenshotWithoutInteraction) {
+  saltus::test::TempDir dir;
+  const saltus::test::CliRun run =
+      run_gui("'" + test::gui_test_motion_path() +
+              "' --optimize --max-iter 2 --samples 31 --time 1.0 --size 1280x800 --screenshot '" +
+              (dir / "shot.png") + "' --screenshot-view '" + (dir / "view.png") +
+              "' --save-result '" + (dir / "result") + "'");
+  ASSERT_EQ(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find("optimised:"), std::string::npos) << run.output;
+  const QImage shot(QString::fromStdString(dir / "shot.png"));
+  EXPECT_EQ(shot.width(), 1280);
+  EXPECT_EQ(shot.height(), 800);
+  expect_sane_png(dir / "shot.png", 1280, 800);
+  expect_sane_png(dir / "view.png", 400, 200);
+  for (const char* file : {"result.json", "trajectory_before.csv", "trajectory_after.csv",
+                           "optimized.motion.json", "model.json"})
+    EXPECT_TRUE(std::filesystem::exists(dir.path() / "result" / file)) << file;
+}
+
+TEST(GuiBatch, ExportsPaperFiguresFromCliOutputFolders) {
+  saltus::test::TempDir dir;
+  // Two `saltus optimize` runs, as a user would make them (few iterations: a smoke test).
+  for (const char* name : {"relaxed", "fixed-times"}) {
+    const std::string extra = std::string(name) == "fixed-times" ? " --no-timing" : "";
+    const saltus::test::CliRun cli = saltus::test::run_cli(
+        "optimize '" + test::gui_test_motion_path() +
+        "' --max-iter 3 --samples 31 --quiet --out '" + (dir / name) + "'" + extra);
+    ASSERT_TRUE(cli.status == 0 || cli.status == 3) << cli.output;  // 3: not converged yet
+  }
+  const saltus::test::CliRun run = run_gui("--export-figures '" + (dir / "figures") + "' '" +
+                                           (dir / "relaxed") + "' '" + (dir / "fixed-times") + "'");
+  ASSERT_EQ(run.status, 0) << run.output;
+  for (const char* file :
+       {"relaxed_root_force.png", "relaxed_root_moment.png", "relaxed_keyframe_times.png",
+        "fixed-times_root_force.png", "fixed-times_root_moment.png",
+        "fixed-times_keyframe_times.png", "average_root_force.png"})
+    expect_sane_png((dir.path() / "figures" / file).string(), 1200, 600);
+}
+
+TEST(GuiBatch, BadInputAndUsageExitWithStatus2) {
+  saltus::test::TempDir dir;
+  const saltus::test::CliRun missing =
+      run_gui("--export-figures '" + (dir / "f") + "' '" + (dir / "no-such-folder") + "'");
+  EXPECT_EQ(missing.status, 2) << missing.output;
+  EXPECT_NE(missing.output.find("no-such-folder"), std::string::npos) << missing.output;
+  const saltus::test::CliRun usage = run_gui("--frobnicate");
+  EXPECT_EQ(usage.status, 2) << usage.output;
+  const saltus::test::CliRun bad_motion =
+      run_gui("'" + (dir / "absent.motion.json") + "' --screenshot '" + (dir / "s.png") + "'");
+  EXPECT_EQ(bad_motion.status, 2) << bad_motion.output;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "s.png"));
+  const saltus::test::CliRun help = run_gui("--help");
+  EXPECT_EQ(help.status, 0);
+  EXPECT_NE(help.output.find("--export-figures"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace saltus::gui

@@ -1,0 +1,342 @@
+// The real main window under Xvfb: open the test motion, draw it, optimise it in the background
+// with a few iterations (the window keeps processing events), compare the 3D view with the
+// committed baselines, cancel, bad input, saving and exporting.
+
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QComboBox>
+#include <QDir>
+#include <QDropEvent>
+#include <QElapsedTimer>
+#include <QFileInfo>
+#include <QMimeData>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTabWidget>
+#include <QTest>
+#include <QTimer>
+#include <QUrl>
+#include <filesystem>
+
+#include "app/main_window.h"
+#include "gui/support/image_checks.h"
+#include "gui_core/test_motion.h"
+#include "support/cli_runner.h"
+
+namespace saltus::gui {
+namespace {
+
+/// Fixed window size, and 3D view size for pictures compared with baselines (pinned so that
+/// changes of the panels around it do not change the picture).
+constexpr int kWidth = 1280;
+constexpr int kHeight = 800;
+constexpr int kViewWidth = 800;
+constexpr int kViewHeight = 420;
+/// The time shown in the baseline pictures: a third of the way up, body inverted.
+constexpr double kShownTime = 0.8;
+
+QString motion_path() {
+  return QString::fromStdString(test::gui_test_motion_path());
+}
+
+QString baseline_name(const char* what) {
+  return QString::fromStdString(test::gui_test_motion_stem()) + "_" + what;
+}
+
+/// A shown window of the fixed size with the test motion open.
+class MainWindowTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    window_ = std::make_unique<MainWindow>(false);
+    window_->resize(kWidth, kHeight);
+    window_->show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(window_.get()));
+    // Keyboard shortcuts need the active window (Xvfb has no window manager to activate it).
+    QApplication::setActiveWindow(window_.get());
+    QString error;
+    ASSERT_TRUE(window_->open_motion(motion_path(), &error)) << error.toStdString();
+    window_->set_camera(CameraPreset::kFollow);
+    QApplication::processEvents();
+  }
+  void TearDown() override {
+    window_->close();
+    window_.reset();
+  }
+
+  OptimizeSettings few_iterations() const {
+    OptimizeSettings s;
+    s.max_iterations = 3;
+    s.samples = 31;
+    return s;
+  }
+
+  /// Drags `data` onto the window and drops it, as the window system would.
+  void drop(QMimeData* data) {
+    QDragEnterEvent enter(QPoint(50, 50), Qt::CopyAction, data, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(window_.get(), &enter);
+    ASSERT_TRUE(enter.isAccepted()) << "the window refused the drag";
+    QDropEvent drop_event(QPointF(50, 50), Qt::CopyAction, data, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(window_.get(), &drop_event);
+  }
+
+  std::unique_ptr<MainWindow> window_;
+};
+
+TEST(MainWindowEmpty, StartsWithoutAMotionAndSaysWhatToDo) {
+  MainWindow window(false);
+  window.resize(kWidth, kHeight);
+  window.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+  EXPECT_FALSE(window.document().loaded());
+  QString error;
+  EXPECT_FALSE(window.save_result("/tmp/never-written", &error));
+  EXPECT_FALSE(window.start_optimization(OptimizeSettings{}, &error));
+  EXPECT_FALSE(error.isEmpty());
+  QTest::keyClick(&window, Qt::Key_Space);  // nothing to play: no crash
+  const QImage picture = window.grab_window();
+  EXPECT_GT(test::blank_check(picture).distinct_colours, 10);
+  QDir().mkpath(SALTUS_GUI_CANDIDATE_DIR);
+  picture.save(QString(SALTUS_GUI_CANDIDATE_DIR) + "/empty_window.png");
+}
+
+TEST(MainWindowSettings, RemembersPanelValuesAndRecentFiles) {
+  // Qt's test mode keeps these settings away from the user's own.
+  QStandardPaths::setTestModeEnabled(true);
+  QSettings().clear();
+  {
+    MainWindow first(true);
+    first.show();
+    ASSERT_TRUE(first.open_motion(motion_path()));
+    OptimizeSettings s;
+    s.max_iterations = 2;
+    s.samples = 21;
+    s.optimize_timing = false;
+    ASSERT_TRUE(first.start_optimization(s));
+    ASSERT_TRUE(first.wait_for_optimization(300000));
+    first.close();
+  }
+  MainWindow second(true);
+  EXPECT_EQ(second.optimize_settings().max_iterations, 2);
+  EXPECT_EQ(second.optimize_settings().samples, 21);
+  EXPECT_FALSE(second.optimize_settings().optimize_timing);
+  const QStringList recent = QSettings().value("files/recent").toStringList();
+  ASSERT_FALSE(recent.isEmpty());
+  EXPECT_EQ(QFileInfo(recent.front()).fileName(), QFileInfo(motion_path()).fileName());
+  QSettings().clear();
+  QStandardPaths::setTestModeEnabled(false);
+}
+
+TEST_F(MainWindowTest, DrawsTheBodyWithLeftAndRightColours) {
+  window_->seek(kShownTime);
+  const QImage view = window_->grab_view();
+  ASSERT_FALSE(view.isNull());
+  EXPECT_GT(view.width(), 400);
+  EXPECT_GT(view.height(), 200);
+  const test::BlankCheck check = test::blank_check(view);
+  EXPECT_GT(check.distinct_colours, 30);
+  EXPECT_GT(check.non_background, 0.05);
+  // Left limbs blue, right limbs orange (BodyScene's colours, lit: allow a range).
+  EXPECT_GT(test::colour_fraction(view, QColor(64, 120, 224)), 0.0002);
+  EXPECT_GT(test::colour_fraction(view, QColor(237, 115, 46)), 0.0002);
+  EXPECT_DOUBLE_EQ(window_->time(), kShownTime);
+  EXPECT_EQ(window_->stage(), Stage::kBefore);
+}
+
+TEST_F(MainWindowTest, OptimisesInTheBackgroundAndMatchesTheBaseline) {
+  // The event loop must keep running during the optimisation: count the ticks of a 10 ms
+  // timer that arrive while it runs; a blocked GUI thread would deliver none.
+  int ticks = 0;
+  QTimer timer;
+  QObject::connect(&timer, &QTimer::timeout, [&] { ticks += window_->optimization_running(); });
+  timer.start(10);
+  QElapsedTimer clock;
+  clock.start();
+  QString error;
+  ASSERT_TRUE(window_->start_optimization(few_iterations(), &error)) << error.toStdString();
+  EXPECT_TRUE(window_->optimization_running());
+  EXPECT_FALSE(window_->start_optimization(few_iterations(), &error));  // one at a time
+  ASSERT_TRUE(window_->wait_for_optimization(300000));
+  const qint64 elapsed_ms = clock.elapsed();
+  timer.stop();
+  // Software OpenGL makes every repaint slow (the progress display repaints the window), so
+  // only ask for the loop to have turned a few times; a blocked GUI thread turns it not at all.
+  if (elapsed_ms > 150) {
+    EXPECT_GE(ticks, 2) << "the GUI thread was blocked while optimising (" << elapsed_ms << " ms)";
+  }
+
+  ASSERT_TRUE(window_->document().has_optimization());
+  const OptimizationResult& r = window_->document().optimization();
+  EXPECT_LE(r.solve.iterations, 3);
+  EXPECT_LT(r.after.metrics.avg_root_force, r.before.metrics.avg_root_force);
+  EXPECT_EQ(window_->stage(), Stage::kAfter);
+
+  window_->seek(kShownTime);
+  window_->fix_view_size(QSize(kViewWidth, kViewHeight));
+  const QImage view = window_->grab_view();
+  ASSERT_EQ(view.size(), QSize(kViewWidth, kViewHeight));
+  const test::Comparison c = test::compare_with_baseline(view, baseline_name("view_after"));
+  EXPECT_TRUE(c.ok) << c.message;
+
+  // The "before" stage is still there to compare with.
+  window_->set_stage(Stage::kBefore);
+  EXPECT_EQ(window_->stage(), Stage::kBefore);
+}
+
+TEST_F(MainWindowTest, CancelStopsTheOptimisationAtTheNextIteration) {
+  OptimizeSettings many = few_iterations();
+  many.max_iterations = 500;
+  QObject::connect(window_.get(), &MainWindow::optimization_finished, [] {});
+  ASSERT_TRUE(window_->start_optimization(many));
+  // Cancel once the solver is iterating (or at once if it is quick to get there).
+  QElapsedTimer clock;
+  clock.start();
+  while (clock.elapsed() < 1500)
+    QApplication::processEvents(QEventLoop::AllEvents, 20);
+  window_->cancel_optimization();
+  ASSERT_TRUE(window_->wait_for_optimization(60000));
+  ASSERT_TRUE(window_->document().has_optimization());
+  const SolveReport& solve = window_->document().optimization().solve;
+  EXPECT_LT(solve.iterations, 500);
+  EXPECT_TRUE(solve.status == "cancelled" || solve.status == "solved") << solve.status;
+}
+
+TEST_F(MainWindowTest, BadMotionShowsTheLibrarysMessageAndKeepsTheOpenMotion) {
+  saltus::test::TempDir dir;
+  const std::string bad = dir / "bad.motion.json";
+  saltus::test::write_text(
+      bad,
+      "{\"format\": \"saltus-motion/1\", \"model\": \"zatsiorsky-66kg\", "
+      "\"takeoff\": {\"com_position\": [0, 1, 0], \"com_velocity\": [0, 10, 0]}, "
+      "\"keyframes\": [{\"time\": \"soon\", \"rotations\": {}}, {\"time\": 1.0, "
+      "\"rotations\": {}}]}");
+  QString error;
+  EXPECT_FALSE(window_->open_motion(QString::fromStdString(bad), &error));
+  EXPECT_TRUE(error.contains("bad.motion.json")) << error.toStdString();
+  EXPECT_TRUE(error.contains("/keyframes/0")) << error.toStdString();
+  EXPECT_TRUE(window_->document().loaded());
+  EXPECT_EQ(QFileInfo(QString::fromStdString(window_->document().file().path)).fileName(),
+            QFileInfo(motion_path()).fileName());
+}
+
+TEST_F(MainWindowTest, SavesTheResultAndExportsPictures) {
+  saltus::test::TempDir dir;
+  QString error;
+  ASSERT_TRUE(window_->save_result(QString::fromStdString(dir / "result"), &error))
+      << error.toStdString();
+  for (const char* file : {"result.json", "trajectory.csv", "model.json"})
+    EXPECT_TRUE(std::filesystem::exists(dir.path() / "result" / file)) << file;
+
+  QStringList written;
+  ASSERT_TRUE(window_->export_plots(QString::fromStdString(dir / "plots"), &written, &error))
+      << error.toStdString();
+  EXPECT_EQ(written.size(), 4);
+  for (const QString& name : written) {
+    const QImage plot(QString::fromStdString(dir / "plots") + "/" + name);
+    ASSERT_FALSE(plot.isNull()) << name.toStdString();
+    EXPECT_EQ(plot.width(), 1400);
+    EXPECT_GT(test::blank_check(plot).distinct_colours, 8) << name.toStdString();
+  }
+
+  ASSERT_TRUE(window_->export_window_png(QString::fromStdString(dir / "window.png"), &error));
+  const QImage window_png(QString::fromStdString(dir / "window.png"));
+  EXPECT_EQ(window_png.width(), kWidth);
+  EXPECT_EQ(window_png.height(), kHeight);
+  EXPECT_GT(test::blank_check(window_png).distinct_colours, 30);
+}
+
+TEST_F(MainWindowTest, KeysStepPlayAndJump) {
+  const int frames = window_->document().frame_count(window_->stage());
+  const double dt = window_->document().duration() / (frames - 1);
+  window_->seek(50 * dt);
+  // Right / Left arrow: one frame of the sample grid forward / back.
+  QTest::keyClick(window_.get(), Qt::Key_Right);
+  EXPECT_NEAR(window_->time(), 51 * dt, 1e-9);
+  QTest::keyClick(window_.get(), Qt::Key_Left);
+  QTest::keyClick(window_.get(), Qt::Key_Left);
+  EXPECT_NEAR(window_->time(), 49 * dt, 1e-9);
+  // Space plays: time moves on while the event loop runs; Space again pauses.
+  QTest::keyClick(window_.get(), Qt::Key_Space);
+  QTest::qWait(300);
+  QTest::keyClick(window_.get(), Qt::Key_Space);
+  const double paused_at = window_->time();
+  EXPECT_NE(paused_at, 49 * dt);
+  QTest::qWait(100);
+  EXPECT_DOUBLE_EQ(window_->time(), paused_at);
+  QTest::keyClick(window_.get(), Qt::Key_Home);
+  EXPECT_DOUBLE_EQ(window_->time(), 0.0);
+  QTest::keyClick(window_.get(), Qt::Key_End);
+  EXPECT_DOUBLE_EQ(window_->time(), window_->document().duration());
+}
+
+TEST_F(MainWindowTest, DisplayOptionsChangeThePicture) {
+  window_->seek(kShownTime);
+  const QImage plain = window_->grab_view();
+  SceneOptions options;
+  options.joint_arrows = true;
+  window_->set_scene_options(options);
+  const QImage with_joints = window_->grab_view();
+  EXPECT_NE(plain, with_joints);
+  QDir().mkpath(SALTUS_GUI_CANDIDATE_DIR);
+  with_joints.save(QString(SALTUS_GUI_CANDIDATE_DIR) + "/view_joint_arrows.png");
+  for (CameraPreset preset : {CameraPreset::kSide, CameraPreset::kFront, CameraPreset::kTop}) {
+    window_->set_camera(preset);
+    const QImage view = window_->grab_view();
+    EXPECT_NE(view, with_joints);
+    EXPECT_GT(test::blank_check(view).distinct_colours, 20);
+    view.save(QString(SALTUS_GUI_CANDIDATE_DIR) + "/view_" +
+              QString::fromStdString(camera_preset_name(preset)) + ".png");
+  }
+  options = SceneOptions{};
+  options.ghosts = options.trampoline = options.floor_grid = options.parabola = false;
+  window_->set_scene_options(options);
+  EXPECT_NE(window_->grab_view(), plain);
+}
+
+TEST_F(MainWindowTest, PlotTabsShowJointLoadsAndRotation) {
+  auto* tabs = window_->findChild<QTabWidget*>();
+  ASSERT_NE(tabs, nullptr);
+  ASSERT_EQ(tabs->count(), 3);
+  window_->seek(1.0);
+  // Every tab and every rotation quantity draws something; the pictures are left next to the
+  // build for a person to look at.
+  QDir().mkpath(SALTUS_GUI_CANDIDATE_DIR);
+  for (int tab = 0; tab < tabs->count(); ++tab) {
+    tabs->setCurrentIndex(tab);
+    QApplication::processEvents();
+    auto* combo = tabs->currentWidget()->findChild<QComboBox*>();
+    const int variants = combo ? combo->count() : 1;
+    for (int v = 0; v < variants; ++v) {
+      if (combo) combo->setCurrentIndex(v);
+      QApplication::processEvents();
+      const QImage picture = tabs->currentWidget()->grab().toImage();
+      EXPECT_GT(test::blank_check(picture).distinct_colours, 8) << tab << "/" << v;
+      picture.save(QString(SALTUS_GUI_CANDIDATE_DIR) + QString("/tab%1_%2.png").arg(tab).arg(v));
+    }
+  }
+}
+
+TEST_F(MainWindowTest, DroppedMotionFileOpensAndAModelFileIsUsed) {
+  // Drop the bundled model: it becomes the model of this and later motions.
+  const QString model = QString(SALTUS_EXAMPLES_DIR) + "/../resources/models/zatsiorsky-66kg.json";
+  QMimeData model_data;
+  model_data.setUrls({QUrl::fromLocalFile(QFileInfo(model).absoluteFilePath())});
+  drop(&model_data);
+  EXPECT_EQ(window_->document().model_override(),
+            QFileInfo(model).absoluteFilePath().toStdString());
+
+  // Drop a motion: it opens.
+  saltus::test::TempDir dir;
+  const std::string copy = dir / "dropped.motion.json";
+  std::filesystem::copy_file(test::gui_test_motion_path(), copy);
+  QMimeData motion_data;
+  motion_data.setUrls({QUrl::fromLocalFile(QString::fromStdString(copy))});
+  drop(&motion_data);
+  EXPECT_EQ(QFileInfo(QString::fromStdString(window_->document().file().path)).fileName(),
+            "dropped.motion.json");
+  EXPECT_EQ(window_->document().model_override(),
+            QFileInfo(model).absoluteFilePath().toStdString());
+}
+
+}  // namespace
+}  // namespace saltus::gui

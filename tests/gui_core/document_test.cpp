@@ -1,0 +1,116 @@
+// The GUI's document: loading, exact samples at any time, stages, glyph scales, saving.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+#include "core/document.h"
+#include "gui_core/test_motion.h"
+#include "saltus/io/input_error.h"
+#include "saltus/motion/interpolate.h"
+
+namespace saltus::gui {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(Document, LoadsAndEvaluatesTheMotion) {
+  Document d;
+  EXPECT_FALSE(d.loaded());
+  d.load(test::gui_test_motion_path(), "", 101);
+  ASSERT_TRUE(d.loaded());
+  EXPECT_FALSE(d.has_optimization());
+  EXPECT_EQ(d.frame_count(Stage::kBefore), 101);
+  EXPECT_EQ(d.available(Stage::kAfter), Stage::kBefore);
+  EXPECT_DOUBLE_EQ(d.duration(), d.file().motion.flight_time());
+  EXPECT_EQ(d.rotation(Stage::kBefore).size(), 101u);
+}
+
+TEST(Document, SampleAtAGridTimeEqualsTheEvaluatedSample) {
+  Document d;
+  d.load(test::gui_test_motion_path(), "", 51);
+  const SampleRecord& grid = d.evaluation(Stage::kBefore).samples[17];
+  const SampleRecord exact = d.sample_at(Stage::kBefore, grid.time);
+  EXPECT_LT((exact.com - grid.com).norm(), 1e-12);
+  EXPECT_LT((exact.root_wrench - grid.root_wrench).norm(), 1e-9);
+  for (std::size_t i = 0; i < grid.segment_position.size(); ++i)
+    EXPECT_LT((exact.segment_position[i] - grid.segment_position[i]).norm(), 1e-12);
+  // Interpolation puts the CoM on the parabola (paper §5.3) at any time, up to the least-squares
+  // fit of the root translation spline (millimetres).
+  const double t = 0.7777;
+  EXPECT_LT((d.sample_at(Stage::kBefore, t).com - ballistic_com(d.file().motion.takeoff, t)).norm(),
+            0.01);
+  // Out-of-range times are clamped to the flight.
+  EXPECT_DOUBLE_EQ(d.sample_at(Stage::kBefore, 99.0).time, d.duration());
+}
+
+TEST(Document, RotationAtInterpolatesCountsAndIsExactOtherwise) {
+  Document d;
+  d.load(test::gui_test_motion_path(), "", 51);
+  const auto& series = d.rotation(Stage::kBefore);
+  const double t = 0.5 * (series[10].time + series[11].time);
+  const RotationSample r = d.rotation_at(Stage::kBefore, t);
+  EXPECT_NEAR(r.somersaults, 0.5 * (series[10].somersaults + series[11].somersaults), 1e-12);
+  const RotationSample at_grid = d.rotation_at(Stage::kBefore, series[10].time);
+  EXPECT_NEAR(at_grid.somersault_inertia, series[10].somersault_inertia, 1e-9);
+  EXPECT_NEAR(at_grid.somersaults, series[10].somersaults, 1e-12);
+  // M1 is a backward somersault: about one turn backwards by the end.
+  EXPECT_LT(series.back().somersaults, -0.7);
+  EXPECT_GT(series.back().somersaults, -1.3);
+}
+
+TEST(Document, GlyphScalesCoverTheTypicalMagnitudes) {
+  Document d;
+  d.load(test::gui_test_motion_path(), "", 51);
+  std::vector<double> forces;
+  for (const SampleRecord& s : d.evaluation(Stage::kBefore).samples)
+    forces.push_back(s.residual.head<3>().norm());
+  std::sort(forces.begin(), forces.end());
+  const GlyphScale force = d.residual_force_scale(1.0);
+  // Full scale covers 90 % of the samples, and is at most one 1-2-5 step above them.
+  EXPECT_GE(force.full_scale(), forces[45]);
+  EXPECT_LE(force.full_scale(), 2.5 * forces[45]);
+  EXPECT_GT(d.residual_moment_scale(1.0).full_scale(), 0.0);
+  EXPECT_GT(d.joint_force_scale(1.0).full_scale(), 0.0);
+}
+
+TEST(Document, KeyframePosesAreAtTheKeyframeTimes) {
+  Document d;
+  d.load(test::gui_test_motion_path(), "", 51);
+  const auto poses = d.keyframe_poses(Stage::kBefore);
+  ASSERT_EQ(poses.size(), d.file().motion.keyframes.size());
+  for (std::size_t i = 0; i < poses.size(); ++i)
+    EXPECT_DOUBLE_EQ(poses[i].time, d.file().motion.keyframes[i].time);
+}
+
+TEST(Document, BadFileThrowsInputErrorAndKeepsTheOldMotion) {
+  Document d;
+  d.load(test::gui_test_motion_path(), "", 21);
+  const fs::path bad = fs::temp_directory_path() / "saltus_gui_bad.motion.json";
+  {
+    std::ofstream out(bad);
+    out << "{ \"format\": \"saltus-motion/1\", \"model\": \"zatsiorsky-66kg\", \"keyframes\": 3 }";
+  }
+  EXPECT_THROW(d.load(bad.string()), InputError);
+  EXPECT_TRUE(d.loaded());
+  EXPECT_EQ(d.frame_count(Stage::kBefore), 21);
+  EXPECT_THROW(d.load("/nonexistent/x.motion.json"), InputError);
+  fs::remove(bad);
+}
+
+TEST(Document, SavesAnEvaluationLikeTheCli) {
+  Document d;
+  d.load(test::gui_test_motion_path(), "", 21);
+  const fs::path out = fs::temp_directory_path() / "saltus_gui_document_save";
+  fs::remove_all(out);
+  d.save_result(out.string());
+  EXPECT_TRUE(fs::exists(out / "result.json"));
+  EXPECT_TRUE(fs::exists(out / "trajectory.csv"));
+  EXPECT_TRUE(fs::exists(out / "model.json"));
+  fs::remove_all(out);
+}
+
+}  // namespace
+}  // namespace saltus::gui
