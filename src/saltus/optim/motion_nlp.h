@@ -107,6 +107,8 @@ class MotionNlp : public Nlp {
   /// Adds weight·JᵀJ of a local Jacobian to the Hessian band.
   template <int Rows>
   void add_gauss_newton(const LocalJacobian<Rows>& jac, double weight, double* values) const;
+  /// factor · Σ_s w_s J_sᵀJ_s of the root-wrench samples, span by span.
+  void add_wrench_gauss_newton(double factor, double* values);
   /// Jacobian of B(t_i) − B̄(t_i) (the target's motion along the parabola included).
   LocalJacobian<3> translation_residual_jacobian(int keyframe) const;
   /// The proximity term at x; adds its gradient and Hessian diagonal when given.
@@ -144,6 +146,7 @@ class MotionNlp : public Nlp {
        have_keyframes_ = false;
   std::vector<Vector6d> wrench_;
   std::vector<LocalJacobian<6>> wrench_jacobian_;
+  Eigen::MatrixXd stacked_rows_, span_block_;  ///< add_wrench_gauss_newton's workspace
   std::vector<LocalJacobian<3>> translation_jacobian_;  ///< [keyframe]
   std::vector<LocalJacobian<4>> rotation_jacobian_;     ///< [keyframe * segments + segment]
   std::vector<double> keyframe_times_;
