@@ -37,12 +37,12 @@ inline constexpr double kKeyframeBoundMargin = 2e-5;
 
 struct MotionNlpOptions {
   Formulation formulation = Formulation::kRelaxed;
-  double epsilon = 100.0;        ///< strict: bound on each |F_i(t_s)|, N or N·m
-  bool optimize_timing = true;   ///< interior keyframe times are variables
-  int knots_per_interval = 1;    ///< spline refinement K (1 = the paper's resolution)
+  double epsilon = 100.0;         ///< strict: bound on each |F_i(t_s)|, N or N·m
+  bool optimize_timing = true;    ///< interior keyframe times are variables
+  int knots_per_interval = 1;     ///< spline refinement K (1 = the paper's resolution)
   int samples = kDefaultSamples;  ///< quadrature grid on [0, T], ends included
-  double min_time_gap = 0.05;    ///< s, eq. (4)'s gap (capped at half the shortest interval)
-  double max_time_shift = 0.25;  ///< s, how far a keyframe time may move from the given one
+  double min_time_gap = 0.05;     ///< s, eq. (4)'s gap (capped at half the shortest interval)
+  double max_time_shift = 0.25;   ///< s, how far a keyframe time may move from the given one
   /// Levenberg-Marquardt damping of the Gauss-Newton Hessian: c·J(x)·I is added (Yamashita &
   /// Fukushima 2001: damping ∝ ‖F‖² keeps fast local convergence at a zero residual). Less
   /// damping (or damping adapted to progress) lets Ipopt take steps that break the keyframe
@@ -146,7 +146,7 @@ class MotionNlp : public Nlp {
        have_keyframes_ = false;
   std::vector<Vector6d> wrench_;
   std::vector<LocalJacobian<6>> wrench_jacobian_;
-  Eigen::MatrixXd stacked_rows_, span_block_;  ///< add_wrench_gauss_newton's workspace
+  Eigen::MatrixXd stacked_rows_, span_block_;           ///< add_wrench_gauss_newton's workspace
   std::vector<LocalJacobian<3>> translation_jacobian_;  ///< [keyframe]
   std::vector<LocalJacobian<4>> rotation_jacobian_;     ///< [keyframe * segments + segment]
   std::vector<double> keyframe_times_;
