@@ -32,8 +32,10 @@ namespace saltus {
 enum class Formulation { kRelaxed, kStrict };
 
 /// How far inside the user's keyframe tolerances the NLP's bounds lie (m for translation, and
-/// squared quaternion distance): 2× the solver's acceptable constraint violation.
-inline constexpr double kKeyframeBoundMargin = 2e-5;
+/// squared quaternion distance): 2× the solver's acceptable constraint violation. For the
+/// paper's ε2 = 0.05 the optimiser works to ‖Q − Q̄‖ <= 0.0494 (1.2 % tighter), for ε1 = 0.25 m
+/// to 0.24994 m.
+inline constexpr double kKeyframeBoundMargin = 6e-5;
 
 struct MotionNlpOptions {
   Formulation formulation = Formulation::kRelaxed;
