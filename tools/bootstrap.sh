@@ -41,6 +41,12 @@ if [ "$mode" = demo ]; then
   build/release/bin/saltus evaluate "$motion" --out out/M1-evaluate
   echo "== saltus simulate $motion"
   build/release/bin/saltus simulate "$motion" --out out/M1-simulate
+  # The main job: every bundled skill optimised (relaxed model, the paper's resolution).
+  for motion in examples/motions/*.motion.json; do
+    name="$(basename "$motion" .motion.json)"
+    echo "== saltus optimize $motion"
+    build/release/bin/saltus optimize "$motion" --out "out/$name" 2>/dev/null
+  done
   exit 0
 fi
 
