@@ -13,7 +13,7 @@ cd "$root"
 
 # Debian packages the build and the tests need (see README "Dependencies").
 packages=(build-essential cmake pkg-config clang-format
-          libeigen3-dev coinor-libipopt-dev nlohmann-json3-dev libcli11-dev
+          libeigen3-dev coinor-libipopt-dev libopenblas0-serial nlohmann-json3-dev libcli11-dev
           libgtest-dev libbenchmark-dev)
 
 missing=()
