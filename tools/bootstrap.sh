@@ -13,7 +13,7 @@ cd "$root"
 
 # Debian packages the build and the tests need (see README "Dependencies").
 packages=(build-essential cmake pkg-config clang-format
-          libeigen3-dev coinor-libipopt-dev nlohmann-json3-dev libcli11-dev
+          libeigen3-dev coinor-libipopt-dev libopenblas0-serial nlohmann-json3-dev libcli11-dev
           libgtest-dev libbenchmark-dev
           libvtk9-qt-dev libvtk9-dev qtbase5-dev xvfb xauth libgl1-mesa-dri)
 
@@ -42,6 +42,12 @@ if [ "$mode" = demo ]; then
   build/release/bin/saltus evaluate "$motion" --out out/M1-evaluate
   echo "== saltus simulate $motion"
   build/release/bin/saltus simulate "$motion" --out out/M1-simulate
+  # The main job: every bundled skill optimised (relaxed model, the paper's resolution).
+  for motion in examples/motions/*.motion.json; do
+    name="$(basename "$motion" .motion.json)"
+    echo "== saltus optimize $motion"
+    build/release/bin/saltus optimize "$motion" --out "out/$name" 2>/dev/null
+  done
   exit 0
 fi
 

@@ -1,6 +1,7 @@
 #include "saltus/io/output_folder.h"
 
 #include <filesystem>
+#include <fstream>
 #include <random>
 #include <stdexcept>
 
@@ -60,6 +61,18 @@ void OutputFolder::commit() {
     std::error_code ec;
     fs::remove_all(old, ec);
   }
+}
+
+}  // namespace saltus
+
+namespace saltus {
+
+void write_text(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw std::runtime_error(path + ": cannot open for writing");
+  out << text;
+  out.flush();
+  if (!out) throw std::runtime_error(path + ": writing failed");
 }
 
 }  // namespace saltus

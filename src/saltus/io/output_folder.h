@@ -33,3 +33,11 @@ class OutputFolder {
 };
 
 }  // namespace saltus
+
+namespace saltus {
+
+/// Writes `text` to `path` (inside an OutputFolder); throws std::runtime_error naming the file
+/// if it cannot be written completely.
+void write_text(const std::string& path, const std::string& text);
+
+}  // namespace saltus

@@ -10,6 +10,11 @@ namespace fs = std::filesystem;
 std::vector<std::string> resource_directories() {
   std::vector<std::string> dirs;
   if (const char* env = std::getenv("SALTUS_RESOURCE_DIR"); env && *env) dirs.emplace_back(env);
+  // Installed anywhere (cmake --install --prefix P): P/bin/saltus finds P/share/saltus. In the
+  // build tree that folder does not exist and the source tree's resources are used.
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) dirs.push_back((exe.parent_path().parent_path() / "share" / "saltus").string());
   dirs.emplace_back(SALTUS_SOURCE_RESOURCE_DIR);
   dirs.emplace_back(SALTUS_INSTALL_RESOURCE_DIR);
   return dirs;

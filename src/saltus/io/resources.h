@@ -7,8 +7,9 @@
 
 namespace saltus {
 
-/// Folders searched for resources, first match wins: $SALTUS_RESOURCE_DIR if set, the source
-/// tree's resources/ (build-tree runs), the install prefix's share/saltus.
+/// Folders searched for resources, first match wins: $SALTUS_RESOURCE_DIR if set, share/saltus
+/// beside the running executable's bin/ (an install under any prefix), the source tree's
+/// resources/ (build-tree runs), the configured install prefix's share/saltus.
 std::vector<std::string> resource_directories();
 
 /// Resolves a motion file's "model" field: a path relative to the motion file's folder if such a

@@ -25,7 +25,7 @@ struct SolverOptions {
   int acceptable_iterations = 3;
   /// Absolute; the NLP keeps its keyframe bounds this much inside the user's tolerances, so an
   /// acceptable point still meets them exactly (see MotionNlp::bounds).
-  double acceptable_constraint_violation = 1e-5;
+  double acceptable_constraint_violation = 3e-5;
   bool verbose = false;  ///< Ipopt's own iteration log on stdout
   /// Run Ipopt's first-order derivative checker at the starting point and write its report
   /// (and the iteration log) to this file; empty: off.

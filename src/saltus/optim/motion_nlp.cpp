@@ -448,21 +448,80 @@ int MotionNlp::hessian_index(int row, int column) const {
 template <int Rows>
 void MotionNlp::add_gauss_newton(const LocalJacobian<Rows>& jac, double weight,
                                  double* values) const {
-  // weight·JᵀJ into the lower band: the control block is contiguous, times come after it.
+  // weight·JᵀJ into the lower band. A keyframe quantity depends on one curve only (12 of the
+  // block's columns), so the product runs over the non-zero columns alone.
   const int first = jac.first_control_variable;
   const int width = static_cast<int>(jac.control.cols());
-  const Eigen::MatrixXd block = weight * jac.control.transpose() * jac.control;
-  for (int a = 0; a < width; ++a)
-    Eigen::Map<Eigen::RowVectorXd>(values + hessian_index(first + a, first), a + 1) +=
-        block.row(a).head(a + 1);
+  std::vector<int> used;
+  for (int c = 0; c < width; ++c)
+    if (!jac.control.col(c).isZero(0.0)) used.push_back(c);
+  const int count = static_cast<int>(used.size());
+  for (int a = 0; a < count; ++a) {
+    const int ca = used[a];
+    for (int b = 0; b <= a; ++b) {
+      const int cb = used[b];
+      values[hessian_index(first + ca, first + cb)] +=
+          weight * jac.control.col(ca).dot(jac.control.col(cb));
+    }
+  }
   for (int p = 0; p < jac.time_count; ++p) {
     const int tv = jac.time_variable[p];
-    Eigen::Map<Eigen::RowVectorXd>(values + hessian_index(tv, first), width) +=
-        weight * jac.time.col(p).transpose() * jac.control;
+    for (int a = 0; a < count; ++a)
+      values[hessian_index(tv, first + used[a])] +=
+          weight * jac.time.col(p).dot(jac.control.col(used[a]));
     for (int q = 0; q < jac.time_count; ++q)
       if (jac.time_variable[q] <= tv)
         values[hessian_index(tv, jac.time_variable[q])] +=
             weight * jac.time.col(p).dot(jac.time.col(q));
+  }
+}
+
+void MotionNlp::add_wrench_gauss_newton(double factor, double* values) {
+  // Samples on one knot span share their columns (the span's control block and time slots), so
+  // Σ w_s J_sᵀJ_s over the span is one symmetric rank-k update of the stacked, weighted rows
+  // and one scatter into the band — instead of a dense product and a scatter per sample, which
+  // made the Hessian the most expensive part of an iteration.
+  const std::size_t n = sample_times_.size();
+  std::size_t begin = 0;
+  while (begin < n) {
+    const LocalJacobian<6>& first = wrench_jacobian_[begin];
+    const int width = static_cast<int>(first.control.cols());
+    const int times = first.time_count;
+    std::size_t end = begin + 1;
+    while (end < n &&
+           wrench_jacobian_[end].first_control_variable == first.first_control_variable &&
+           wrench_jacobian_[end].time_count == times &&
+           wrench_jacobian_[end].time_variable == first.time_variable)
+      ++end;
+    stacked_rows_.resize(6 * static_cast<int>(end - begin), width + times);
+    for (std::size_t s = begin; s < end; ++s) {
+      const double root_weight = std::sqrt(factor * sample_weights_[s]);
+      const int row = 6 * static_cast<int>(s - begin);
+      stacked_rows_.block(row, 0, 6, width) = root_weight * wrench_jacobian_[s].control;
+      stacked_rows_.block(row, width, 6, times) =
+          root_weight * wrench_jacobian_[s].time.leftCols(times);
+    }
+    span_block_.setZero(width + times, width + times);
+    span_block_.selfadjointView<Eigen::Lower>().rankUpdate(stacked_rows_.transpose());
+    // Scatter the lower triangle: controls are contiguous from `first_control_variable`, time
+    // slot p is variable time_variable[p] (beyond every control).
+    const int base = first.first_control_variable;
+    for (int a = 0; a < width; ++a)
+      Eigen::Map<Eigen::RowVectorXd>(values + hessian_index(base + a, base), a + 1) +=
+          span_block_.row(a).head(a + 1);
+    for (int p = 0; p < times; ++p) {
+      const int tv = first.time_variable[p];
+      Eigen::Map<Eigen::RowVectorXd>(values + hessian_index(tv, base), width) +=
+          span_block_.row(width + p).head(width);
+      for (int q = 0; q < times; ++q) {
+        const int other = first.time_variable[q];
+        // Row width + max(p, q) holds the pair in the lower triangle.
+        if (other <= tv)
+          values[hessian_index(tv, other)] +=
+              span_block_(width + std::max(p, q), width + std::min(p, q));
+      }
+    }
+    begin = end;
   }
 }
 
@@ -490,8 +549,7 @@ void MotionNlp::hessian_values(const double* x, double objective_factor, const d
   if (options_.formulation == Formulation::kRelaxed) {
     // Gauss-Newton of J = Σ w_s ‖F_s‖², damped (Levenberg-Marquardt, see MotionNlpOptions).
     compute_wrench_jacobians();
-    for (std::size_t s = 0; s < sample_times_.size(); ++s)
-      add_gauss_newton(wrench_jacobian_[s], 2.0 * objective_factor * sample_weights_[s], values);
+    add_wrench_gauss_newton(2.0 * objective_factor, values);
     const double damping = objective_factor * options_.damping * force_objective(x);
     for (int v = 0; v < layout_.size(); ++v)
       values[hessian_index(v, v)] += damping;
