@@ -126,8 +126,8 @@ struct OptimizeArgs {
   double epsilon = 100.0;
   bool no_timing = false;
   int max_iterations = 100;
-  double tolerance = 1e-8;
-  double objective_change_tolerance = 1e-3;
+  double tolerance = saltus::SolverOptions{}.tolerance;
+  double objective_change_tolerance = saltus::SolverOptions{}.objective_change_tolerance;
   double max_time_shift = 0.25;
   double regularization = 1.0;
 };

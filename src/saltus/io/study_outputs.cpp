@@ -123,6 +123,18 @@ std::string table1_markdown(const std::vector<Table1Row>& rows) {
   return out.str();
 }
 
+/// Figs. 4 and 5: M1's and M7's root force before and after, where those skills were run.
+std::string root_force_figures(const std::vector<Table1Row>& rows) {
+  std::ostringstream out;
+  for (const Table1Row& r : rows) {
+    if (r.label != "M1" && r.label != "M7") continue;
+    out << "![" << r.label << " root force before and after](figures/" << r.label
+        << "_root_force.png)\n\nThe curves are in `" << r.label << "/trajectory_before.csv` and `"
+        << r.label << "/trajectory_after.csv` (columns root_fx … root_mz).\n\n";
+  }
+  return out.str();
+}
+
 }  // namespace
 
 nlohmann::json write_convergence_outputs(const std::string& out_dir,
@@ -251,7 +263,7 @@ nlohmann::json write_paper_report(const std::string& out_dir, const PaperReportO
       dive_md << "| " << i + 1 << " | " << format("%.3f", r.before.keyframe_times[i]) << " | "
               << format("%.3f", r.after.keyframe_times[i]) << " |\n";
     dive_md << "\n![Keyframe times before and after (Fig. 9)](figures/" << label
-            << "-keyframe-times.png)\n\n";
+            << "_keyframe_times.png)\n\n";
   }
 
   // Mass study on the hardest skill (§6.1, Fig. 8).
@@ -264,7 +276,7 @@ nlohmann::json write_paper_report(const std::string& out_dir, const PaperReportO
     const MassStudyResult study = run_mass_study(m7->file, mass);
     write_mass_outputs(folder.file("mass"), m7->file, study, mass);
     mass_md = mass_study_markdown(study) +
-              "\n![Joint loads, Table 2 against thigh +50 % (Fig. 8)](figures/mass-loads.png)\n";
+              "\n![Joint loads, Table 2 against thigh +50 % (Fig. 8)](figures/mass_loads.png)\n";
     log("mass study done");
   }
 
@@ -301,10 +313,7 @@ nlohmann::json write_paper_report(const std::string& out_dir, const PaperReportO
      << (options.quick ? " **Quick run** (reduced convergence study, no K = 3 runs)." : "")
      << "\n\n## Table 1\n\n"
      << table1_markdown(rows) << "\n## Root force before and after (Figs. 4 and 5)\n\n"
-     << "![M1 root force before and after](figures/M1-root-force.png)\n\n"
-     << "![M7 root force before and after](figures/M7-root-force.png)\n\n"
-     << "The curves are in `M1/trajectory_before.csv` and `M1/trajectory_after.csv` (columns "
-        "root_fx … root_mz), likewise for M7.\n\n"
+     << root_force_figures(rows)
      << "## Mass parameters (§6.1, Fig. 8): M7 with Table 2 against thigh mass and inertia "
         "+50 %\n\n"
      << mass_md << "\n## Designing a 5 m dive by optimising keyframe times (§6.2, Fig. 9)\n\n"

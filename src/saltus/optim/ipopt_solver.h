@@ -15,7 +15,8 @@ namespace saltus {
 
 struct SolverOptions {
   int max_iterations = 100;
-  double tolerance = 1e-6;  ///< Ipopt's tol: the NLP error for an "optimal" exit
+  double tolerance =
+      1e-8;  ///< Ipopt's tol: the NLP error for an "optimal" exit (CLI and GUI default)
   /// "Acceptable" exit (reported as solved): for `acceptable_iterations` consecutive iterations the
   /// objective changes by less than this fraction of max(1, |f|) while the constraints are
   /// violated by at most `acceptable_constraint_violation`. A sum of squared residuals that
