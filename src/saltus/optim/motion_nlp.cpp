@@ -254,7 +254,7 @@ void MotionNlp::load(const double* x) {
   if (have_x_ && std::memcmp(x, x_.data(), n * sizeof(double)) == 0) return;
   x_.assign(x, x + n);
   have_x_ = true;
-  have_wrenches_ = have_wrench_jacobians_ = have_keyframes_ = false;
+  have_wrenches_ = have_wrench_jacobians_ = have_keyframes_ = have_keyframe_values_ = false;
   derivatives_->set_variables(x);
 }
 
@@ -272,6 +272,20 @@ void MotionNlp::compute_wrench_jacobians() {
     wrench_[s] = wrench_jacobian_[s].value;
   }
   have_wrenches_ = have_wrench_jacobians_ = true;
+}
+
+void MotionNlp::compute_keyframe_values() {
+  // Line-search trial points need only the constraint values: plain double evaluation, not the
+  // AD of every keyframe quantity (the derivatives follow once Ipopt accepts the point).
+  if (have_keyframe_values_ || have_keyframes_) return;
+  keyframe_times_ = keyframe_times_from(layout_, reference_, x_.data());
+  for (int i = 0; i < layout_.keyframe_count; ++i) {
+    translation_jacobian_[i].value = derivatives_->keyframe_translation_value(i);
+    for (int k = 0; k < layout_.segment_count; ++k)
+      rotation_jacobian_[i * layout_.segment_count + k].value =
+          derivatives_->keyframe_rotation_value(i, k);
+  }
+  have_keyframe_values_ = true;
 }
 
 void MotionNlp::compute_keyframes() {
@@ -303,7 +317,7 @@ double MotionNlp::objective(const double* x) {
   if (options_.formulation == Formulation::kRelaxed)
     return force_objective(x) + proximity_term(x, nullptr, nullptr);
   load(x);
-  compute_keyframes();
+  compute_keyframe_values();
   double f = 0.0;
   for (int i = 0; i < layout_.keyframe_count; ++i) {
     f += (translation_jacobian_[i].value - root_target(i, keyframe_times_[i])).squaredNorm();
@@ -358,7 +372,7 @@ void MotionNlp::gradient(const double* x, double* gradient) {
 
 void MotionNlp::constraints(const double* x, double* g) {
   load(x);
-  compute_keyframes();
+  compute_keyframe_values();
   int row = 0;
   for (int i = 0; i < layout_.keyframe_count; ++i) {
     const Eigen::Vector3d r = translation_jacobian_[i].value - root_target(i, keyframe_times_[i]);

@@ -103,7 +103,8 @@ class MotionNlp : public Nlp {
   void load(const double* x);
   void compute_wrenches();
   void compute_wrench_jacobians();
-  void compute_keyframes();
+  void compute_keyframes();        ///< values and derivatives of every keyframe quantity
+  void compute_keyframe_values();  ///< values only
   Eigen::Vector3d root_target(int keyframe, double time) const;
   int hessian_index(int row, int column) const;
   /// Adds weight·JᵀJ of a local Jacobian to the Hessian band.
@@ -145,7 +146,7 @@ class MotionNlp : public Nlp {
   std::unique_ptr<RootWrenchDerivatives> derivatives_;
   std::vector<double> x_;
   bool have_x_ = false, have_wrenches_ = false, have_wrench_jacobians_ = false,
-       have_keyframes_ = false;
+       have_keyframes_ = false, have_keyframe_values_ = false;
   std::vector<Vector6d> wrench_;
   std::vector<LocalJacobian<6>> wrench_jacobian_;
   Eigen::MatrixXd stacked_rows_, span_block_;           ///< add_wrench_gauss_newton's workspace

@@ -298,6 +298,27 @@ void RootWrenchDerivatives::prepare_keyframe(int keyframe) {
   w.basis_keyframe = keyframe;
 }
 
+Eigen::Vector3d RootWrenchDerivatives::keyframe_translation_value(int keyframe) const {
+  const int span = layout_.keyframe_span(keyframe);
+  const int c0 = span - 3;
+  const SpanBasis<double> basis =
+      cubic_basis_on_span(knots_, span, knots_[3 + keyframe * layout_.knots_per_interval]);
+  return evaluate_vector_span(root_control_[c0], root_control_[c0 + 1], root_control_[c0 + 2],
+                              root_control_[c0 + 3], basis)
+      .position;
+}
+
+Eigen::Vector4d RootWrenchDerivatives::keyframe_rotation_value(int keyframe, int segment) const {
+  const int span = layout_.keyframe_span(keyframe);
+  const int c0 = span - 3;
+  const SpanBasis<double> basis =
+      cubic_basis_on_span(knots_, span, knots_[3 + keyframe * layout_.knots_per_interval]);
+  const auto& c = joint_control_[segment];
+  const Eigen::Quaterniond q =
+      evaluate_quaternion_span(c[c0], c[c0 + 1], c[c0 + 2], c[c0 + 3], basis).q;
+  return {q.w(), q.x(), q.y(), q.z()};
+}
+
 void RootWrenchDerivatives::keyframe_translation(int keyframe, LocalJacobian<3>& out) {
   Workspace& w = *work_;
   prepare_keyframe(keyframe);

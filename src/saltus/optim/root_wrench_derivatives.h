@@ -56,6 +56,12 @@ class RootWrenchDerivatives {
   /// Root wrench at t and its derivatives.
   void wrench_jacobian(double t, LocalJacobian<6>& out);
 
+  /// Values only, in plain double (what the constraints need at a line-search trial point):
+  /// the root translation and segment `segment`'s rotation (w, x, y, z) at keyframe i's time.
+  /// Equal to the `value` members of the derivative versions below.
+  Eigen::Vector3d keyframe_translation_value(int keyframe) const;
+  Eigen::Vector4d keyframe_rotation_value(int keyframe, int segment) const;
+
   /// Root translation at keyframe i's (current) time and its derivatives.
   void keyframe_translation(int keyframe, LocalJacobian<3>& out);
   /// Segment `segment`'s rotation at keyframe i's time as 4 coefficients (w, x, y, z) and their
