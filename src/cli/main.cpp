@@ -125,7 +125,7 @@ struct OptimizeArgs {
   std::string formulation = "relaxed";
   double epsilon = 100.0;
   bool no_timing = false;
-  int max_iterations = 100;
+  int max_iterations = saltus::SolverOptions{}.max_iterations;
   double tolerance = saltus::SolverOptions{}.tolerance;
   double objective_change_tolerance = saltus::SolverOptions{}.objective_change_tolerance;
   double max_time_shift = 0.25;
@@ -230,7 +230,7 @@ int run_optimize(const OptimizeArgs& args) {
 struct StudyArgs {
   std::string out_dir;
   int samples = saltus::kDefaultSamples;
-  int max_iterations = 100;
+  int max_iterations = saltus::SolverOptions{}.max_iterations;
   bool quiet = false;
 };
 

@@ -12,6 +12,16 @@
 
 namespace saltus {
 
+const PaperTableRow kPaperTable1[7] = {
+    {"M1", 5, 264, 89, 3.88e3, 5.27e1, 25.4, 2.96},
+    {"M2", 7, 350, 125, 8.66e4, 1.82e3, 120, 17.4},
+    {"M3", 8, 393, 143, 6.40e4, 4.57e3, 103, 27.5},
+    {"M4", 9, 436, 161, 1.44e5, 1.27e4, 154, 46.0},
+    {"M5", 11, 522, 197, 4.48e5, 1.21e4, 273, 44.9},
+    {"M6", 11, 522, 197, 1.61e5, 5.05e3, 163, 29.0},
+    {"M7", 13, 595, 233, 4.15e5, 4.08e4, 262, 82.4},
+};
+
 namespace {
 
 std::string format(const char* pattern, double value) {
@@ -34,28 +44,6 @@ nlohmann::json outcome_json(const StudyOutcome& o) {
           {"seconds", o.seconds},
           {"avg_force_before_N", o.avg_force_before},
           {"avg_force_after_N", o.avg_force_after}};
-}
-
-/// The paper's Table 1 (Wei, Xia, Wang 2008), per skill.
-struct PaperRow {
-  const char* label;
-  int keyframes, variables, constraints;
-  double objective_before, objective_after, force_before, force_after;
-};
-constexpr PaperRow kPaperTable1[] = {
-    {"M1", 5, 264, 89, 3.88e3, 5.27e1, 25.4, 2.96},
-    {"M2", 7, 350, 125, 8.66e4, 1.82e3, 120, 17.4},
-    {"M3", 8, 393, 143, 6.40e4, 4.57e3, 103, 27.5},
-    {"M4", 9, 436, 161, 1.44e5, 1.27e4, 154, 46.0},
-    {"M5", 11, 522, 197, 4.48e5, 1.21e4, 273, 44.9},
-    {"M6", 11, 522, 197, 1.61e5, 5.05e3, 163, 29.0},
-    {"M7", 13, 595, 233, 4.15e5, 4.08e4, 262, 82.4},
-};
-
-const PaperRow* paper_row(const std::string& label) {
-  for (const PaperRow& row : kPaperTable1)
-    if (label == row.label) return &row;
-  return nullptr;
 }
 
 /// "M3-tucked-double-back.motion.json" -> "M3"; other files: the name without ".motion.json".
@@ -105,7 +93,7 @@ std::string table1_markdown(const std::vector<Table1Row>& rows) {
   out << "\nThe paper's Table 1 (SQP, at most 80 iterations, 78 minutes per motion on average):\n\n"
          "| skill | keyframes | variables | constraints | J before | J after | avg root force "
          "before (N) | avg root force after (N) |\n|---|---|---|---|---|---|---|---|\n";
-  for (const PaperRow& p : kPaperTable1)
+  for (const PaperTableRow& p : kPaperTable1)
     out << "| " << p.label << " | " << p.keyframes << " | " << p.variables << " | " << p.constraints
         << " | " << format("%.3g", p.objective_before) << " | " << format("%.3g", p.objective_after)
         << " | " << format("%.3g", p.force_before) << " | " << format("%.3g", p.force_after)
@@ -113,7 +101,7 @@ std::string table1_markdown(const std::vector<Table1Row>& rows) {
   out << "\nAverage root force after optimisation, ours (K = 1, the paper's resolution) against "
          "the paper's:\n\n| skill | ours (N) | paper (N) | ours below paper |\n|---|---|---|---|\n";
   for (const Table1Row& r : rows) {
-    const PaperRow* p = paper_row(r.label);
+    const PaperTableRow* p = paper_table1(r.label);
     if (!p) continue;
     const double ours = r.paper_resolution.after.metrics.avg_root_force;
     out << "| " << r.label << " | " << format("%.3g", ours) << " | "
@@ -136,6 +124,12 @@ std::string root_force_figures(const std::vector<Table1Row>& rows) {
 }
 
 }  // namespace
+
+const PaperTableRow* paper_table1(const std::string& skill) {
+  for (const PaperTableRow& row : kPaperTable1)
+    if (skill == row.label) return &row;
+  return nullptr;
+}
 
 nlohmann::json write_convergence_outputs(const std::string& out_dir,
                                          const std::vector<StudyOutcome>& outcomes,
@@ -203,7 +197,7 @@ nlohmann::json write_paper_report(const std::string& out_dir, const PaperReportO
     const std::string name = entry.path().filename().string();
     if (name.size() <= 12 || name.substr(name.size() - 12) != ".motion.json") continue;
     const std::string label = motion_label(entry.path());
-    if (paper_row(label))
+    if (paper_table1(label))
       skills.emplace_back(label, entry.path());
     else if (name.rfind("dive", 0) == 0)
       dives.emplace_back(label, entry.path());
@@ -342,7 +336,8 @@ nlohmann::json write_paper_report(const std::string& out_dir, const PaperReportO
                           {"avg_force_after_N", o.after.metrics.avg_root_force}};
     row["avg_force_after_K3_N"] =
         r.refined_run ? nlohmann::json(r.refined_force_after) : nlohmann::json(nullptr);
-    if (const PaperRow* p = paper_row(r.label)) row["paper_avg_force_after_N"] = p->force_after;
+    if (const PaperTableRow* p = paper_table1(r.label))
+      row["paper_avg_force_after_N"] = p->force_after;
     result["table1"].push_back(row);
   }
   int solved = 0;

@@ -21,6 +21,19 @@ nlohmann::json write_convergence_outputs(const std::string& out_dir,
 nlohmann::json write_mass_outputs(const std::string& out_dir, const MotionFile& file,
                                   const MassStudyResult& study, const MassStudyOptions& options);
 
+/// A row of the paper's Table 1 (Wei, Xia & Wang 2008): keyframes, problem size, objective and
+/// average root force before and after their optimisation.
+struct PaperTableRow {
+  const char* label;  ///< "M1" ... "M7"
+  int keyframes, variables, constraints;
+  double objective_before, objective_after;
+  double force_before, force_after;  ///< N
+};
+extern const PaperTableRow kPaperTable1[7];
+
+/// The paper's row for a skill label ("M3"), nullptr for any other motion.
+const PaperTableRow* paper_table1(const std::string& skill);
+
 struct PaperReportOptions {
   /// Folder holding M1-…M7-….motion.json and dive-….motion.json (examples/motions).
   std::string motions_dir;
