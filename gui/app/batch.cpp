@@ -21,13 +21,20 @@ constexpr int kExitFailure = 1;
 constexpr int kExitBadInput = 2;
 constexpr int kFigureWidth = 1200;
 constexpr int kFigureHeight = 600;
+constexpr int kPanelWidth = 900;  ///< one chart of a grid figure (mass study loads)
+constexpr int kPanelHeight = 480;
 constexpr int kOptimizationTimeoutMs = 6 * 60 * 60 * 1000;
 
 int export_figures(const CommandLine& c) {
   std::vector<ResultFolder> folders;
+  std::vector<MassStudyFolder> mass_folders;
   try {
-    for (const std::string& dir : c.result_dirs)
-      folders.push_back(read_result_folder(dir));
+    for (const std::string& dir : c.result_dirs) {
+      if (is_mass_study_folder(dir))
+        mass_folders.push_back(read_mass_study_folder(dir));
+      else
+        folders.push_back(read_result_folder(dir));
+    }
   } catch (const InputError& e) {
     std::fprintf(stderr, "saltus-gui: error: %s\n", e.what());
     return kExitBadInput;
@@ -38,6 +45,12 @@ int export_figures(const CommandLine& c) {
       const std::string path =
           (std::filesystem::path(c.export_figures) / figure.file_name).string();
       write_chart_png(figure.chart, path, kFigureWidth, kFigureHeight, 15);
+      std::printf("wrote %s\n", path.c_str());
+    }
+    for (const FigureGrid& figure : mass_study_figures(mass_folders)) {
+      const std::string path =
+          (std::filesystem::path(c.export_figures) / figure.file_name).string();
+      write_chart_grid_png(figure.panels, figure.columns, path, kPanelWidth, kPanelHeight, 14);
       std::printf("wrote %s\n", path.c_str());
     }
   } catch (const std::exception& e) {

@@ -32,12 +32,20 @@
 #include <cmath>
 #include <exception>
 #include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "app/chart_widget.h"
+#include "app/compare_window.h"
+#include "app/keyframe_panel.h"
+#include "app/model_panel.h"
 #include "app/optimization_runner.h"
 #include "app/optimize_panel.h"
 #include "app/scene_widget.h"
 #include "app/timeline_widget.h"
+#include "core/compare.h"
+#include "core/model_edit.h"
+#include "core/motion_edit.h"
 #include "saltus/io/input_error.h"
 #include "saltus/io/json_reader.h"
 #include "scene/chart_view.h"
@@ -50,8 +58,11 @@ constexpr int kMaxRecent = 8;
 constexpr int kPlotExportWidth = 1400;
 constexpr int kPlotExportHeight = 700;
 
-const char* const kOptionNames[8] = {"trampoline",      "floor_grid",   "parabola", "com_trace",
-                                     "residual_arrows", "joint_arrows", "ghosts",   "physics_text"};
+/// Settings keys. The ghosts' key changed when they became off by default: every earlier
+/// session stored the old default (on), which must not override the new one.
+const char* const kOptionNames[8] = {"trampoline",      "floor_grid",      "parabola",
+                                     "com_trace",       "residual_arrows", "joint_arrows",
+                                     "keyframe_ghosts", "physics_text"};
 const char* const kOptionLabels[8] = {"Trampoline bed",
                                       "Floor grid",
                                       "CoM parabola (ballistic)",
@@ -204,6 +215,40 @@ void MainWindow::build_ui() {
   connect(optimize_panel_, &OptimizePanel::cancel_requested, this,
           &MainWindow::cancel_optimization);
 
+  keyframe_panel_ = new KeyframePanel(this);
+  connect(keyframe_panel_, &KeyframePanel::keyframe_selected, this, [this](int k) {
+    if (document_.loaded() && k < static_cast<int>(document_.file().motion.keyframes.size()))
+      seek(document_.file().motion.keyframes[static_cast<std::size_t>(k)].time);
+  });
+  connect(keyframe_panel_, &KeyframePanel::angles_edited, this,
+          [this](int k, int s, double x, double y, double z) {
+            set_keyframe_angles(k, s, x, y, z, nullptr);
+          });
+  connect(keyframe_panel_, &KeyframePanel::time_edited, this,
+          [this](int k, double t) { set_keyframe_time(k, t, nullptr); });
+  connect(keyframe_panel_, &KeyframePanel::add_requested, this,
+          [this] { add_keyframe(time(), nullptr); });
+  connect(keyframe_panel_, &KeyframePanel::delete_requested, this,
+          [this](int k) { delete_keyframe(k, nullptr); });
+  connect(keyframe_panel_, &KeyframePanel::save_requested, this, [this] {
+    const QFileInfo motion(qstr(document_.file().path));
+    const QString suggestion = QDir(last_dir_).filePath(
+        motion.completeBaseName().remove(".motion") + "-edited.motion.json");
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save motion"), suggestion,
+                                                      tr("Motions (*.motion.json)"));
+    if (!path.isEmpty()) save_motion(path);
+  });
+
+  model_panel_ = new ModelPanel(this);
+  connect(model_panel_, &ModelPanel::factors_edited, this,
+          [this](const std::vector<double>& f) { set_mass_factors(f, nullptr); });
+  connect(model_panel_, &ModelPanel::save_requested, this, [this] {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save body model"),
+                                                      QDir(last_dir_).filePath("edited-model.json"),
+                                                      tr("Body models (*.json)"));
+    if (!path.isEmpty()) save_model(path);
+  });
+
   status_label_ = new QLabel(this);
   statusBar()->addWidget(status_label_, 1);
   resize(1600, 1000);
@@ -355,6 +400,28 @@ void MainWindow::build_menus() {
   cancel_action_ = optimise->addAction(tr("&Cancel"), this, &MainWindow::cancel_optimization);
   cancel_action_->setShortcut(Qt::Key_Escape);
 
+  // Compare: a second window with two runs side by side.
+  QMenu* compare = menuBar()->addMenu(tr("&Compare"));
+  compare_before_after_action_ = compare->addAction(tr("&Before vs after optimisation"), this,
+                                                    [this] { compare_before_after(); });
+  compare_motion_action_ = compare->addAction(tr("With another &motion…"), this, [this] {
+    const QString path =
+        ask_open_file(tr("Compare with motion"), tr("Motions (*.motion.json *.json)"));
+    if (!path.isEmpty()) compare_with_motion(path);
+  });
+  compare_model_action_ = compare->addAction(tr("With another body m&odel…"), this, [this] {
+    const QString path = ask_open_file(tr("Compare with body model"), tr("Body models (*.json)"));
+    if (!path.isEmpty()) compare_with_model(path);
+  });
+  compare_folder_action_ = compare->addAction(tr("With a saved &result folder…"), this, [this] {
+    const QString dir = QFileDialog::getExistingDirectory(
+        this, tr("Compare with a `saltus optimize` result folder"), last_dir_);
+    if (!dir.isEmpty()) compare_with_folder(dir);
+  });
+  compare->addSeparator();
+  close_compare_action_ =
+      compare->addAction(tr("&Close compare"), this, &MainWindow::close_compare);
+
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   help->addAction(tr("&Keyboard and mouse"), this, [this] {
     QMessageBox::information(
@@ -395,6 +462,14 @@ void MainWindow::build_menus() {
   }
   reset->setIconText(tr("Reset"));
   bar->addAction(reset);
+  bar->addSeparator();
+  // "Compare…" drops down the Compare menu's choices.
+  auto* compare_button = new QToolButton(bar);
+  compare_button->setText(tr("Compare…"));
+  compare_button->setToolTip(tr("Show this motion side by side with another run"));
+  compare_button->setMenu(compare);
+  compare_button->setPopupMode(QToolButton::InstantPopup);
+  bar->addWidget(compare_button);
 
   // Docks: display options and the optimisation panel.
   auto* display_dock = new QDockWidget(tr("Display"), this);
@@ -410,9 +485,22 @@ void MainWindow::build_menus() {
   optimise_dock->setObjectName("optimise_dock");
   optimise_dock->setWidget(optimize_panel_);
   addDockWidget(Qt::RightDockWidgetArea, optimise_dock);
+  auto* keyframe_dock = new QDockWidget(tr("Keyframes"), this);
+  keyframe_dock->setObjectName("keyframe_dock");
+  keyframe_dock->setWidget(keyframe_panel_);
+  addDockWidget(Qt::RightDockWidgetArea, keyframe_dock);
+  tabifyDockWidget(optimise_dock, keyframe_dock);
+  auto* model_dock = new QDockWidget(tr("Model"), this);
+  model_dock->setObjectName("model_dock");
+  model_dock->setWidget(model_panel_);
+  addDockWidget(Qt::RightDockWidgetArea, model_dock);
+  tabifyDockWidget(keyframe_dock, model_dock);
+  optimise_dock->raise();
   view->addSeparator();
   view->addAction(display_dock->toggleViewAction());
   view->addAction(optimise_dock->toggleViewAction());
+  view->addAction(keyframe_dock->toggleViewAction());
+  view->addAction(model_dock->toggleViewAction());
   resizeDocks({display_dock, optimise_dock}, {400, 400}, Qt::Horizontal);
 }
 
@@ -689,7 +777,9 @@ void MainWindow::refresh_all(bool fit_camera) {
       optimised = document_.evaluation(Stage::kAfter).keyframe_times;
     timeline_->set_motion(document_.duration(), document_.frame_count(stage_), given.keyframe_times,
                           optimised);
-    setWindowTitle(tr("Saltus — %1").arg(qstr(document_.file().motion.name)));
+    setWindowTitle(tr("Saltus — %1%2")
+                       .arg(qstr(document_.file().motion.name),
+                            document_.edited() ? tr(" (edited)") : QString()));
     // Joint list: every joint of the model (the root's "joint" is the residual itself).
     const int previous = joint_combo_->currentIndex();
     {
@@ -702,6 +792,10 @@ void MainWindow::refresh_all(bool fit_camera) {
           previous >= 0 && previous < joint_combo_->count() ? previous : std::max(0, knee));
     }
   }
+  keyframe_panel_->set_motion(loaded ? &document_.file().motion : nullptr,
+                              loaded ? &document_.file().model : nullptr);
+  model_panel_->set_model(loaded ? &document_.loaded_model() : nullptr,
+                          loaded ? &document_.file().model : nullptr);
   refresh_root_charts();
   refresh_joint_chart();
   refresh_rotation_chart();
@@ -793,6 +887,262 @@ void MainWindow::update_actions() {
   before_action_->setChecked(stage_ == Stage::kBefore);
   after_action_->setChecked(stage_ == Stage::kAfter);
   optimize_panel_->set_available(loaded);
+  compare_before_after_action_->setEnabled(loaded && document_.has_optimization());
+  for (QAction* a : {compare_motion_action_, compare_model_action_, compare_folder_action_})
+    a->setEnabled(loaded);
+  close_compare_action_->setEnabled(!compare_.isNull());
+}
+
+bool MainWindow::load_second(const std::string& motion, const std::string& model, Document* out,
+                             QString* error) {
+  try {
+    out->load(motion, model, document_.evaluate_options().samples);
+  } catch (const InputError& e) {
+    return fail(tr("Cannot compare"), qstr(e.what()), error);
+  } catch (const std::exception& e) {
+    return fail(tr("Cannot compare"), qstr(motion) + ": " + qstr(e.what()), error);
+  }
+  return true;
+}
+
+bool MainWindow::show_compare(const QString& first_label, Stage first_stage,
+                              std::shared_ptr<const Document> second, const QString& second_label,
+                              Stage second_stage, QString* error) {
+  if (!document_.loaded()) return fail(tr("Nothing to compare"), tr("Open a motion first."), error);
+  // A copy: the compare window keeps showing this run if the main window opens another motion.
+  CompareWindow::Run first{first_label, std::make_shared<const Document>(document_), first_stage};
+  CompareWindow::Run other{second_label, std::move(second), second_stage};
+  if (compare_.isNull()) {
+    compare_ = new CompareWindow(this);
+    compare_->setAttribute(Qt::WA_DeleteOnClose);
+    connect(compare_, &QObject::destroyed, this, [this] { update_actions(); });
+  }
+  compare_->set_scene_options(scene_->scene().options());
+  compare_->set_runs(std::move(first), std::move(other));
+  compare_->show();
+  compare_->raise();
+  update_actions();
+  return true;
+}
+
+QString MainWindow::stage_label(Stage stage) const {
+  const QString name = qstr(document_.file().motion.name);
+  return stage == Stage::kAfter ? tr("%1 (optimised)").arg(name) : name;
+}
+
+bool MainWindow::compare_before_after(QString* error) {
+  if (!document_.loaded() || !document_.has_optimization())
+    return fail(tr("Nothing to compare"), tr("Run an optimisation first."), error);
+  return show_compare(tr("before"), Stage::kBefore, std::make_shared<const Document>(document_),
+                      tr("after (optimised)"), Stage::kAfter, error);
+}
+
+bool MainWindow::compare_with_motion(const QString& path, QString* error) {
+  if (!document_.loaded()) return fail(tr("Nothing to compare"), tr("Open a motion first."), error);
+  auto second = std::make_shared<Document>();
+  if (!load_second(path.toStdString(), model_override_, second.get(), error)) return false;
+  QString label = qstr(second->file().motion.name);
+  if (label == qstr(document_.file().motion.name)) label = QFileInfo(path).fileName();
+  return show_compare(stage_label(stage_), stage_, std::move(second), label, Stage::kBefore, error);
+}
+
+bool MainWindow::compare_with_model(const QString& path, QString* error) {
+  if (!document_.loaded()) return fail(tr("Nothing to compare"), tr("Open a motion first."), error);
+  auto second = std::make_shared<Document>();
+  const std::string model = QFileInfo(path).absoluteFilePath().toStdString();
+  if (!load_second(document_.file().path, model, second.get(), error)) return false;
+  const QString first = tr("model %1").arg(qstr(document_.file().model.name));
+  QString label = tr("model %1").arg(qstr(second->file().model.name));
+  if (label == first) label = tr("model %1").arg(QFileInfo(path).fileName());
+  // Same motion, other masses: both as interpolated (the optimisation belongs to one model).
+  return show_compare(first, Stage::kBefore, std::move(second), label, Stage::kBefore, error);
+}
+
+bool MainWindow::compare_with_folder(const QString& dir, QString* error) {
+  if (!document_.loaded()) return fail(tr("Nothing to compare"), tr("Open a motion first."), error);
+  FolderRun run;
+  try {
+    run = folder_run(dir.toStdString());
+  } catch (const InputError& e) {
+    return fail(tr("Cannot compare"), qstr(e.what()), error);
+  } catch (const std::exception& e) {
+    return fail(tr("Cannot compare"), dir + ": " + qstr(e.what()), error);
+  }
+  auto second = std::make_shared<Document>();
+  if (!load_second(run.motion_path, run.model_path, second.get(), error)) return false;
+  last_dir_ = QFileInfo(dir).absolutePath();
+  return show_compare(stage_label(stage_), stage_, std::move(second), qstr(run.label),
+                      Stage::kBefore, error);
+}
+
+CompareWindow* MainWindow::compare_window() const {
+  return compare_.data();
+}
+
+void MainWindow::close_compare() {
+  if (!compare_.isNull()) compare_->close();
+  // The window deletes itself on close (deferred): finish that now, so compare_window() is null.
+  QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
+  update_actions();
+}
+
+bool MainWindow::apply_edit(const std::function<Motion()>& make, QString* error) {
+  if (!document_.loaded()) return fail(tr("Nothing to edit"), tr("Open a motion first."), error);
+  QString problem;
+  try {
+    const Motion edited = make();
+    if (optimization_running()) cancel_optimization();
+    document_.set_motion(edited);
+  } catch (const InputError& e) {
+    problem = qstr(e.what());
+  } catch (const std::exception& e) {
+    problem = qstr(e.what());
+  }
+  if (!problem.isEmpty()) {
+    // No dialog: edits come from sliders and spin boxes; the panel says what is wrong and shows
+    // the motion's values again.
+    keyframe_panel_->set_motion(&document_.file().motion, &document_.file().model);
+    keyframe_panel_->show_problem(problem);
+    if (error) *error = problem;
+    return false;
+  }
+  keyframe_panel_->show_problem(QString());
+  show_edited();
+  return true;
+}
+
+void MainWindow::show_edited() {
+  ++generation_;
+  stage_ = Stage::kBefore;
+  optimize_panel_->clear_result();
+  const double t = time();
+  refresh_all(false);
+  timeline_->seek(std::min(t, document_.duration()));
+  status_label_->setText(
+      tr("%1 (edited) — model %2 (%3 kg), average root force %4 N")
+          .arg(qstr(document_.file().motion.name), qstr(document_.file().model.name))
+          .arg(document_.file().model.total_mass(), 0, 'f', 1)
+          .arg(document_.evaluation(Stage::kBefore).metrics.avg_root_force, 0, 'g', 3));
+}
+
+bool MainWindow::set_mass_factors(const std::vector<double>& factors, QString* error) {
+  if (!document_.loaded()) return fail(tr("Nothing to edit"), tr("Open a motion first."), error);
+  QString problem;
+  try {
+    const BodyModel model = model_with_mass_factors(document_.loaded_model(), factors);
+    if (optimization_running()) cancel_optimization();
+    document_.set_model(model);
+  } catch (const InputError& e) {
+    problem = qstr(e.what());
+  } catch (const std::exception& e) {
+    problem = qstr(e.what());
+  }
+  if (!problem.isEmpty()) {
+    model_panel_->set_model(&document_.loaded_model(), &document_.file().model);
+    model_panel_->show_problem(problem);
+    if (error) *error = problem;
+    return false;
+  }
+  model_panel_->show_problem(QString());
+  show_edited();
+  return true;
+}
+
+bool MainWindow::save_model(const QString& path, QString* error) {
+  if (!document_.loaded()) return fail(tr("Nothing to save"), tr("Open a motion first."), error);
+  try {
+    BodyModel model = document_.file().model;
+    if (document_.edited()) model.name = QFileInfo(path).completeBaseName().toStdString();
+    {
+      std::ofstream out(path.toStdString());
+      out << body_model_to_json(model).dump(2) << '\n';
+      if (!out) throw std::runtime_error("cannot write the file");
+    }
+    load_body_model(path.toStdString());  // what was written must load
+  } catch (const InputError& e) {
+    return fail(tr("Cannot save model"), qstr(e.what()), error);
+  } catch (const std::exception& e) {
+    return fail(tr("Cannot save model"), path + ": " + qstr(e.what()), error);
+  }
+  last_dir_ = QFileInfo(path).absolutePath();
+  statusBar()->showMessage(tr("Saved %1").arg(path), 6000);
+  return true;
+}
+
+bool MainWindow::set_keyframe_angles(int keyframe, int segment, double x_deg, double y_deg,
+                                     double z_deg, QString* error) {
+  return apply_edit(
+      [&] {
+        return with_joint_angles(document_.file().motion, document_.file().model, keyframe, segment,
+                                 Eigen::Vector3d(x_deg, y_deg, z_deg));
+      },
+      error);
+}
+
+bool MainWindow::set_keyframe_time(int keyframe, double t, QString* error) {
+  return apply_edit(
+      [&] {
+        return with_keyframe_time(document_.file().motion, document_.file().model, keyframe, t);
+      },
+      error);
+}
+
+bool MainWindow::add_keyframe(double t, QString* error) {
+  const bool ok = apply_edit(
+      [&] {
+        // The pose of the motion as shown (interpolated or optimised) at t.
+        return with_keyframe_added(document_.file().motion, document_.file().model, t,
+                                   document_.sample_at(stage_, t));
+      },
+      error);
+  if (ok) {
+    const std::vector<Keyframe>& k = document_.file().motion.keyframes;
+    for (std::size_t i = 0; i < k.size(); ++i)
+      if (k[i].time == t) keyframe_panel_->select(static_cast<int>(i), -1);
+  }
+  return ok;
+}
+
+bool MainWindow::delete_keyframe(int keyframe, QString* error) {
+  return apply_edit(
+      [&] {
+        return with_keyframe_deleted(document_.file().motion, document_.file().model, keyframe);
+      },
+      error);
+}
+
+bool MainWindow::save_motion(const QString& path, QString* error) {
+  if (!document_.loaded()) return fail(tr("Nothing to save"), tr("Open a motion first."), error);
+  try {
+    Motion motion = document_.file().motion;
+    // A model chosen with "Open model" is named by its full path, so the file loads as shown.
+    if (!document_.model_override().empty()) {
+      motion.model = document_.model_override();
+    } else if (QFileInfo(qstr(motion.model)).isRelative() &&
+               qstr(motion.model).endsWith(".json", Qt::CaseInsensitive)) {
+      // A model file named relative to the original motion: keep pointing at the same file
+      // wherever the edited motion is saved.
+      motion.model =
+          QFileInfo(QFileInfo(qstr(document_.file().path)).absoluteDir(), qstr(motion.model))
+              .absoluteFilePath()
+              .toStdString();
+    }
+    const nlohmann::json json = motion_to_json(motion, document_.file().model);
+    {
+      std::ofstream out(path.toStdString());
+      out << json.dump(2) << '\n';
+      if (!out) throw std::runtime_error("cannot write the file");
+    }
+    // Read back through the library: what was written must load as this motion.
+    load_motion_file(path.toStdString());
+  } catch (const InputError& e) {
+    return fail(tr("Cannot save motion"), qstr(e.what()), error);
+  } catch (const std::exception& e) {
+    return fail(tr("Cannot save motion"), path + ": " + qstr(e.what()), error);
+  }
+  last_dir_ = QFileInfo(path).absolutePath();
+  statusBar()->showMessage(tr("Saved %1").arg(path), 6000);
+  return true;
 }
 
 void MainWindow::seek(double t) {
@@ -902,6 +1252,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     wait_for_optimization(30000);
   }
   if (interactive_) save_settings();
+  close_compare();
   QMainWindow::closeEvent(event);
 }
 

@@ -1,15 +1,19 @@
 #pragma once
 /// @file
 /// The main window: the 3D view with the timeline under it, the plots (root force and moment
-/// before/after, joint loads, rotation for teaching), the display and optimisation panels, menus
-/// with file handling (open, drag and drop, recent files, save result, PNG export) and remembered
-/// settings. Qt types only in this header: tests and batch mode include it.
+/// before/after, joint loads, rotation for teaching), the display, optimisation, keyframe and
+/// model panels, the compare window, menus with file handling (open, drag and drop, recent
+/// files, save result, PNG export) and remembered settings. Qt types only in this header: tests
+/// and batch mode include it.
 
 #include <QElapsedTimer>
 #include <QImage>
 #include <QMainWindow>
+#include <QPointer>
 #include <QStringList>
 #include <array>
+#include <functional>
+#include <memory>
 #include <string>
 
 #include "core/document.h"
@@ -27,6 +31,9 @@ class QTabWidget;
 namespace saltus::gui {
 
 class ChartWidget;
+class CompareWindow;
+class KeyframePanel;
+class ModelPanel;
 class OptimizationRunner;
 class OptimizePanel;
 class SceneWidget;
@@ -65,6 +72,39 @@ class MainWindow : public QMainWindow {
   /// Keeps the event loop running until the optimisation ends or `timeout_ms` pass; returns
   /// whether it ended.
   bool wait_for_optimization(int timeout_ms);
+
+  // Compare (a second window; the open motion as shown is the first run). Each loads and
+  // evaluates the second run as open_motion / open_model would.
+  /// Before vs after of the current optimisation.
+  bool compare_before_after(QString* error = nullptr);
+  /// The open motion vs another motion file (with the model in use).
+  bool compare_with_motion(const QString& path, QString* error = nullptr);
+  /// The open motion with its model vs the same motion with this model file.
+  bool compare_with_model(const QString& path, QString* error = nullptr);
+  /// The open motion vs a `saltus optimize` (or `evaluate`) output folder.
+  bool compare_with_folder(const QString& dir, QString* error = nullptr);
+  /// The compare window while it is open, else null.
+  CompareWindow* compare_window() const;
+  void close_compare();
+
+  // Keyframe editing (the Keyframes panel). Each edit goes through the library (checked by its
+  // parser, then evaluated); a rejected edit changes nothing and its message is shown in the
+  // panel (and stored in `error` if given). Edits drop an optimisation result.
+  /// Joint rotation of `segment` at keyframe `keyframe` (0-based) as X-Y-Z Euler angles, degrees.
+  bool set_keyframe_angles(int keyframe, int segment, double x_deg, double y_deg, double z_deg,
+                           QString* error = nullptr);
+  bool set_keyframe_time(int keyframe, double time, QString* error = nullptr);
+  /// A keyframe at time t with the pose the shown motion has there.
+  bool add_keyframe(double t, QString* error = nullptr);
+  bool delete_keyframe(int keyframe, QString* error = nullptr);
+  /// Writes the (edited) motion as a motion file and reads it back through the library.
+  bool save_motion(const QString& path, QString* error = nullptr);
+  KeyframePanel* keyframe_panel() const { return keyframe_panel_; }
+  /// Mass factors per segment relative to the model as loaded (the Model panel).
+  bool set_mass_factors(const std::vector<double>& factors, QString* error = nullptr);
+  /// Writes the model in use as a model file (named after the file) and reads it back.
+  bool save_model(const QString& path, QString* error = nullptr);
+  ModelPanel* model_panel() const { return model_panel_; }
 
   void seek(double t);
   double time() const;
@@ -118,6 +158,19 @@ class MainWindow : public QMainWindow {
   void rebuild_recent_menu();
   bool fail(const QString& title, const QString& message, QString* error);
   QString ask_open_file(const QString& title, const QString& filter);
+  /// Opens (or reuses) the compare window with the open motion as shown against `second`.
+  bool show_compare(const QString& first_label, Stage first_stage,
+                    std::shared_ptr<const Document> second, const QString& second_label,
+                    Stage second_stage, QString* error);
+  /// Replaces the motion by make()'s edit; on failure shows the message in the panel.
+  bool apply_edit(const std::function<Motion()>& make, QString* error);
+  /// After an edit of the motion or the model: everything shown again, at the same time.
+  void show_edited();
+  /// "M1" or "M1 (optimised)": the open motion at a stage, as a compare label.
+  QString stage_label(Stage stage) const;
+  /// Loads a second document like open_motion does; false (with the library's message) on error.
+  bool load_second(const std::string& motion, const std::string& model, Document* out,
+                   QString* error);
 
   bool interactive_;
   Document document_;
@@ -142,8 +195,11 @@ class MainWindow : public QMainWindow {
   QComboBox* joint_combo_ = nullptr;
   QComboBox* rotation_combo_ = nullptr;
   OptimizePanel* optimize_panel_ = nullptr;
+  KeyframePanel* keyframe_panel_ = nullptr;
+  ModelPanel* model_panel_ = nullptr;
   OptimizationRunner* runner_ = nullptr;
   QLabel* status_label_ = nullptr;
+  QPointer<CompareWindow> compare_;
 
   QMenu* recent_menu_ = nullptr;
   QAction* save_action_ = nullptr;
@@ -153,6 +209,11 @@ class MainWindow : public QMainWindow {
   QAction* play_action_ = nullptr;
   QAction* run_action_ = nullptr;
   QAction* cancel_action_ = nullptr;
+  QAction* compare_before_after_action_ = nullptr;
+  QAction* compare_motion_action_ = nullptr;
+  QAction* compare_model_action_ = nullptr;
+  QAction* compare_folder_action_ = nullptr;
+  QAction* close_compare_action_ = nullptr;
   QAction* before_action_ = nullptr;
   QAction* after_action_ = nullptr;
   std::array<QAction*, 4> camera_actions_{};

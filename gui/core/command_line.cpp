@@ -132,7 +132,9 @@ the files and exits (status 0 ok, 2 bad input or usage, 1 other failure).
   --save-result DIR       write the result folder the CLI would (optimize or evaluate)
   --export-figures DIR RESULT_DIR...
                           draw paper-style figures (root force/moment and keyframe times
-                          before/after, average root force) from `saltus optimize` folders
+                          before/after, average root force) from `saltus optimize` folders,
+                          and joint loads given vs scaled (Fig. 8) from `saltus study mass`
+                          folders
   --benchmark-playback    play the motion for a few seconds and print frames per second
   --seconds S             length of the benchmark (default 5)
   --help, --version

@@ -21,6 +21,32 @@ void Document::load(const std::string& motion_path, const std::string& model_ove
   evaluate_options_ = options;
   evaluation_ = std::move(evaluation);
   rotation_ = std::move(rotation);
+  edited_ = false;
+  loaded_model_ = file_->model;
+  clear_optimization();
+}
+
+void Document::set_model(const BodyModel& model) {
+  if (!loaded()) throw std::logic_error("no motion loaded");
+  if (model.size() != file_->model.size())
+    throw std::invalid_argument("the edited model has other segments than the motion's");
+  MotionEvaluation evaluation = evaluate_motion(file_->motion, model, evaluate_options_);
+  std::vector<RotationSample> rotation = rotation_metrics(model, evaluation.samples);
+  file_->model = model;
+  evaluation_ = std::move(evaluation);
+  rotation_ = std::move(rotation);
+  edited_ = true;
+  clear_optimization();
+}
+
+void Document::set_motion(const Motion& motion) {
+  if (!loaded()) throw std::logic_error("no motion loaded");
+  MotionEvaluation evaluation = evaluate_motion(motion, file_->model, evaluate_options_);
+  std::vector<RotationSample> rotation = rotation_metrics(file_->model, evaluation.samples);
+  file_->motion = motion;
+  evaluation_ = std::move(evaluation);
+  rotation_ = std::move(rotation);
+  edited_ = true;
   clear_optimization();
 }
 

@@ -28,6 +28,16 @@ class Document {
   void load(const std::string& motion_path, const std::string& model_override = "",
             int samples = kDefaultSamples);
   bool loaded() const { return file_.has_value(); }
+  /// Replaces the loaded motion by an edited one (same model, file path and samples) and
+  /// evaluates it; drops the optimisation. Requires loaded(); on failure nothing changes.
+  void set_motion(const Motion& motion);
+  /// Replaces the model by an edited one with the same segments (e.g. other masses) and
+  /// re-evaluates the motion; drops the optimisation. On failure nothing changes.
+  void set_model(const BodyModel& model);
+  /// The model as loaded (before any set_model): mass factors are relative to it.
+  const BodyModel& loaded_model() const { return loaded_model_; }
+  /// Whether the motion or the model was edited since it was loaded.
+  bool edited() const { return edited_; }
   /// The loaded motion and model; requires loaded().
   const MotionFile& file() const { return *file_; }
   const std::string& model_override() const { return model_override_; }
@@ -76,6 +86,8 @@ class Document {
  private:
   std::optional<MotionFile> file_;
   std::string model_override_;
+  bool edited_ = false;
+  BodyModel loaded_model_;
   EvaluateOptions evaluate_options_;
   MotionEvaluation evaluation_;
   std::vector<RotationSample> rotation_;

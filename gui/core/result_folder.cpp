@@ -30,6 +30,39 @@ std::string title_prefix(const ResultFolder& f) {
   return f.motion.empty() ? f.name : f.motion;
 }
 
+/// Unique file-safe stems, so two folders with the same name write different figures.
+class StemSet {
+ public:
+  std::string make(const std::string& name) {
+    std::string stem = file_safe(name);
+    for (int k = 2; used_.count(stem); ++k)
+      stem = file_safe(name) + "-" + std::to_string(k);
+    used_.insert(stem);
+    return stem;
+  }
+
+ private:
+  std::set<std::string> used_;
+};
+
+std::vector<double> csv_column(const CsvTable& table, const std::string& name,
+                               const std::string& file) {
+  const int c = table.column(name);
+  if (c < 0) throw InputError(file, "", "missing column `" + name + "`");
+  std::vector<double> out;
+  out.reserve(table.rows.size());
+  for (const std::vector<double>& row : table.rows)
+    out.push_back(row.at(static_cast<std::size_t>(c)));
+  return out;
+}
+
+Rgb given_run_colour() {
+  return {0.16, 0.36, 0.74};
+}
+Rgb scaled_run_colour() {
+  return {0.90, 0.45, 0.08};
+}
+
 }  // namespace
 
 ResultFolder read_result_folder(const std::string& dir) {
@@ -125,12 +158,9 @@ ChartSpec average_force_chart(const std::vector<ResultFolder>& folders) {
 
 std::vector<Figure> paper_figures(const std::vector<ResultFolder>& folders) {
   std::vector<Figure> out;
-  std::set<std::string> used;
+  StemSet stems;
   for (const ResultFolder& f : folders) {
-    std::string stem = file_safe(f.name);
-    for (int k = 2; used.count(stem); ++k)
-      stem = file_safe(f.name) + "-" + std::to_string(k);
-    used.insert(stem);
+    const std::string stem = stems.make(f.name);
     for (bool moment : {false, true}) {
       ChartSpec chart = root_wrench_chart(moment, f.before, &f.after, all_components(),
                                           f.keyframe_times_before, f.keyframe_times_after);
@@ -141,6 +171,107 @@ std::vector<Figure> paper_figures(const std::vector<ResultFolder>& folders) {
     out.push_back({stem + "_keyframe_times.png", keyframe_times_chart(f)});
   }
   if (!folders.empty()) out.push_back({"average_root_force.png", average_force_chart(folders)});
+  return out;
+}
+
+bool is_mass_study_folder(const std::string& dir) {
+  const std::filesystem::path result = std::filesystem::path(dir) / "result.json";
+  if (!std::filesystem::is_regular_file(result)) return false;
+  try {
+    const nlohmann::json document = read_json_file(result.string());
+    return document.is_object() && document.value("study", std::string()) == "mass";
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+MassLoadSeries mass_load_series(const CsvTable& table, const std::vector<std::string>& segments,
+                                const std::string& file) {
+  MassLoadSeries out;
+  out.time = csv_column(table, "t", file);
+  const char* runs[] = {"given", "scaled"};
+  for (const std::string& segment : segments) {
+    SegmentLoadSeries s;
+    s.segment = segment;
+    for (int r = 0; r < 2; ++r) {
+      const std::string prefix = std::string(runs[r]) + "." + segment + ".";
+      s.force[r] = csv_column(table, prefix + "force_N", file);
+      s.moment[r] = csv_column(table, prefix + "moment_Nm", file);
+    }
+    out.segments.push_back(std::move(s));
+  }
+  return out;
+}
+
+MassStudyFolder read_mass_study_folder(const std::string& dir) {
+  namespace fs = std::filesystem;
+  const fs::path folder(dir);
+  if (!fs::is_directory(folder))
+    throw InputError(dir, "", "not a folder (expected a `saltus study mass` output folder)");
+  MassStudyFolder out;
+  out.path = dir;
+  out.name = folder.filename().empty() ? folder.parent_path().filename().string()
+                                       : folder.filename().string();
+  const std::string result_path = (folder / "result.json").string();
+  if (!fs::exists(result_path))
+    throw InputError(result_path, "", "missing (not a `saltus study mass` output folder)");
+  const nlohmann::json document = read_json_file(result_path);
+  const JsonNode root(document, result_path);
+  root.require_object();
+  if (root.at("study").as_string() != "mass")
+    throw InputError(result_path, "/study", "not \"mass\" (not a `saltus study mass` folder)");
+  if (const auto motion = root.find("motion")) out.motion = motion->as_string();
+  const JsonNode runs = root.at("runs");
+  runs.require_array();
+  if (runs.size() != 2)
+    throw InputError(result_path, runs.path_or_root(),
+                     "expected two runs (given and scaled), found " + std::to_string(runs.size()));
+  for (std::size_t r = 0; r < 2; ++r)
+    out.run_labels[r] = runs.at(r).at("label").as_string();
+  const JsonNode load_segments = root.at("load_segments");
+  load_segments.require_array();
+  std::vector<std::string> segments;
+  for (std::size_t i = 0; i < load_segments.size(); ++i)
+    segments.push_back(load_segments.at(i).as_string());
+  const std::string csv = (folder / "mass.csv").string();
+  if (!fs::exists(csv))
+    throw InputError(csv, "", "missing (not a `saltus study mass` output folder)");
+  out.loads = mass_load_series(read_csv_table(csv), segments, csv);
+  return out;
+}
+
+ChartSpec mass_load_chart(const MassStudyFolder& folder, std::size_t index, bool moment) {
+  const SegmentLoadSeries& s = folder.loads.segments.at(index);
+  ChartSpec chart;
+  const std::string motion = folder.motion.empty() ? folder.name : folder.motion;
+  chart.title = motion + ": " + (moment ? "moment" : "force") + " at the joint of " + s.segment +
+                " (optimised, given vs scaled masses)";
+  chart.x_title = "time (s)";
+  chart.y_title = moment ? "joint moment magnitude (N·m)" : "joint force magnitude (N)";
+  for (int r = 0; r < 2; ++r) {
+    LineSpec line;
+    line.label = folder.run_labels[static_cast<std::size_t>(r)];
+    line.x = folder.loads.time;
+    line.y = moment ? s.moment[static_cast<std::size_t>(r)] : s.force[static_cast<std::size_t>(r)];
+    line.colour = r == 0 ? given_run_colour() : scaled_run_colour();
+    line.width = 2.5;
+    chart.lines.push_back(std::move(line));
+  }
+  return chart;
+}
+
+std::vector<FigureGrid> mass_study_figures(const std::vector<MassStudyFolder>& folders) {
+  std::vector<FigureGrid> out;
+  StemSet stems;
+  for (const MassStudyFolder& f : folders) {
+    FigureGrid grid;
+    grid.file_name = stems.make(f.name) + "_loads.png";
+    grid.columns = 2;
+    for (std::size_t i = 0; i < f.loads.segments.size(); ++i)
+      for (bool moment : {false, true})
+        grid.panels.push_back(mass_load_chart(f, i, moment));
+    out.push_back(std::move(grid));
+  }
   return out;
 }
 

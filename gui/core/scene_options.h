@@ -15,7 +15,8 @@ struct SceneOptions {
   bool com_trace = true;
   bool residual_arrows = true;
   bool joint_arrows = false;
-  bool ghosts = true;
+  /// Off by default: the keyframe poses clutter the follow camera; View menu to show them.
+  bool ghosts = false;
   bool physics_text = true;
 };
 

@@ -8,6 +8,7 @@
 #include <vtkContextScene.h>
 #include <vtkContextView.h>
 #include <vtkDoubleArray.h>
+#include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
 #include <vtkPen.h>
@@ -21,6 +22,7 @@
 #include <vtkTextProperty.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
@@ -206,8 +208,11 @@ void ChartView::set_font_size(int points) {
   impl_->apply_fonts();
 }
 
-void write_chart_png(const ChartSpec& spec, const std::string& path, int width, int height,
-                     int font_points) {
+namespace {
+
+/// The chart rendered offscreen, as an RGB image that outlives the window.
+vtkSmartPointer<vtkImageData> render_chart(const ChartSpec& spec, int width, int height,
+                                           int font_points) {
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
   window->SetSize(width, height);
@@ -221,12 +226,65 @@ void write_chart_png(const ChartSpec& spec, const std::string& path, int width, 
   grab->SetInput(window);
   grab->ReadFrontBufferOff();
   grab->Update();
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->DeepCopy(grab->GetOutput());
+  return image;
+}
+
+void write_png(vtkImageData* image, const std::string& path) {
   vtkNew<vtkPNGWriter> writer;
   writer->SetFileName(path.c_str());
-  writer->SetInputConnection(grab->GetOutputPort());
+  writer->SetInputData(image);
   writer->Write();
   if (writer->GetErrorCode() != 0 || !std::filesystem::exists(path))
     throw std::runtime_error(path + ": cannot write the figure");
+}
+
+}  // namespace
+
+void write_chart_png(const ChartSpec& spec, const std::string& path, int width, int height,
+                     int font_points) {
+  write_png(render_chart(spec, width, height, font_points), path);
+}
+
+void write_chart_grid_png(const std::vector<ChartSpec>& charts, int columns,
+                          const std::string& path, int panel_width, int panel_height,
+                          int font_points) {
+  if (charts.empty()) throw std::runtime_error(path + ": no charts to write");
+  columns = std::max(1, columns);
+  const std::size_t per_row = static_cast<std::size_t>(columns);
+  const std::size_t rows = (charts.size() + per_row - 1) / per_row;
+  const int total_width = panel_width * columns;
+  const int total_height = panel_height * static_cast<int>(rows);
+  vtkNew<vtkImageData> figure;
+  figure->SetDimensions(total_width, total_height, 1);
+  figure->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* out = static_cast<unsigned char*>(figure->GetScalarPointer());
+  std::fill(out, out + static_cast<std::size_t>(total_width) * total_height * 3, 255);
+  for (std::size_t i = 0; i < charts.size(); ++i) {
+    const vtkSmartPointer<vtkImageData> panel =
+        render_chart(charts[i], panel_width, panel_height, font_points);
+    int dims[3];
+    panel->GetDimensions(dims);
+    const int components = panel->GetNumberOfScalarComponents();
+    if (panel->GetScalarType() != VTK_UNSIGNED_CHAR || components < 3 || dims[0] != panel_width ||
+        dims[1] != panel_height)
+      throw std::runtime_error(path + ": unexpected chart image format");
+    const auto* in = static_cast<const unsigned char*>(panel->GetScalarPointer());
+    // VTK images grow upwards: the first row of panels sits at the top of the figure.
+    const int x0 = static_cast<int>(i % per_row) * panel_width;
+    const int y0 = (static_cast<int>(rows - 1 - i / per_row)) * panel_height;
+    for (int y = 0; y < panel_height; ++y)
+      for (int x = 0; x < panel_width; ++x) {
+        const unsigned char* src =
+            in + (static_cast<std::size_t>(y) * panel_width + x) * components;
+        unsigned char* dst = out + (static_cast<std::size_t>(y0 + y) * total_width + (x0 + x)) * 3;
+        dst[0] = src[0];
+        dst[1] = src[1];
+        dst[2] = src[2];
+      }
+  }
+  write_png(figure, path);
 }
 
 }  // namespace saltus::gui

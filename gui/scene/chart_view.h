@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/chart_spec.h"
 
@@ -54,5 +55,12 @@ class ChartView {
 /// under xvfb-run). Throws std::runtime_error if the file cannot be written.
 void write_chart_png(const ChartSpec& spec, const std::string& path, int width, int height,
                      int font_points = 14);
+
+/// Renders charts offscreen, each panel_width × panel_height pixels, in a grid of `columns`
+/// per row (row by row, top first) into one PNG file. Throws std::runtime_error if the file
+/// cannot be written or `charts` is empty.
+void write_chart_grid_png(const std::vector<ChartSpec>& charts, int columns,
+                          const std::string& path, int panel_width, int panel_height,
+                          int font_points = 14);
 
 }  // namespace saltus::gui

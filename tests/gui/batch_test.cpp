@@ -76,6 +76,29 @@ TEST(GuiBatch, ExportsPaperFiguresFromCliOutputFolders) {
     expect_sane_png((dir.path() / "figures" / file).string(), 1200, 600);
 }
 
+TEST(GuiBatch, ExportsTheMassStudyLoadsFigureNextToOptimizeFigures) {
+  saltus::test::TempDir dir;
+  // `saltus study mass` as a user runs it (Fig. 8: Table 2 against heavier thighs), few samples
+  // and iterations to stay quick, and one `saltus optimize` folder in the same call.
+  const saltus::test::CliRun study =
+      saltus::test::run_cli("study mass '" + test::gui_test_motion_path() +
+                            "' --samples 41 --max-iter 3 --out '" + (dir / "mass-M1") + "'");
+  ASSERT_TRUE(study.status == 0 || study.status == 3) << study.output;
+  const saltus::test::CliRun optimize = saltus::test::run_cli(
+      "optimize '" + test::gui_test_motion_path() + "' --max-iter 2 --samples 31 --quiet --out '" +
+      (dir / "relaxed") + "'");
+  ASSERT_TRUE(optimize.status == 0 || optimize.status == 3) << optimize.output;
+  const saltus::test::CliRun run = run_gui("--export-figures '" + (dir / "figures") + "' '" +
+                                           (dir / "mass-M1") + "' '" + (dir / "relaxed") + "'");
+  ASSERT_EQ(run.status, 0) << run.output;
+  // Two load segments by default: a 2 × 2 grid of 900 × 480 panels.
+  expect_sane_png((dir.path() / "figures" / "mass-M1_loads.png").string(), 1800, 960);
+  for (const char* file :
+       {"relaxed_root_force.png", "relaxed_root_moment.png", "average_root_force.png"})
+    expect_sane_png((dir.path() / "figures" / file).string(), 1200, 600);
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "figures" / "mass-M1_root_force.png"));
+}
+
 TEST(GuiBatch, BadInputAndUsageExitWithStatus2) {
   saltus::test::TempDir dir;
   const saltus::test::CliRun missing =

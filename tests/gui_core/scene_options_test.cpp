@@ -15,5 +15,11 @@ TEST(SceneOptions, CameraPresetNamesRoundTrip) {
   EXPECT_FALSE(camera_preset_from_name("diagonal").has_value());
 }
 
+TEST(SceneOptions, KeyframeGhostsAreOffByDefault) {
+  // They clutter the follow camera; the View menu turns them on.
+  EXPECT_FALSE(SceneOptions{}.ghosts);
+  EXPECT_TRUE(SceneOptions{}.residual_arrows);
+}
+
 }  // namespace
 }  // namespace saltus::gui

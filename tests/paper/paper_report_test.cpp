@@ -64,8 +64,9 @@ TEST(PaperReport, QuickRunMeetsTheTargetsAndWritesEverySection) {
       const std::size_t end = md.find(')', at);
       const std::string figure = md.substr(at + 2, end - at - 2);
       EXPECT_TRUE(std::filesystem::exists(out + "/" + figure)) << figure;
-      if (std::filesystem::exists(out + "/" + figure))
+      if (std::filesystem::exists(out + "/" + figure)) {
         EXPECT_GT(std::filesystem::file_size(out + "/" + figure), 10000u) << figure;
+      }
       ++figures;
     }
     EXPECT_GE(figures, 1);

@@ -1,0 +1,109 @@
+#include "app/model_panel.h"
+
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QTableWidget>
+#include <QTimer>
+#include <QVBoxLayout>
+#include <limits>
+
+#include "core/model_edit.h"
+
+namespace saltus::gui {
+
+namespace {
+
+constexpr int kMassColumn = 1;
+constexpr int kFactorColumn = 2;
+
+}  // namespace
+
+ModelPanel::ModelPanel(QWidget* parent) : QWidget(parent) {
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(4, 4, 4, 4);
+  table_ = new QTableWidget(0, 3, this);
+  table_->setHorizontalHeaderLabels({tr("segment"), tr("mass (kg)"), tr("× loaded")});
+  table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+  table_->verticalHeader()->setVisible(false);
+  table_->setToolTip(tr("Edit a mass or a factor: the segment's mass and inertia scale together"));
+  layout->addWidget(table_, 1);
+  total_ = new QLabel(this);
+  layout->addWidget(total_);
+  auto* buttons = new QHBoxLayout;
+  reset_ = new QPushButton(tr("Reset masses"), this);
+  save_ = new QPushButton(tr("Save model…"), this);
+  buttons->addWidget(reset_);
+  buttons->addWidget(save_);
+  layout->addLayout(buttons);
+  problem_ = new QLabel(this);
+  problem_->setWordWrap(true);
+  problem_->setStyleSheet("color: #b00020;");
+  layout->addWidget(problem_);
+
+  connect(table_, &QTableWidget::itemChanged, this, &ModelPanel::on_item_changed);
+  connect(reset_, &QPushButton::clicked, this, [this] {
+    if (loaded_)
+      emit factors_edited(std::vector<double>(static_cast<std::size_t>(loaded_->size()), 1.0));
+  });
+  connect(save_, &QPushButton::clicked, this, &ModelPanel::save_requested);
+  set_model(nullptr, nullptr);
+}
+
+void ModelPanel::set_model(const BodyModel* loaded, const BodyModel* current) {
+  loaded_ = loaded;
+  current_ = current;
+  const QSignalBlocker block(table_);
+  const int rows = current_ && loaded_ ? current_->size() : 0;
+  table_->setRowCount(rows);
+  for (int i = 0; i < rows; ++i) {
+    const Segment& s = current_->segments[static_cast<std::size_t>(i)];
+    const double factor = s.mass / loaded_->segments[static_cast<std::size_t>(i)].mass;
+    auto* name = new QTableWidgetItem(QString::fromStdString(s.name));
+    name->setFlags(name->flags() & ~Qt::ItemIsEditable);
+    table_->setItem(i, 0, name);
+    table_->setItem(i, kMassColumn, new QTableWidgetItem(QString::number(s.mass, 'f', 3)));
+    table_->setItem(i, kFactorColumn, new QTableWidgetItem(QString::number(factor, 'g', 4)));
+  }
+  total_->setText(current_ ? tr("Model %1, total mass %2 kg")
+                                 .arg(QString::fromStdString(current_->name))
+                                 .arg(current_->total_mass(), 0, 'f', 2)
+                           : QString());
+  setEnabled(rows > 0);
+}
+
+std::vector<double> ModelPanel::factors() const {
+  std::vector<double> out;
+  for (int i = 0; i < table_->rowCount(); ++i)
+    out.push_back(table_->item(i, kFactorColumn)->text().toDouble());
+  return out;
+}
+
+void ModelPanel::show_problem(const QString& message) {
+  problem_->setText(message);
+}
+
+QString ModelPanel::problem() const {
+  return problem_->text();
+}
+
+void ModelPanel::on_item_changed(QTableWidgetItem* item) {
+  if (!loaded_ || !current_) return;
+  const int row = item->row();
+  bool ok = false;
+  const double value = item->text().toDouble(&ok);
+  std::vector<double> f;
+  for (int i = 0; i < current_->size(); ++i)
+    f.push_back(current_->segments[static_cast<std::size_t>(i)].mass /
+                loaded_->segments[static_cast<std::size_t>(i)].mass);
+  // Not a number: NaN, which the library rejects with its own message.
+  const double entered = ok ? value : std::numeric_limits<double>::quiet_NaN();
+  f[static_cast<std::size_t>(row)] =
+      item->column() == kMassColumn ? mass_factor_for(*loaded_, row, entered) : entered;
+  // After the table has finished with the edited item: the edit rebuilds the table.
+  QTimer::singleShot(0, this, [this, f] { emit factors_edited(f); });
+}
+
+}  // namespace saltus::gui

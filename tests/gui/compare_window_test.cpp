@@ -1,0 +1,151 @@
+// Compare: the test motion against itself evaluated with heavier thighs (a second model file,
+// as a user picks it), both 3D views drawn and the root force and moment overlaid; before vs
+// after of an optimisation; closing; bad input.
+
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QDir>
+#include <QTest>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+#include "app/compare_window.h"
+#include "app/main_window.h"
+#include "gui/support/image_checks.h"
+#include "gui_core/test_motion.h"
+
+#include "saltus/body/body_model.h"
+#include "support/cli_runner.h"
+
+namespace saltus::gui {
+namespace {
+
+class CompareWindowTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    window_ = std::make_unique<MainWindow>(false);
+    window_->resize(1280, 800);
+    window_->show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(window_.get()));
+    QString error;
+    ASSERT_TRUE(window_->open_motion(QString::fromStdString(test::gui_test_motion_path()), &error))
+        << error.toStdString();
+    QApplication::processEvents();
+  }
+  void TearDown() override {
+    window_->close();
+    window_.reset();
+  }
+
+  /// The open motion's model with both thighs 50 % heavier, written as a model file.
+  std::string scaled_model_file() {
+    BodyModel scaled = window_->document().file().model;
+    for (const char* thigh : {"thigh_l", "thigh_r"})
+      scaled = scale_segment_mass(scaled, thigh, 1.5);
+    scaled.name = "thighs x1.5";
+    const std::string path = dir_ / "thighs-heavy.json";
+    std::ofstream(path) << body_model_to_json(scaled).dump(2) << '\n';
+    return path;
+  }
+
+  saltus::test::TempDir dir_;
+  std::unique_ptr<MainWindow> window_;
+};
+
+void expect_drawn(const QImage& view, const char* name) {
+  ASSERT_FALSE(view.isNull()) << name;
+  EXPECT_GT(view.width(), 200) << name;
+  const test::BlankCheck check = test::blank_check(view);
+  EXPECT_GT(check.distinct_colours, 30) << name << " looks blank";
+  EXPECT_GT(check.non_background, 0.05) << name << " looks blank";
+}
+
+TEST_F(CompareWindowTest, SameMotionWithAScaledModelSideBySide) {
+  EXPECT_EQ(window_->compare_window(), nullptr);
+  QString error;
+  ASSERT_TRUE(window_->compare_with_model(QString::fromStdString(scaled_model_file()), &error))
+      << error.toStdString();
+  CompareWindow* compare = window_->compare_window();
+  ASSERT_NE(compare, nullptr);
+  compare->resize(1400, 900);
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(compare));
+  compare->seek(0.8);
+  QApplication::processEvents();
+  EXPECT_DOUBLE_EQ(compare->time(), 0.8);
+
+  // Both runs are the library's evaluations: the second uses the heavier model.
+  EXPECT_EQ(compare->run(1).document->file().model.name, "thighs x1.5");
+  EXPECT_GT(compare->run(1).document->file().model.total_mass(),
+            compare->run(0).document->file().model.total_mass());
+
+  const QImage first = compare->grab_view(0);
+  const QImage second = compare->grab_view(1);
+  expect_drawn(first, "first view");
+  expect_drawn(second, "second view");
+
+  // Twice the main window's series (three force components per run), in two colours.
+  const ChartSpec& force = compare->force_chart();
+  ASSERT_EQ(force.lines.size(), 6u);
+  EXPECT_EQ(compare->moment_chart().lines.size(), 6u);
+  EXPECT_NE(force.lines[0].label.find("zatsiorsky-66kg"), std::string::npos)
+      << force.lines[0].label;
+  EXPECT_NE(force.lines[3].label.find("thighs x1.5"), std::string::npos) << force.lines[3].label;
+  EXPECT_NE(force.lines[0].y, force.lines[3].y);  // heavier thighs change the root force
+
+  QDir().mkpath(SALTUS_GUI_CANDIDATE_DIR);
+  compare->grab().toImage().save(QString(SALTUS_GUI_CANDIDATE_DIR) + "/compare_window.png");
+
+  window_->close_compare();
+  EXPECT_EQ(window_->compare_window(), nullptr);
+}
+
+TEST_F(CompareWindowTest, BeforeAndAfterOfAnOptimisation) {
+  QString error;
+  EXPECT_FALSE(window_->compare_before_after(&error));  // nothing optimised yet
+  EXPECT_FALSE(error.isEmpty());
+  OptimizeSettings s;
+  s.max_iterations = 2;
+  s.samples = 21;
+  ASSERT_TRUE(window_->start_optimization(s, &error)) << error.toStdString();
+  ASSERT_TRUE(window_->wait_for_optimization(300000));
+  ASSERT_TRUE(window_->document().has_optimization());
+  ASSERT_TRUE(window_->compare_before_after(&error)) << error.toStdString();
+  CompareWindow* compare = window_->compare_window();
+  ASSERT_NE(compare, nullptr);
+  EXPECT_EQ(compare->run(0).stage, Stage::kBefore);
+  EXPECT_EQ(compare->run(1).stage, Stage::kAfter);
+  EXPECT_EQ(compare->force_chart().lines.size(), 6u);
+  // Closing the compare window leaves the main window as it was.
+  compare->close();
+  QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
+  EXPECT_EQ(window_->compare_window(), nullptr);
+  EXPECT_TRUE(window_->document().has_optimization());
+}
+
+TEST_F(CompareWindowTest, ResultFolderAndBadInputShowTheLibrarysMessage) {
+  // A `saltus optimize` folder, as a user would make it.
+  const saltus::test::CliRun cli = saltus::test::run_cli(
+      "optimize '" + test::gui_test_motion_path() + "' --max-iter 2 --samples 21 --quiet --out '" +
+      (dir_ / "relaxed") + "'");
+  ASSERT_TRUE(cli.status == 0 || cli.status == 3) << cli.output;
+  QString error;
+  ASSERT_TRUE(window_->compare_with_folder(QString::fromStdString(dir_ / "relaxed"), &error))
+      << error.toStdString();
+  ASSERT_NE(window_->compare_window(), nullptr);
+  EXPECT_EQ(window_->compare_window()->run(1).label, "relaxed (optimised)");
+
+  EXPECT_FALSE(window_->compare_with_folder(QString::fromStdString(dir_ / "absent"), &error));
+  EXPECT_NE(error.indexOf("absent"), -1) << error.toStdString();
+  const std::string bad = dir_ / "bad.motion.json";
+  std::ofstream(bad) << "{\"format\": \"saltus-motion/1\"}\n";
+  EXPECT_FALSE(window_->compare_with_motion(QString::fromStdString(bad), &error));
+  EXPECT_NE(error.indexOf("bad.motion.json"), -1) << error.toStdString();
+  // The window opened before is still there and unchanged.
+  ASSERT_NE(window_->compare_window(), nullptr);
+  EXPECT_EQ(window_->compare_window()->run(1).label, "relaxed (optimised)");
+}
+
+}  // namespace
+}  // namespace saltus::gui
