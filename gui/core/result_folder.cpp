@@ -243,9 +243,10 @@ MassStudyFolder read_mass_study_folder(const std::string& dir) {
 ChartSpec mass_load_chart(const MassStudyFolder& folder, std::size_t index, bool moment) {
   const SegmentLoadSeries& s = folder.loads.segments.at(index);
   ChartSpec chart;
-  const std::string motion = folder.motion.empty() ? folder.name : folder.motion;
-  chart.title = motion + ": " + (moment ? "moment" : "force") + " at the joint of " + s.segment +
-                " (optimised, given vs scaled masses)";
+  // Short enough for a 2×2 grid panel; the motion's name is in the folder and the legend names
+  // the two models.
+  chart.title = std::string(moment ? "Joint moment" : "Joint force") + " at " + s.segment +
+                " (optimised motion)";
   chart.x_title = "time (s)";
   chart.y_title = moment ? "joint moment magnitude (N·m)" : "joint force magnitude (N)";
   for (int r = 0; r < 2; ++r) {
