@@ -15,12 +15,12 @@ struct OptimizeSettings {
   double epsilon = 100.0;       ///< strict bound on each |F_i|, N or N·m
   bool optimize_timing = true;  ///< interior keyframe times are variables
   int knots_per_interval = 1;
-  int max_iterations = 100;
+  int max_iterations = SolverOptions{}.max_iterations;  ///< the library's (and CLI's) default
   int samples = kDefaultSamples;
 };
 
-/// `saltus optimize --tol`'s default.
-constexpr double kCliTolerance = 1e-8;
+/// `saltus optimize --tol`'s default: the library's.
+inline const double kCliTolerance = SolverOptions{}.tolerance;
 
 /// Ranges the panel enforces (the CLI's).
 constexpr int kMaxKnotsPerInterval = 50;
