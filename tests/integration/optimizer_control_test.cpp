@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <filesystem>
 
 #include "saltus/optim/optimize.h"
 #include "support/cli_runner.h"
@@ -52,6 +53,22 @@ TEST(OptimizerControl, SameInputSameOutput) {
   EXPECT_EQ(a.solve.x, b.solve.x);  // bit for bit
   EXPECT_EQ(a.after.metrics.objective, b.after.metrics.objective);
   EXPECT_EQ(a.after.keyframe_times, b.after.keyframe_times);
+}
+
+TEST(OptimizerControl, AnIpoptOptionsFileInTheWorkingFolderChangesNothing) {
+  // Ipopt reads ./ipopt.opt unless told not to; a stray one must not change our solver.
+  const MotionFile file = load_motion_file(test::m1_path());
+  OptimizeOptions options = quick_options();
+  options.solver.max_iterations = 8;
+  const OptimizationResult plain = optimize_motion(file.motion, file.model, options);
+  test::TempDir dir;
+  test::write_text(dir / "ipopt.opt", "max_iter 1\nprint_level 12\n");
+  const std::filesystem::path previous = std::filesystem::current_path();
+  std::filesystem::current_path(dir.path());
+  const OptimizationResult with_file = optimize_motion(file.motion, file.model, options);
+  std::filesystem::current_path(previous);
+  EXPECT_EQ(with_file.solve.iterations, plain.solve.iterations);
+  EXPECT_EQ(with_file.solve.x, plain.solve.x);
 }
 
 }  // namespace

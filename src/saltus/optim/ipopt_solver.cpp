@@ -198,7 +198,9 @@ SolveReport solve_with_ipopt(Nlp& nlp, const SolverOptions& options,
     app->Options()->SetIntegerValue("file_print_level", 5);
   }
   if (!nlp.has_hessian()) app->Options()->SetStringValue("hessian_approximation", "limited-memory");
-  if (app->Initialize() != Ipopt::Solve_Succeeded) {
+  // "": no options file. Ipopt would otherwise read ./ipopt.opt, and a stray file in the user's
+  // folder would silently change the solver (the same input must give the same output).
+  if (app->Initialize("") != Ipopt::Solve_Succeeded) {
     report.ipopt_status = "initialisation failed";
     return report;
   }
