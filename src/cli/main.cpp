@@ -253,20 +253,6 @@ saltus::OptimizeOptions study_optimize_options(const StudyArgs& args) {
   return o;
 }
 
-/// "M3-tucked-double-back.motion.json" -> "M3"; other files: the name without ".motion.json".
-std::string motion_label(const std::string& path) {
-  std::string stem = std::filesystem::path(path).filename().string();
-  const std::string suffix = ".motion.json";
-  if (stem.size() > suffix.size() &&
-      stem.compare(stem.size() - suffix.size(), suffix.size(), suffix) == 0)
-    stem.resize(stem.size() - suffix.size());
-  const std::size_t dash = stem.find('-');
-  if (stem.size() >= 2 && stem[0] == 'M' && std::isdigit(static_cast<unsigned char>(stem[1])) &&
-      dash != std::string::npos)
-    return stem.substr(0, dash);
-  return stem;
-}
-
 struct ConvergenceArgs {
   StudyArgs common;
   std::vector<std::string> motions;
@@ -304,7 +290,7 @@ void add_convergence(CLI::App* cmd, ConvergenceArgs& args) {
 int run_convergence(const ConvergenceArgs& args) {
   std::vector<saltus::LabelledMotion> motions;
   for (const std::string& path : args.motions)
-    motions.push_back({motion_label(path), saltus::load_motion_file(path)});
+    motions.push_back({saltus::motion_label(path), saltus::load_motion_file(path)});
   saltus::ConvergenceStudyOptions options;
   options.optimize = study_optimize_options(args.common);
   options.epsilons = args.epsilons;

@@ -6,9 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "saltus/io/trajectory_csv.h"
 #include "support/cli_runner.h"
@@ -20,13 +18,6 @@ using test::m1_path;
 using test::run_cli;
 using test::TempDir;
 
-std::string read(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 TEST(CliStudy, ConvergenceWritesOneRowPerCaseAndTheRelaxedModelSolves) {
   TempDir dir;
   const auto run =
@@ -34,7 +25,7 @@ TEST(CliStudy, ConvergenceWritesOneRowPerCaseAndTheRelaxedModelSolves) {
               " --epsilons 1 --mass-errors -10,0 --timing-errors 0,0.05 --samples 41 --max-iter 60 "
               "--quiet");
   ASSERT_EQ(run.status, 0) << run.output;
-  const auto result = nlohmann::json::parse(read(dir / "c/result.json"));
+  const auto result = nlohmann::json::parse(test::read_text(dir / "c/result.json"));
   // relaxed + strict ε=1, 2 mass errors, 2 timing errors.
   ASSERT_EQ(result["cases"].size(), 8u);
   int relaxed_solved = 0, strict_solved = 0;
@@ -44,9 +35,9 @@ TEST(CliStudy, ConvergenceWritesOneRowPerCaseAndTheRelaxedModelSolves) {
   // |F_i| <= 1 N at every sample is beyond this motion at K = 1 (its relaxed optimum peaks near
   // 3 N): the strict model must not report success.
   EXPECT_EQ(strict_solved, 0);
-  const std::string csv = read(dir / "c/convergence.csv");
+  const std::string csv = test::read_text(dir / "c/convergence.csv");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 9);  // header + 8 cases
-  const std::string md = read(dir / "c/convergence.md");
+  const std::string md = test::read_text(dir / "c/convergence.md");
   EXPECT_NE(md.find("| relaxed | 4 | 4 (100 %)"), std::string::npos) << md;
 }
 
@@ -69,7 +60,7 @@ TEST(CliStudy, MassWritesTheJointLoadsOfBothModelsOverTime) {
   }
   // Heavier thighs need larger forces at the hip to be moved the same way.
   EXPECT_GT(ratio_sum / csv.rows.size(), 1.1);
-  const auto result = nlohmann::json::parse(read(dir / "m/result.json"));
+  const auto result = nlohmann::json::parse(test::read_text(dir / "m/result.json"));
   EXPECT_EQ(result["runs"].size(), 2u);
   EXPECT_TRUE(std::filesystem::exists(dir / "m/model_scaled.json"));
 }

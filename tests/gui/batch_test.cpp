@@ -14,16 +14,7 @@ namespace saltus::gui {
 namespace {
 
 saltus::test::CliRun run_gui(const std::string& arguments) {
-  const std::string command = std::string(SALTUS_GUI_PATH) + " " + arguments + " 2>&1";
-  saltus::test::CliRun run;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return run;
-  std::array<char, 4096> buffer{};
-  while (fgets(buffer.data(), buffer.size(), pipe))
-    run.output += buffer.data();
-  const int raw = pclose(pipe);
-  run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return run;
+  return saltus::test::run_command(std::string(SALTUS_GUI_PATH) + " " + arguments);
 }
 
 void expect_sane_png(const std::string& path, int min_width, int min_height) {

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "saltus/analysis/studies.h"
 #include "saltus/io/study_outputs.h"
 #include "saltus/motion/motion.h"
 #include "saltus/optim/optimize.h"
@@ -38,7 +39,7 @@ class BundledMotion : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(BundledMotion, RelaxedModelSolvesBeatsThePaperAndRefinesBelowOneNewton) {
   const MotionFile file = load_motion_file(GetParam());
-  const std::string label = std::filesystem::path(GetParam()).filename().string().substr(0, 2);
+  const std::string label = motion_label(GetParam());
   for (const int knots_per_interval : {1, 3}) {
     OptimizeOptions options;
     options.nlp.knots_per_interval = knots_per_interval;

@@ -5,9 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include <cstdio>
 #include <filesystem>
@@ -17,28 +15,16 @@
 namespace saltus {
 namespace {
 
-std::string read(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 TEST(PaperReport, QuickRunMeetsTheTargetsAndWritesEverySection) {
   test::TempDir dir;
   const std::string out = dir / "report";
   // The one command of examples/README.md, on the binaries of this build.
   const std::string command = "SALTUS_BIN=" + std::string(SALTUS_BIN_DIR) + " bash " +
                               std::string(SALTUS_TOOLS_DIR) + "/paper_report.sh " + out +
-                              " --quick --quiet 2>&1";
-  std::string output;
-  FILE* pipe = popen(command.c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
-  char buffer[4096];
-  while (fgets(buffer, sizeof buffer, pipe))
-    output += buffer;
-  ASSERT_EQ(pclose(pipe), 0) << output;
-  const auto result = nlohmann::json::parse(read(out + "/result.json"));
+                              " --quick --quiet";
+  const test::CliRun run = test::run_command(command);
+  ASSERT_EQ(run.status, 0) << run.output;
+  const auto result = nlohmann::json::parse(test::read_text(out + "/result.json"));
   ASSERT_GE(result["table1"].size(), 1u);
   for (const auto& row : result["table1"]) {
     const std::string skill = row["skill"];
@@ -51,7 +37,7 @@ TEST(PaperReport, QuickRunMeetsTheTargetsAndWritesEverySection) {
     EXPECT_TRUE(std::filesystem::exists(out + "/" + skill + "/trajectory_after.csv")) << skill;
   }
   EXPECT_EQ(result["convergence_relaxed_solved"], result["convergence_relaxed_cases"]);
-  const std::string md = read(out + "/report.md");
+  const std::string md = test::read_text(out + "/report.md");
   for (const char* section : {"## Table 1", "Our keyframes are our own", "Figs. 4 and 5", "Fig. 8",
                               "Fig. 9", "## Convergence study"})
     EXPECT_NE(md.find(section), std::string::npos) << section;

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <random>
 #include <string>
 
@@ -17,8 +18,9 @@ struct CliRun {
   std::string output;  ///< stdout and stderr together
 };
 
-inline CliRun run_cli(const std::string& arguments) {
-  const std::string command = std::string(SALTUS_CLI_PATH) + " " + arguments + " 2>&1";
+/// Runs a shell command line, capturing stdout and stderr together.
+inline CliRun run_command(const std::string& command_line) {
+  const std::string command = command_line + " 2>&1";
   CliRun run;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return run;
@@ -28,6 +30,11 @@ inline CliRun run_cli(const std::string& arguments) {
   const int raw = pclose(pipe);
   run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
   return run;
+}
+
+/// Runs `saltus ARGUMENTS`.
+inline CliRun run_cli(const std::string& arguments) {
+  return run_command(std::string(SALTUS_CLI_PATH) + " " + arguments);
 }
 
 /// A fresh empty folder under the system temp dir, removed when the object dies.
@@ -50,6 +57,12 @@ class TempDir {
  private:
   std::filesystem::path path_;
 };
+
+/// The whole file as a string ("" if it cannot be read).
+inline std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
 
 inline void write_text(const std::string& path, const std::string& text) {
   std::ofstream(path) << text;

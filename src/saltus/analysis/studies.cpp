@@ -1,8 +1,10 @@
 #include "saltus/analysis/studies.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <random>
 #include <sstream>
@@ -77,6 +79,21 @@ const Vector6d& load(const SampleRecord& sample, int segment) {
 }
 
 }  // namespace
+
+std::string motion_label(const std::string& path) {
+  std::string stem = std::filesystem::path(path).filename().string();
+  const std::string suffix = ".motion.json";
+  if (stem.size() > suffix.size() &&
+      stem.compare(stem.size() - suffix.size(), suffix.size(), suffix) == 0)
+    stem.resize(stem.size() - suffix.size());
+  if (stem.size() >= 2 && stem[0] == 'M' && std::isdigit(static_cast<unsigned char>(stem[1]))) {
+    std::size_t end = 1;
+    while (end < stem.size() && std::isdigit(static_cast<unsigned char>(stem[end])))
+      ++end;
+    return stem.substr(0, end);
+  }
+  return stem;
+}
 
 Motion disturb_keyframe_times(const Motion& motion, double amplitude, unsigned seed,
                               double min_gap_s) {

@@ -22,6 +22,10 @@ struct LabelledMotion {
   MotionFile file;
 };
 
+/// Short label of a motion file for tables and folder names: "M3-tucked-double-back.motion.json"
+/// -> "M3"; any other file: its name without ".motion.json".
+std::string motion_label(const std::string& path);
+
 /// One optimisation of the convergence study.
 struct StudyCase {
   std::string motion;  ///< LabelledMotion::label

@@ -46,19 +46,6 @@ nlohmann::json outcome_json(const StudyOutcome& o) {
           {"avg_force_after_N", o.avg_force_after}};
 }
 
-/// "M3-tucked-double-back.motion.json" -> "M3"; other files: the name without ".motion.json".
-std::string motion_label(const std::filesystem::path& path) {
-  std::string stem = path.filename().string();
-  stem = stem.substr(0, stem.size() - std::string(".motion.json").size());
-  if (stem.size() >= 2 && stem[0] == 'M' && std::isdigit(static_cast<unsigned char>(stem[1]))) {
-    std::size_t end = 1;
-    while (end < stem.size() && std::isdigit(static_cast<unsigned char>(stem[end])))
-      ++end;
-    return stem.substr(0, end);
-  }
-  return stem;
-}
-
 struct Table1Row {
   std::string label;
   std::string name;
@@ -196,7 +183,7 @@ nlohmann::json write_paper_report(const std::string& out_dir, const PaperReportO
   for (const auto& entry : fs::directory_iterator(options.motions_dir)) {
     const std::string name = entry.path().filename().string();
     if (name.size() <= 12 || name.substr(name.size() - 12) != ".motion.json") continue;
-    const std::string label = motion_label(entry.path());
+    const std::string label = motion_label(entry.path().string());
     if (paper_table1(label))
       skills.emplace_back(label, entry.path());
     else if (name.rfind("dive", 0) == 0)
