@@ -57,6 +57,10 @@ std::vector<ResultRow> result_table(const OptimizationResult& r, const OptimizeO
       {"model", "", strict ? "strict, ε = " + number("%g", options.nlp.epsilon) : "relaxed"});
   rows.push_back({"keyframes", std::to_string(r.before.keyframe_times.size()),
                   std::to_string(r.after.keyframe_times.size())});
+  // K before is the one asked for; after, the one used (optimize_motion refines the knots when
+  // the interpolation cannot pass through the keyframes).
+  rows.push_back({"knots per keyframe interval K", std::to_string(options.nlp.knots_per_interval),
+                  std::to_string(r.knots_per_interval)});
   rows.push_back({"variables", "", std::to_string(r.variables)});
   rows.push_back({"constraints", "", std::to_string(r.constraints)});
   rows.push_back({"objective J (N²)", number("%.4g", b.objective), number("%.4g", a.objective)});
@@ -71,6 +75,9 @@ std::vector<ResultRow> result_table(const OptimizationResult& r, const OptimizeO
   rows.push_back(
       {"max root moment (N·m)", number("%.4g", b.max_moment_Nm), number("%.4g", a.max_moment_Nm)});
   rows.push_back({"iterations", "", std::to_string(r.solve.iterations)});
+  if (r.solve.restarts > 0)
+    rows.push_back(
+        {"restarts from the best feasible iterate", "", std::to_string(r.solve.restarts)});
   rows.push_back({"seconds", "", number("%.2f", r.solve.seconds)});
   rows.push_back({"keyframe times (s)", times_text(r.before.keyframe_times),
                   times_text(r.after.keyframe_times)});

@@ -37,8 +37,9 @@ struct ResultRow {
   std::string after;
 };
 
-/// Keyframes, variables, constraints, objective and average root force before/after,
-/// iterations, seconds, status, RMS/peak force and moment, keyframe times and errors.
+/// Keyframes, knot refinement (asked/used), variables, constraints, objective and average root
+/// force before/after, iterations (and restarts), seconds, status, RMS/peak force and moment,
+/// keyframe times and errors.
 std::vector<ResultRow> result_table(const OptimizationResult& result,
                                     const OptimizeOptions& options);
 

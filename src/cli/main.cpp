@@ -201,6 +201,15 @@ int run_optimize(const OptimizeArgs& args) {
                 args.formulation.c_str(), result.variables, result.constraints,
                 result.solve.status.c_str(), result.solve.ipopt_status.c_str(),
                 result.solve.iterations, result.solve.seconds);
+    if (result.knots_per_interval != args.common.knots_per_interval)
+      std::printf(
+          "  knots refined to %d per keyframe interval: on %d the interpolation misses the "
+          "keyframes by more than their tolerance (a turn of more than 180 deg between control "
+          "points)\n",
+          result.knots_per_interval, args.common.knots_per_interval);
+    if (result.solve.restarts > 0)
+      std::printf("  the solver restarted %d time(s) from its best feasible iterate\n",
+                  result.solve.restarts);
     std::printf("  average root force sqrt(J/6): %.4g N before, %.4g N after\n",
                 result.before.metrics.avg_root_force, result.after.metrics.avg_root_force);
     std::printf("  root force  RMS %.4g -> %.4g N, max %.4g -> %.4g N\n",

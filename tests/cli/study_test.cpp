@@ -20,10 +20,10 @@ using test::TempDir;
 
 TEST(CliStudy, ConvergenceWritesOneRowPerCaseAndTheRelaxedModelSolves) {
   TempDir dir;
-  const auto run =
-      run_cli("study convergence " + m1_path() + " --out " + (dir / "c") +
-              " --epsilons 1 --mass-errors -10,0 --timing-errors 0,0.05 --samples 41 --max-iter 60 "
-              "--quiet");
+  const auto run = run_cli(
+      "study convergence " + m1_path() + " --out " + (dir / "c") +
+      " --epsilons 1 --mass-errors -10,0 --timing-errors 0,0.05 --samples 41 --max-iter 100 "
+      "--quiet");
   ASSERT_EQ(run.status, 0) << run.output;
   const auto result = nlohmann::json::parse(test::read_text(dir / "c/result.json"));
   // relaxed + strict ε=1, 2 mass errors, 2 timing errors.

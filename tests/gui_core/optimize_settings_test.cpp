@@ -107,6 +107,9 @@ TEST_F(OptimizedMotion, ResultTableHasTheRequiredRows) {
     EXPECT_NE(find(name), nullptr) << name;
   EXPECT_EQ(find("variables")->after, std::to_string(result_->variables));
   EXPECT_EQ(find("iterations")->after, std::to_string(result_->solve.iterations));
+  ASSERT_NE(find("knots per keyframe interval K"), nullptr);
+  EXPECT_EQ(find("knots per keyframe interval K")->after,
+            std::to_string(result_->knots_per_interval));
   EXPECT_EQ(find("keyframes")->before, std::to_string(file_->motion.keyframes.size()));
 }
 

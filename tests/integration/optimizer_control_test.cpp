@@ -7,6 +7,7 @@
 #include <atomic>
 #include <filesystem>
 
+#include "saltus/analysis/studies.h"
 #include "saltus/optim/optimize.h"
 #include "support/cli_runner.h"
 
@@ -37,7 +38,8 @@ TEST(OptimizerControl, CancelStopsCleanlyWithACompleteResult) {
   ASSERT_EQ(iterations_seen.size(), 4u);  // iterations 0..3, once each
   for (int i = 0; i < 4; ++i)
     EXPECT_EQ(iterations_seen[i], i);
-  // The result is still whole: the last iterate, evaluated on the full grid.
+  // The result is still whole: the last iterate (better than any earlier one that met the
+  // keyframes), evaluated on the full grid.
   EXPECT_EQ(r.after.samples.size(), 41u);
   EXPECT_EQ(r.after.keyframe_times.size(), file.motion.keyframes.size());
   EXPECT_LT(r.after.metrics.avg_root_force, r.before.metrics.avg_root_force);
@@ -69,6 +71,33 @@ TEST(OptimizerControl, AnIpoptOptionsFileInTheWorkingFolderChangesNothing) {
   std::filesystem::current_path(previous);
   EXPECT_EQ(with_file.solve.iterations, plain.solve.iterations);
   EXPECT_EQ(with_file.solve.x, plain.solve.x);
+}
+
+TEST(OptimizerControl, RefinesTheKnotsWhenTheInterpolationMissesTheKeyframes) {
+  // M3 (tucked double) with its interior keyframe times 0.1 s off: two keyframes 2.3 rad apart
+  // end up 0.08 s apart, next to 2.4 rad in 0.28 s. With knots at the keyframes only, the
+  // quaternion spline would need more than 180° between control points and cannot pass through
+  // them; one refinement (K = 2) can.
+  const MotionFile file = load_motion_file(std::string(SALTUS_EXAMPLES_DIR) +
+                                           "/motions/M3-tucked-double-back.motion.json");
+  const Motion disturbed = disturb_keyframe_times(file.motion, 0.1, 1);
+  OptimizeOptions options;
+  options.solver.max_iterations = 0;  // only the start matters here
+  options.refine_when_keyframes_missed = false;
+  const OptimizationResult as_asked = optimize_motion(disturbed, file.model, options);
+  EXPECT_EQ(as_asked.knots_per_interval, 1);
+  EXPECT_GT(as_asked.before.keyframe_errors.max_quaternion_error, 0.05);
+
+  options.refine_when_keyframes_missed = true;
+  const OptimizationResult refined = optimize_motion(disturbed, file.model, options);
+  EXPECT_EQ(refined.knots_per_interval, 2);
+  EXPECT_LE(refined.before.keyframe_errors.max_quaternion_error, 0.05);
+  EXPECT_LE(refined.before.keyframe_errors.max_translation_error_m, 0.25);
+  EXPECT_GT(refined.variables, as_asked.variables);  // more control points
+
+  // The undisturbed motion is met on knots at the keyframes: no refinement.
+  const OptimizationResult plain = optimize_motion(file.motion, file.model, options);
+  EXPECT_EQ(plain.knots_per_interval, 1);
 }
 
 }  // namespace

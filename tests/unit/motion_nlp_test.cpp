@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <limits>
 #include <random>
 
 #include "saltus/motion/interpolate.h"
@@ -160,6 +161,90 @@ TEST(NlpHessian, IsDampedGaussNewtonOfTheRootWrench) {
     if (i % layout.curve_block() >= 3) expected += 2.0 * w * v[i] * v[i];
   const double actual = v.dot(h * v);
   EXPECT_NEAR(actual, expected, 1e-5 * expected);
+}
+
+TEST(NlpKeyframeRows, AreInUnitsOfTheirTolerance) {
+  // Rotation rows are ‖Q − Q̄‖²/ε2², recomputed here from the trajectory the variables describe;
+  // the rows' upper bound sits kKeyframeBoundMargin inside 1. A non-default ε2 proves the scale.
+  NlpAtRandomPoint s(Formulation::kRelaxed, 1, 13);
+  s.motion.tolerances.quaternion = 0.08;
+  s.motion.tolerances.translation_m = 0.4;
+  InterpolationOptions interpolation;
+  MotionNlpOptions options;
+  options.samples = 23;
+  MotionNlp nlp(s.motion, s.model, interpolate_keyframes(s.motion, s.model, interpolation),
+                options);
+  const int m = nlp.constraint_count();
+  std::vector<double> g(m), x_lower(nlp.variable_count()), x_upper(nlp.variable_count()),
+      g_lower(m), g_upper(m);
+  nlp.constraints(s.x.data(), g.data());
+  nlp.bounds(x_lower.data(), x_upper.data(), g_lower.data(), g_upper.data());
+
+  const TrajectoryLayout& layout = nlp.layout();
+  const Trajectory<double> trajectory = trajectory_from(layout, nlp.reference(), s.x.data());
+  const std::vector<double> times = keyframe_times_from(layout, nlp.reference(), s.x.data());
+  const int first_rotation_row = 3 * layout.keyframe_count;
+  int checked = 0;
+  for (int i = 0; i < layout.keyframe_count; ++i) {
+    for (int k = 0; k < layout.segment_count; ++k) {
+      const Eigen::Quaterniond q = trajectory.rotations[k].evaluate(times[i]).q;
+      const Eigen::Quaterniond& target = s.motion.keyframes[i].rotations[k];
+      const double distance =
+          std::min((q.coeffs() - target.coeffs()).norm(), (q.coeffs() + target.coeffs()).norm());
+      const int row = first_rotation_row + i * layout.segment_count + k;
+      EXPECT_NEAR(g[row], distance * distance / (0.08 * 0.08), 1e-9) << "keyframe " << i;
+      EXPECT_DOUBLE_EQ(g_upper[row], 1.0 - kKeyframeBoundMargin);
+      checked += distance > 0.01;
+    }
+  }
+  EXPECT_GT(checked, 10);  // the random point is away from the keyframes
+  for (int row = 0; row < first_rotation_row; ++row) {
+    EXPECT_DOUBLE_EQ(g_upper[row], 1.0 - kKeyframeBoundMargin);
+    EXPECT_DOUBLE_EQ(g_lower[row], -(1.0 - kKeyframeBoundMargin));
+  }
+}
+
+TEST(NlpThreads, GiveBitForBitTheValuesOfOneThread) {
+  NlpAtRandomPoint s(Formulation::kRelaxed, 2, 17);
+  InterpolationOptions interpolation;
+  interpolation.knots_per_interval = 2;
+  const Trajectory<double> initial = interpolate_keyframes(s.motion, s.model, interpolation);
+  std::vector<std::vector<double>> gradients;
+  std::vector<double> objectives;
+  for (int threads : {1, 3}) {
+    MotionNlpOptions options;
+    options.knots_per_interval = 2;
+    options.samples = 90;
+    options.threads = threads;
+    MotionNlp nlp(s.motion, s.model, initial, options);
+    objectives.push_back(nlp.objective(s.x.data()));
+    gradients.emplace_back(nlp.variable_count());
+    nlp.gradient(s.x.data(), gradients.back().data());
+  }
+  EXPECT_EQ(objectives[0], objectives[1]);
+  EXPECT_EQ(gradients[0], gradients[1]);
+}
+
+TEST(Solver, StoppedEarlyReturnsTheBetterOfItsLastAndItsBestFeasibleIterate) {
+  // Stopped by the iteration limit, the solver hands back its last iterate unless an earlier one
+  // that met the constraints (as the progress reports show) had a lower objective.
+  const MotionFile m1 = load_motion_file(std::string(SALTUS_EXAMPLES_DIR) +
+                                         "/motions/M1-straight-back-somersault.motion.json");
+  const Trajectory<double> initial = interpolate_keyframes(m1.motion, m1.model, {});
+  MotionNlp nlp(m1.motion, m1.model, initial, MotionNlpOptions{});
+  for (int limit : {3, 12, 28}) {
+    SolverOptions options;
+    options.max_iterations = limit;
+    double best_feasible = std::numeric_limits<double>::infinity(), last = 0.0;
+    const SolveReport report = solve_with_ipopt(nlp, options, [&](const ProgressInfo& p) {
+      if (p.constraint_violation <= options.acceptable_constraint_violation)
+        best_feasible = std::min(best_feasible, p.objective);
+      last = p.objective;
+    });
+    ASSERT_FALSE(report.solved) << "M1 is expected to need more than " << limit << " iterations";
+    EXPECT_DOUBLE_EQ(report.objective, std::min(last, best_feasible)) << limit;
+    EXPECT_NEAR(nlp.objective(report.x.data()), report.objective, 1e-9 * report.objective);
+  }
 }
 
 }  // namespace

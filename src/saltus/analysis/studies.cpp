@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <random>
 #include <sstream>
@@ -172,6 +173,8 @@ StudyOutcome run_study_case(const LabelledMotion& motion, const StudyCase& study
   o.avg_force_after = r.after.metrics.avg_root_force;
   o.max_force_after = r.after.metrics.max_force_N;
   o.max_quaternion_error = r.after.keyframe_errors.max_quaternion_error;
+  o.knots_per_interval = r.knots_per_interval;
+  o.restarts = r.solve.restarts;
   return o;
 }
 
@@ -228,6 +231,25 @@ std::string convergence_markdown(const std::vector<StudyOutcome>& outcomes) {
         << format("%.3g", median(force)) << " | "
         << (solved ? format("%.3g", worst) : std::string("–")) << " |\n";
   }
+  // Cases whose interpolation could not meet the keyframes on the requested knots ran refined.
+  std::map<std::string, int> refined;
+  int requested = std::numeric_limits<int>::max();
+  for (const StudyOutcome& o : outcomes)
+    requested = std::min(requested, o.knots_per_interval);
+  for (const StudyOutcome& o : outcomes)
+    if (o.knots_per_interval > requested)
+      ++refined[o.study_case.motion + format(" at ±%g s", o.study_case.timing_error_s)];
+  if (!refined.empty()) {
+    out << "\nRun with refined knots (K > " << requested
+        << ") because the interpolation on the requested knots missed the keyframes by more than "
+           "their tolerance (a turn of more than 180° between control points): ";
+    bool first = true;
+    for (const auto& [where, count] : refined) {
+      out << (first ? "" : ", ") << where << " (" << count << " cases)";
+      first = false;
+    }
+    out << ".\n";
+  }
   out << "\nSolved cases by motion:\n\n"
       << success_table(outcomes, "motion", [](const StudyCase& c) { return c.motion; })
       << "\nSolved cases by mass-parameter error (masses and inertias scaled; segment in "
@@ -243,7 +265,7 @@ std::string convergence_csv(const std::vector<StudyOutcome>& outcomes) {
   std::ostringstream out;
   out << "motion,formulation,epsilon,mass_segment,mass_error,timing_error_s,status,solved,"
          "iterations,seconds,variables,constraints,avg_force_before_N,avg_force_after_N,"
-         "max_force_after_N,max_quaternion_error\n";
+         "max_force_after_N,max_quaternion_error,knots_per_interval,restarts\n";
   out.precision(10);
   for (const StudyOutcome& o : outcomes) {
     const StudyCase& c = o.study_case;
@@ -251,7 +273,8 @@ std::string convergence_csv(const std::vector<StudyOutcome>& outcomes) {
         << c.epsilon << ',' << c.mass_segment << ',' << c.mass_error << ',' << c.timing_error_s
         << ',' << o.status << ',' << (o.solved ? 1 : 0) << ',' << o.iterations << ',' << o.seconds
         << ',' << o.variables << ',' << o.constraints << ',' << o.avg_force_before << ','
-        << o.avg_force_after << ',' << o.max_force_after << ',' << o.max_quaternion_error << '\n';
+        << o.avg_force_after << ',' << o.max_force_after << ',' << o.max_quaternion_error << ','
+        << o.knots_per_interval << ',' << o.restarts << '\n';
   }
   return out.str();
 }

@@ -48,6 +48,8 @@ struct StudyOutcome {
   double avg_force_after = 0.0;
   double max_force_after = 0.0;       ///< N
   double max_quaternion_error = 0.0;  ///< of the result, vs the (disturbed) keyframes
+  int knots_per_interval = 1;  ///< K used (raised when the interpolation missed the keyframes)
+  int restarts = 0;            ///< solver restarts from its best feasible iterate
 };
 
 struct ConvergenceStudyOptions {

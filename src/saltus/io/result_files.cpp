@@ -133,9 +133,11 @@ nlohmann::json optimization_result_json(const MotionFile& file, const Optimizati
                                         const OptimizeOptions& options) {
   EvaluateOptions evaluate;
   evaluate.samples = options.nlp.samples;
-  evaluate.interpolation.knots_per_interval = options.nlp.knots_per_interval;
+  evaluate.interpolation.knots_per_interval = result.knots_per_interval;  // the one used
   nlohmann::json r = base_result(file, evaluate, result.solve.status);
+  r["knots_per_interval_requested"] = options.nlp.knots_per_interval;
   r["ipopt_status"] = result.solve.ipopt_status;
+  r["restarts"] = result.solve.restarts;
   r["formulation"] = options.nlp.formulation == Formulation::kRelaxed ? "relaxed" : "strict";
   if (options.nlp.formulation == Formulation::kStrict) r["epsilon"] = options.nlp.epsilon;
   r["timing_optimized"] = options.nlp.optimize_timing;

@@ -1,10 +1,14 @@
 #include "saltus/optim/ipopt_solver.h"
 
+#include <IpDenseVector.hpp>
 #include <IpIpoptApplication.hpp>
 #include <IpIpoptData.hpp>
+#include <IpIteratesVector.hpp>
 #include <IpTNLP.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 namespace saltus {
 
@@ -13,15 +17,33 @@ namespace {
 using Ipopt::Index;
 using Ipopt::Number;
 
+/// The lowest-objective iterate whose constraints were met (to the acceptable violation), over
+/// every run of one solve.
+struct BestIterate {
+  std::vector<double> x;
+  double objective = std::numeric_limits<double>::infinity();
+  bool found() const { return !x.empty(); }
+};
+
+/// One Ipopt run. Iterations are numbered on from `first_iteration` (earlier runs of the same
+/// solve) in progress reports.
 class NlpAdapter : public Ipopt::TNLP {
  public:
-  NlpAdapter(Nlp& nlp, const ProgressCallback& progress, const std::atomic<bool>* cancel,
-             SolveReport& report)
+  NlpAdapter(Nlp& nlp, const SolverOptions& options, const ProgressCallback& progress,
+             const std::atomic<bool>* cancel, const std::vector<double>* start, int first_iteration,
+             SolveReport& report, BestIterate& best)
       : nlp_(nlp),
+        options_(options),
         progress_(progress),
         cancel_(cancel),
+        start_(start),
+        first_iteration_(first_iteration),
         report_(report),
-        start_(std::chrono::steady_clock::now()) {}
+        best_(best),
+        start_time_(std::chrono::steady_clock::now()) {}
+
+  /// True when the run was stopped because it stalled (see SolverOptions::stall_iterations).
+  bool stalled() const { return stalled_; }
 
   bool get_nlp_info(Index& n, Index& m, Index& nnz_jac_g, Index& nnz_h_lag,
                     IndexStyleEnum& index_style) override {
@@ -41,7 +63,12 @@ class NlpAdapter : public Ipopt::TNLP {
   bool get_starting_point(Index, bool init_x, Number* x, bool init_z, Number*, Number*, Index,
                           bool init_lambda, Number*) override {
     if (init_z || init_lambda) return false;  // no warm start of multipliers
-    if (init_x) nlp_.initial_point(x);
+    if (init_x) {
+      if (start_)
+        std::copy(start_->begin(), start_->end(), x);
+      else
+        nlp_.initial_point(x);
+    }
     return true;
   }
 
@@ -74,19 +101,37 @@ class NlpAdapter : public Ipopt::TNLP {
     return true;
   }
 
-  bool intermediate_callback(Ipopt::AlgorithmMode, Index iter, Number obj_value, Number inf_pr,
+  bool intermediate_callback(Ipopt::AlgorithmMode mode, Index iter, Number obj_value, Number inf_pr,
                              Number, Number, Number, Number, Number, Number, Index,
-                             const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
-    report_.iterations = iter;
+                             const Ipopt::IpoptData* ip_data,
+                             Ipopt::IpoptCalculatedQuantities*) override {
+    report_.iterations = first_iteration_ + iter;
+    if (mode == Ipopt::RegularMode && obj_value < best_.objective) {
+      // Progress: a feasible iterate better than the best one, or an infeasible one below it
+      // (the usual way to approach a constrained optimum), but only the former is kept.
+      if (inf_pr <= options_.acceptable_constraint_violation && remember(ip_data)) {
+        best_.objective = obj_value;
+        best_iteration_ = iter;
+      }
+      if (best_.found()) last_improvement_ = iter;
+    }
     if (progress_) {
       ProgressInfo info;
-      info.iteration = iter;
+      info.iteration = report_.iterations;
       info.objective = obj_value;
       info.constraint_violation = inf_pr;
       info.elapsed_seconds = elapsed();
       progress_(info);
     }
-    return !(cancel_ && cancel_->load());
+    if (cancel_ && cancel_->load()) return false;
+    // A restart from this run's own starting point would retrace the same path: only a best
+    // iterate found during the run (iteration > 0) is worth restarting from.
+    if (options_.stall_iterations > 0 && best_iteration_ > 0 &&
+        iter - last_improvement_ >= options_.stall_iterations) {
+      stalled_ = true;
+      return false;
+    }
+    return true;
   }
 
   void finalize_solution(Ipopt::SolverReturn status, Index n, const Number* x, const Number*,
@@ -95,7 +140,7 @@ class NlpAdapter : public Ipopt::TNLP {
                          Ipopt::IpoptCalculatedQuantities*) override {
     report_.x.assign(x, x + n);
     report_.objective = obj_value;
-    if (ip_data) report_.iterations = ip_data->iter_count();
+    if (ip_data) report_.iterations = first_iteration_ + ip_data->iter_count();
     using Ipopt::SolverReturn;
     switch (status) {
       case Ipopt::SUCCESS:
@@ -131,15 +176,34 @@ class NlpAdapter : public Ipopt::TNLP {
   }
 
   double elapsed() const {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time_).count();
   }
 
  private:
+  /// Copies Ipopt's current x into best_. Ipopt's internal x is the TNLP's x here: no scaling
+  /// (nlp_scaling_method none) and no fixed variables (no variable has equal bounds); the
+  /// dimension check guards that assumption.
+  bool remember(const Ipopt::IpoptData* ip_data) {
+    if (!ip_data || !IsValid(ip_data->curr())) return false;
+    const auto* x = dynamic_cast<const Ipopt::DenseVector*>(Ipopt::GetRawPtr(ip_data->curr()->x()));
+    if (!x || x->Dim() != nlp_.variable_count()) return false;
+    const double* values = x->ExpandedValues();
+    best_.x.assign(values, values + x->Dim());
+    return true;
+  }
+
   Nlp& nlp_;
+  const SolverOptions& options_;
   const ProgressCallback& progress_;
   const std::atomic<bool>* cancel_;
+  const std::vector<double>* start_;
+  int first_iteration_ = 0;
   SolveReport& report_;
-  std::chrono::steady_clock::time_point start_;
+  BestIterate& best_;
+  int last_improvement_ = -1;  ///< last iteration below the best feasible objective
+  int best_iteration_ = -1;    ///< this run's iteration that set best_, −1 if none did
+  bool stalled_ = false;
+  std::chrono::steady_clock::time_point start_time_;
 };
 
 }  // namespace
@@ -148,29 +212,31 @@ SolveReport solve_with_ipopt(Nlp& nlp, const SolverOptions& options,
                              const ProgressCallback& progress, const std::atomic<bool>* cancel) {
   SolveReport report;
   report.status = "error";
-  Ipopt::SmartPtr<NlpAdapter> adapter = new NlpAdapter(nlp, progress, cancel, report);
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
   app->Options()->SetIntegerValue("print_level", options.verbose ? 5 : 0);
   app->Options()->SetStringValue("sb", "yes");  // no banner
-  app->Options()->SetIntegerValue("max_iter", options.max_iterations);
   app->Options()->SetNumericValue("tol", options.tolerance);
   app->Options()->SetStringValue("mu_strategy", "adaptive");
-  // Keyframe constraints are ‖Q − Q̄‖² <= ε2² = 0.0025: Ipopt's default 1e-4 violation would let
-  // "solved" exceed ε2 by 2%.
-  app->Options()->SetNumericValue("constr_viol_tol", 1e-7);
+  // Keyframe rows are in units of their tolerance, with bounds 2 % inside it: an "optimal" exit
+  // may violate them by 1e-6 of a tolerance.
+  app->Options()->SetNumericValue("constr_viol_tol", 1e-6);
   // The objective keeps its own units (N²): Ipopt's gradient-based scaling divides J by its
   // largest initial gradient entry (~1e4 on a keyframed motion), after which the relative
   // objective-change test below would compare changes with max(1, 1e-3) and stop far too early.
   app->Options()->SetStringValue("nlp_scaling_method", "none");
-  // Filter line search: every Gauss–Newton step bends off the curved keyframe constraints by
-  // 1e-5..1e-3 (squared quaternion distance). With Ipopt's default switching rule (δ = 1,
-  // θ_min = 1e-4) such a violation outweighs the objective, and steps that cut it are accepted
-  // even when they multiply the root force (measured on M1: J 0.5 -> 5 N² and back, for 60
-  // iterations). A small δ and θ_min = 1e-2 make a descent step satisfy Armijo on J whenever the
-  // violation is small, which is always the case here; feasibility is still enforced by the
-  // Newton step and by the termination tests.
+  // Filter line search: every Gauss–Newton step bends off the curved keyframe constraints (by
+  // 1e-2..1e-1 of a tolerance). With Ipopt's default switching rule (δ = 1, θ_min = 1e-4) such
+  // a violation outweighs the objective, and steps that cut it are accepted even when they
+  // multiply the root force (measured on M1: J 0.5 -> 5 N² and back, for 60 iterations). A
+  // small δ and θ_min = 0.3 (of a tolerance) make a descent step satisfy Armijo on J whenever
+  // the violation is below that, which is almost always the case here; feasibility is still
+  // enforced by the Newton step and by the termination tests. Measured over the convergence
+  // study's 105 relaxed cases (M1-M7 × 5 mass × 3 timing errors): θ_min = 0.01 left cases
+  // cycling between h-type steps that restore the keyframes and f-type steps that break them
+  // again (M6 at K = 3: 262 iterations; M1 with −20 % mass and 0.05 s timing error: never
+  // accepted); 0.1 solved 100/105 in 11165 iterations, 0.3 all 105 in 9296.
   app->Options()->SetNumericValue("delta", 1e-8);
-  app->Options()->SetNumericValue("theta_min_fact", 1e-2);
+  app->Options()->SetNumericValue("theta_min_fact", 0.3);
   if (options.objective_change_tolerance > 0) {
     app->Options()->SetNumericValue("acceptable_obj_change_tol",
                                     options.objective_change_tolerance);
@@ -205,11 +271,38 @@ SolveReport solve_with_ipopt(Nlp& nlp, const SolverOptions& options,
     return report;
   }
   const auto start = std::chrono::steady_clock::now();
-  app->OptimizeTNLP(adapter);
+  BestIterate best;
+  std::vector<double> restart_point;
+  for (int run = 0;; ++run) {
+    const int used = report.iterations;
+    app->Options()->SetIntegerValue("max_iter", std::max(0, options.max_iterations - used));
+    Ipopt::SmartPtr<NlpAdapter> adapter = new NlpAdapter(
+        nlp, options, progress, cancel, run == 0 ? nullptr : &restart_point, used, report, best);
+    app->OptimizeTNLP(adapter);
+    const bool budget_left = report.iterations < options.max_iterations;
+    if (!adapter->stalled() || !best.found() || run >= options.max_restarts || !budget_left) {
+      // A stalled run ends as "user requested stop"; say what happened instead.
+      if (adapter->stalled()) {
+        report.status = "stalled";
+        report.ipopt_status = "no progress on the best feasible iterate";
+        report.solved = false;
+      }
+      break;
+    }
+    restart_point = best.x;
+    ++report.restarts;
+  }
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (report.x.empty()) {  // Ipopt gave up before finalize (e.g. an exception inside)
     report.x.resize(nlp.variable_count());
     nlp.initial_point(report.x.data());
+  }
+  // A failed run returns its best feasible iterate when it stopped somewhere worse (a wander);
+  // a run stopped early while still improving keeps its last, lower-objective iterate, whose
+  // keyframe errors the caller checks and reports.
+  if (!report.solved && best.found() && best.objective < report.objective) {
+    report.x = best.x;
+    report.objective = best.objective;
   }
   return report;
 }

@@ -27,9 +27,18 @@ struct SolverOptions {
   /// cost most of the iterations and move the average root force by < 0.1 %. 0 disables.
   double objective_change_tolerance = 1e-3;
   int acceptable_iterations = 3;
-  /// Absolute; the NLP keeps its keyframe bounds this much inside the user's tolerances, so an
-  /// acceptable point still meets them exactly (see MotionNlp::bounds).
-  double acceptable_constraint_violation = 3e-5;
+  /// In the constraints' units: a fraction of the keyframe tolerances (MotionNlp states them
+  /// in units of the tolerance and keeps its bounds 2× this inside, see kKeyframeBoundMargin),
+  /// s for keyframe-time gaps, N or N·m for the strict model's force bounds.
+  double acceptable_constraint_violation = 0.01;
+  /// Recovery from a wander. Interior-point iterates sometimes leave a good feasible region and
+  /// drift (large timing errors, keyframes far from the interpolation): the objective climbs and
+  /// the keyframe constraints break for hundreds of iterations. When no iterate has improved on
+  /// the best feasible one (objective, constraints met to acceptable_constraint_violation) for
+  /// this many iterations, the run is stopped and Ipopt restarts from that best iterate with a
+  /// fresh barrier parameter and multipliers. 0 disables.
+  int stall_iterations = 40;
+  int max_restarts = 2;
   bool verbose = false;  ///< Ipopt's own iteration log on stdout
   /// Run Ipopt's first-order derivative checker at the starting point and write its report
   /// (and the iteration log) to this file; empty: off.
@@ -51,10 +60,13 @@ struct SolveReport {
   std::string status;
   std::string ipopt_status;  ///< Ipopt's own name of its return status
   bool solved = false;
-  int iterations = 0;
+  int iterations = 0;  ///< over every run
+  int restarts = 0;  ///< restarts from the best feasible iterate (SolverOptions::stall_iterations)
   double seconds = 0.0;
   double objective = 0.0;
-  std::vector<double> x;  ///< the final point (the last iterate if not solved)
+  /// The final point. If Ipopt does not converge: its best feasible iterate when that has a
+  /// lower objective than the last iterate (the run wandered off), otherwise the last iterate.
+  std::vector<double> x;
 };
 
 /// Solves `nlp` from its initial point. Never throws for solver failures: they are reported.

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <limits>
 #include <stdexcept>
+#include <thread>
 
 #include "saltus/analysis/evaluation.h"
 #include "saltus/motion/interpolate.h"
@@ -49,6 +50,10 @@ MotionNlp::MotionNlp(const Motion& motion, const BodyModel& model,
   if (options.formulation == Formulation::kStrict && !(options.epsilon > 0))
     throw std::invalid_argument("epsilon must be positive");
 
+  if (!(motion.tolerances.translation_m > 0) || !(motion.tolerances.quaternion > 0))
+    throw std::invalid_argument("keyframe tolerances must be positive");
+  translation_scale_ = 1.0 / motion.tolerances.translation_m;
+  rotation_scale_ = 1.0 / (motion.tolerances.quaternion * motion.tolerances.quaternion);
   layout_.segment_count = model.size();
   layout_.keyframe_count = n_key;
   layout_.knots_per_interval = options.knots_per_interval;
@@ -81,7 +86,13 @@ MotionNlp::MotionNlp(const Motion& motion, const BodyModel& model,
     sample_weights_[s + 1] += half;
   }
 
-  derivatives_ = std::make_unique<RootWrenchDerivatives>(model, layout_, reference_);
+  int threads = options.threads > 0
+                    ? options.threads
+                    : std::min(4, static_cast<int>(std::thread::hardware_concurrency()));
+  // A thread below ~20 samples costs more to start than it saves.
+  threads = std::max(1, std::min(threads, options.samples / 20));
+  for (int t = 0; t < threads; ++t)
+    derivatives_.push_back(std::make_unique<RootWrenchDerivatives>(model, layout_, reference_));
 
   // Jacobian structure, row by row.
   std::vector<int> time_variables;
@@ -218,22 +229,18 @@ void MotionNlp::bounds(double* x_lower, double* x_upper, double* g_lower, double
     x_upper[v] = std::min(t0 + options_.max_time_shift,
                           duration_ - time_gap_ * (layout_.keyframe_count - 1 - i));
   }
-  // Keyframe bounds sit kKeyframeBoundMargin inside the user's tolerances: the solver may stop
-  // at a point that violates its bounds by that much (SolverOptions::
+  // Keyframe rows are in units of their tolerance, with bounds kKeyframeBoundMargin inside it:
+  // the solver may stop at a point that violates its bounds by half that (SolverOptions::
   // acceptable_constraint_violation), and the written motion must still meet ε1 and ε2.
-  const double translation =
-      std::max(0.5 * tolerances_.translation_m, tolerances_.translation_m - kKeyframeBoundMargin);
-  const double quaternion_squared =
-      std::max(0.25 * tolerances_.quaternion * tolerances_.quaternion,
-               tolerances_.quaternion * tolerances_.quaternion - kKeyframeBoundMargin);
+  const double bound = 1.0 - kKeyframeBoundMargin;
   int row = 0;
   for (int r = 0; r < translation_rows_; ++r, ++row) {
-    g_lower[row] = -translation;
-    g_upper[row] = translation;
+    g_lower[row] = -bound;
+    g_upper[row] = bound;
   }
   for (int r = 0; r < rotation_rows_; ++r, ++row) {
     g_lower[row] = -kUnbounded;
-    g_upper[row] = quaternion_squared;
+    g_upper[row] = bound;
   }
   for (int r = 0; r < order_rows_; ++r, ++row) {
     g_lower[row] = time_gap_;
@@ -255,22 +262,40 @@ void MotionNlp::load(const double* x) {
   x_.assign(x, x + n);
   have_x_ = true;
   have_wrenches_ = have_wrench_jacobians_ = have_keyframes_ = have_keyframe_values_ = false;
-  derivatives_->set_variables(x);
+  for (auto& evaluator : derivatives_)
+    evaluator->set_variables(x);
+}
+
+template <typename Body>
+void MotionNlp::for_each_sample_range(Body&& body) {
+  const int samples = static_cast<int>(sample_times_.size());
+  const int parts = static_cast<int>(derivatives_.size());
+  std::vector<std::thread> helpers;
+  for (int p = 1; p < parts; ++p)
+    helpers.emplace_back(
+        [&, p] { body(*derivatives_[p], samples * p / parts, samples * (p + 1) / parts); });
+  body(*derivatives_[0], 0, samples / parts);
+  for (std::thread& helper : helpers)
+    helper.join();
 }
 
 void MotionNlp::compute_wrenches() {
   if (have_wrenches_) return;
-  for (std::size_t s = 0; s < sample_times_.size(); ++s)
-    wrench_[s] = derivatives_->wrench(sample_times_[s]);
+  for_each_sample_range([this](RootWrenchDerivatives& evaluator, int begin, int end) {
+    for (int s = begin; s < end; ++s)
+      wrench_[s] = evaluator.wrench(sample_times_[s]);
+  });
   have_wrenches_ = true;
 }
 
 void MotionNlp::compute_wrench_jacobians() {
   if (have_wrench_jacobians_) return;
-  for (std::size_t s = 0; s < sample_times_.size(); ++s) {
-    derivatives_->wrench_jacobian(sample_times_[s], wrench_jacobian_[s]);
-    wrench_[s] = wrench_jacobian_[s].value;
-  }
+  for_each_sample_range([this](RootWrenchDerivatives& evaluator, int begin, int end) {
+    for (int s = begin; s < end; ++s) {
+      evaluator.wrench_jacobian(sample_times_[s], wrench_jacobian_[s]);
+      wrench_[s] = wrench_jacobian_[s].value;
+    }
+  });
   have_wrenches_ = have_wrench_jacobians_ = true;
 }
 
@@ -280,10 +305,10 @@ void MotionNlp::compute_keyframe_values() {
   if (have_keyframe_values_ || have_keyframes_) return;
   keyframe_times_ = keyframe_times_from(layout_, reference_, x_.data());
   for (int i = 0; i < layout_.keyframe_count; ++i) {
-    translation_jacobian_[i].value = derivatives_->keyframe_translation_value(i);
+    translation_jacobian_[i].value = derivatives_[0]->keyframe_translation_value(i);
     for (int k = 0; k < layout_.segment_count; ++k)
       rotation_jacobian_[i * layout_.segment_count + k].value =
-          derivatives_->keyframe_rotation_value(i, k);
+          derivatives_[0]->keyframe_rotation_value(i, k);
   }
   have_keyframe_values_ = true;
 }
@@ -292,9 +317,9 @@ void MotionNlp::compute_keyframes() {
   if (have_keyframes_) return;
   keyframe_times_ = keyframe_times_from(layout_, reference_, x_.data());
   for (int i = 0; i < layout_.keyframe_count; ++i) {
-    derivatives_->keyframe_translation(i, translation_jacobian_[i]);
+    derivatives_[0]->keyframe_translation(i, translation_jacobian_[i]);
     for (int k = 0; k < layout_.segment_count; ++k)
-      derivatives_->keyframe_rotation(i, k, rotation_jacobian_[i * layout_.segment_count + k]);
+      derivatives_[0]->keyframe_rotation(i, k, rotation_jacobian_[i * layout_.segment_count + k]);
   }
   have_keyframes_ = true;
 }
@@ -377,12 +402,12 @@ void MotionNlp::constraints(const double* x, double* g) {
   for (int i = 0; i < layout_.keyframe_count; ++i) {
     const Eigen::Vector3d r = translation_jacobian_[i].value - root_target(i, keyframe_times_[i]);
     for (int d = 0; d < 3; ++d)
-      g[row++] = r[d];
+      g[row++] = translation_scale_ * r[d];
   }
   for (int i = 0; i < layout_.keyframe_count; ++i) {
     for (int k = 0; k < layout_.segment_count; ++k) {
       const Eigen::Vector4d q = rotation_jacobian_[i * layout_.segment_count + k].value;
-      g[row++] = (q - wxyz(aligned(keyframe_rotation_[i][k], q))).squaredNorm();
+      g[row++] = rotation_scale_ * (q - wxyz(aligned(keyframe_rotation_[i][k], q))).squaredNorm();
     }
   }
   for (int i : order_pairs_)
@@ -417,9 +442,10 @@ void MotionNlp::jacobian_values(const double* x, double* values) {
                        : Eigen::Vector3d(ballistic_com_velocity(takeoff_, keyframe_times_[i]));
     for (int d = 0; d < 3; ++d, ++row) {
       Eigen::Matrix<double, 1, 3> pick = Eigen::Matrix<double, 1, 3>::Zero();
-      pick[d] = 1.0;
+      pick[d] = translation_scale_;
       entries(row, [&](int column) {
-        return local_derivative<3>(tj, pick, column) - (column == own_time ? target_rate[d] : 0.0);
+        return local_derivative<3>(tj, pick, column) -
+               (column == own_time ? translation_scale_ * target_rate[d] : 0.0);
       });
     }
   }
@@ -427,7 +453,8 @@ void MotionNlp::jacobian_values(const double* x, double* values) {
     for (int k = 0; k < layout_.segment_count; ++k, ++row) {
       const LocalJacobian<4>& rj = rotation_jacobian_[i * layout_.segment_count + k];
       const Eigen::Matrix<double, 1, 4> w =
-          2.0 * (rj.value - wxyz(aligned(keyframe_rotation_[i][k], rj.value))).transpose();
+          2.0 * rotation_scale_ *
+          (rj.value - wxyz(aligned(keyframe_rotation_[i][k], rj.value))).transpose();
       entries(row, [&](int column) { return local_derivative<4>(rj, w, column); });
     }
   }
@@ -588,7 +615,8 @@ void MotionNlp::hessian_values(const double* x, double objective_factor, const d
     for (int k = 0; k < layout_.segment_count; ++k) {
       const int index = i * layout_.segment_count + k;
       const double lambda = multipliers[translation_rows_ + index];
-      if (lambda > 0) add_gauss_newton(rotation_jacobian_[index], 2.0 * lambda, values);
+      if (lambda > 0)
+        add_gauss_newton(rotation_jacobian_[index], 2.0 * rotation_scale_ * lambda, values);
     }
   }
 }

@@ -6,6 +6,7 @@
 /// grid of `samples` times), plus a small proximity term (see `regularization`), subject to
 ///   |B_d(t_i) − B̄_d(t_i)| <= ε1   per keyframe i and coordinate d              (eq. 2)
 ///   ‖Q_k(t_i) − Q̄_k‖² <= ε2²       per keyframe and joint, sign-aligned         (eq. 3)
+/// (both divided by their tolerance, see kKeyframeBoundMargin)
 ///   t_{i+1} − t_i >= gap           per pair of consecutive keyframes            (eq. 4)
 /// with B̄(t) = s(t) − s'_i (the CoM parabola at the keyframe's current time minus the keyframe
 /// pose's CoM offset) unless the keyframe gives root_position.
@@ -31,11 +32,17 @@ namespace saltus {
 
 enum class Formulation { kRelaxed, kStrict };
 
-/// How far inside the user's keyframe tolerances the NLP's bounds lie (m for translation, and
-/// squared quaternion distance): 2× the solver's acceptable constraint violation. For the
-/// paper's ε2 = 0.05 the optimiser works to ‖Q − Q̄‖ <= 0.0494 (1.2 % tighter), for ε1 = 0.25 m
-/// to 0.24994 m.
-inline constexpr double kKeyframeBoundMargin = 6e-5;
+/// The keyframe constraints are stated in units of their tolerance: translation rows are
+/// (B_d − B̄_d)/ε1 in [−b, b], rotation rows ‖Q − Q̄‖²/ε2² <= b, with b = 1 − kKeyframeBoundMargin.
+/// Dimensionless rows matter to Ipopt: it pushes every initial slack max(1, |bound|)·1e-2
+/// inside its bound, and for an unscaled ‖Q − Q̄‖² <= 0.0025 that put the slack at −0.0075, a
+/// value no squared distance can reach: the first Newton step then flew off to wherever the
+/// linearisation pointed (measured: violation 1.8 and a wander to 500 N on M5 with timing
+/// errors).
+/// The margin is 2× SolverOptions::acceptable_constraint_violation, so a point the solver
+/// accepts still meets the user's tolerances: for ε2 = 0.05 the optimiser works to
+/// ‖Q − Q̄‖ <= 0.0495, for ε1 = 0.25 m to 0.245 m.
+inline constexpr double kKeyframeBoundMargin = 0.02;
 
 struct MotionNlpOptions {
   Formulation formulation = Formulation::kRelaxed;
@@ -61,6 +68,10 @@ struct MotionNlpOptions {
   /// physical weight, not one relative to the starting J, so that a bad start (wrong timing) is
   /// not held near its own interpolation. Reported objectives are J alone. 0 disables it.
   double regularization = 1.0;
+  /// Threads that evaluate the root wrench and its derivatives over the grid (each takes a
+  /// contiguous run of samples); 0 = one per hardware thread, at most 4. Results do not depend
+  /// on it: every sample is computed the same way whichever thread runs it.
+  int threads = 0;
 };
 
 class MotionNlp : public Nlp {
@@ -143,7 +154,11 @@ class MotionNlp : public Nlp {
   int hessian_nonzeros_ = 0;
 
   // Evaluation cache keyed on x.
-  std::unique_ptr<RootWrenchDerivatives> derivatives_;
+  /// One evaluator per thread (each has its own workspace); [0] also serves keyframes.
+  std::vector<std::unique_ptr<RootWrenchDerivatives>> derivatives_;
+  /// Runs body(evaluator, first_sample, end_sample) over the grid, split across the evaluators.
+  template <typename Body>
+  void for_each_sample_range(Body&& body);
   std::vector<double> x_;
   bool have_x_ = false, have_wrenches_ = false, have_wrench_jacobians_ = false,
        have_keyframes_ = false, have_keyframe_values_ = false;
@@ -153,6 +168,8 @@ class MotionNlp : public Nlp {
   std::vector<LocalJacobian<3>> translation_jacobian_;  ///< [keyframe]
   std::vector<LocalJacobian<4>> rotation_jacobian_;     ///< [keyframe * segments + segment]
   std::vector<double> keyframe_times_;
+  double translation_scale_ = 1.0;  ///< 1/ε1: translation rows in units of their tolerance
+  double rotation_scale_ = 1.0;     ///< 1/ε2²
 };
 
 }  // namespace saltus

@@ -9,23 +9,34 @@ namespace saltus {
 OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
                                    const OptimizeOptions& options, const ProgressCallback& progress,
                                    const std::atomic<bool>* cancel) {
-  EvaluateOptions evaluate;
-  evaluate.samples = options.nlp.samples;
-  evaluate.interpolation.knots_per_interval = options.nlp.knots_per_interval;
-
+  if (options.nlp.knots_per_interval < 1)
+    throw std::invalid_argument("knots per interval must be at least 1");
+  OptimizeOptions chosen = options;
+  OptimizationResult result;
   // Start from the motion's stored spline when it is on the requested knots (re-optimising an
   // optimised motion), otherwise from the keyframe interpolation.
   Motion start = motion;
-  const std::size_t knot_count =
-      (motion.keyframes.size() - 1) * options.nlp.knots_per_interval + 7;  // clamped cubic
-  if (start.spline && start.spline->knots.size() != knot_count) start.spline.reset();
-
-  OptimizationResult result;
-  result.before = evaluate_motion(start, model, evaluate);
-  MotionNlp nlp(start, model, result.before.trajectory, options.nlp);
+  for (;;) {
+    const int k = chosen.nlp.knots_per_interval;
+    const std::size_t knot_count = (motion.keyframes.size() - 1) * k + 7;  // clamped cubic
+    if (start.spline && start.spline->knots.size() != knot_count) start.spline.reset();
+    EvaluateOptions evaluate;
+    evaluate.samples = chosen.nlp.samples;
+    evaluate.interpolation.knots_per_interval = k;
+    result.before = evaluate_motion(start, model, evaluate);
+    const KeyframeErrors& missed = result.before.keyframe_errors;
+    const bool meets_keyframes = missed.max_quaternion_error <= motion.tolerances.quaternion &&
+                                 missed.max_translation_error_m <= motion.tolerances.translation_m;
+    if (meets_keyframes || start.spline || !options.refine_when_keyframes_missed ||
+        k >= std::max(options.nlp.knots_per_interval, kMaxAutomaticKnotsPerInterval))
+      break;
+    chosen.nlp.knots_per_interval = k + 1;
+  }
+  result.knots_per_interval = chosen.nlp.knots_per_interval;
+  MotionNlp nlp(start, model, result.before.trajectory, chosen.nlp);
   result.variables = nlp.variable_count();
   result.constraints = nlp.constraint_count();
-  result.solve = solve_with_ipopt(nlp, options.solver, progress, cancel);
+  result.solve = solve_with_ipopt(nlp, chosen.solver, progress, cancel);
 
   const double* x = result.solve.x.data();
   Motion optimized = motion;
@@ -33,6 +44,9 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
   for (std::size_t i = 0; i < times.size(); ++i)
     optimized.keyframes[i].time = times[i];
   optimized.spline = to_stored_spline(trajectory_from(nlp.layout(), nlp.reference(), x));
+  EvaluateOptions evaluate;
+  evaluate.samples = chosen.nlp.samples;
+  evaluate.interpolation.knots_per_interval = result.knots_per_interval;
   result.after = evaluate_motion(optimized, model, evaluate);
   result.optimized_motion = std::move(optimized);
   return result;
