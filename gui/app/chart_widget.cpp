@@ -1,21 +1,13 @@
 #include "app/chart_widget.h"
 
-#include <vtkGenericOpenGLRenderWindow.h>
-#include <vtkNew.h>
-
 #include <QMouseEvent>
 #include <QPalette>
-#include <QTimer>
 #include <cmath>
 
 namespace saltus::gui {
 
-ChartWidget::ChartWidget(QWidget* parent)
-    : QVTKOpenGLNativeWidget(parent), cursor_time_(std::nan("")) {
-  vtkNew<vtkGenericOpenGLRenderWindow> window;
-  window->SetMultiSamples(0);
-  setRenderWindow(window);
-  view_.set_render_window(window, interactor());
+ChartWidget::ChartWidget(QWidget* parent) : VtkImageWidget(parent), cursor_time_(std::nan("")) {
+  view_.set_render_window(render_window(), interactor());
   setMinimumSize(240, 160);
   setToolTip(tr("Click or drag to move the time cursor"));
   cursor_ = new QWidget(this);
@@ -29,7 +21,7 @@ ChartWidget::ChartWidget(QWidget* parent)
 
 void ChartWidget::set_chart(const ChartSpec& spec) {
   view_.set_chart(spec);
-  render_now();
+  request_render();
 }
 
 void ChartWidget::set_cursor(double t) {
@@ -50,29 +42,14 @@ void ChartWidget::place_cursor() {
   const int x = static_cast<int>(std::lround((a.left + u * (a.right - a.left)) / ratio));
   const int top = static_cast<int>(std::lround(height() - a.top / ratio));
   const int bottom = static_cast<int>(std::lround(height() - a.bottom / ratio));
-  cursor_->setGeometry(x - 1, top, 2, std::max(1, bottom - top));
+  const QRect geometry(x - 1, top, 2, std::max(1, bottom - top));
+  if (cursor_->geometry() != geometry) cursor_->setGeometry(geometry);
   cursor_->show();
 }
 
-void ChartWidget::paintGL() {
-  QVTKOpenGLNativeWidget::paintGL();
+void ChartWidget::rendered() {
   // The plot area is known once the chart has been laid out by a render.
   place_cursor();
-}
-
-void ChartWidget::render_now() {
-  // Hidden charts (other tabs) render when they are shown, not for every change.
-  if (!isVisible()) {
-    stale_ = true;
-    return;
-  }
-  stale_ = false;
-  renderWindow()->Render();
-}
-
-void ChartWidget::showEvent(QShowEvent* event) {
-  QVTKOpenGLNativeWidget::showEvent(event);
-  if (stale_) QTimer::singleShot(0, this, [this] { render_now(); });
 }
 
 bool ChartWidget::seek_at(const QPoint& position) {
@@ -91,7 +68,7 @@ void ChartWidget::mousePressEvent(QMouseEvent* event) {
     event->accept();
     return;
   }
-  QVTKOpenGLNativeWidget::mousePressEvent(event);
+  VtkImageWidget::mousePressEvent(event);
 }
 
 void ChartWidget::mouseMoveEvent(QMouseEvent* event) {
@@ -99,7 +76,7 @@ void ChartWidget::mouseMoveEvent(QMouseEvent* event) {
     event->accept();
     return;
   }
-  QVTKOpenGLNativeWidget::mouseMoveEvent(event);
+  VtkImageWidget::mouseMoveEvent(event);
 }
 
 }  // namespace saltus::gui

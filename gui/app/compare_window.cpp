@@ -189,7 +189,7 @@ void CompareWindow::on_time_changed(double t) {
     const Run& r = runs_[static_cast<std::size_t>(i)];
     if (!r.document) continue;
     scenes_[i]->scene().set_time(run_time(t, r.document->duration()), playing);
-    scenes_[i]->render_now();
+    scenes_[i]->request_render();
   }
   for (ChartWidget* chart : {force_chart_, moment_chart_})
     chart->set_cursor(t);
@@ -207,7 +207,7 @@ double CompareWindow::time() const {
 QImage CompareWindow::grab_view(int index) {
   SceneWidget* s = scenes_.at(static_cast<std::size_t>(index));
   s->render_now();
-  return s->grabFramebuffer();
+  return s->picture();
 }
 
 const ChartSpec& CompareWindow::force_chart() const {

@@ -123,10 +123,8 @@ MainWindow::~MainWindow() = default;
 void MainWindow::build_ui() {
   scene_ = new SceneWidget(this);
   // A frame counts when the window shows a new 3D picture (chart-only redraws do not).
-  connect(scene_, &QOpenGLWidget::frameSwapped, this, [this] {
-    if (scene_rendered_) ++frames_drawn_;
-    scene_rendered_ = false;
-  });
+  connect(scene_, &SceneWidget::frame_shown, this, [this] { ++frames_drawn_; });
+  connect(scene_, &SceneWidget::segment_clicked, this, &MainWindow::pick_segment);
   timeline_ = new TimelineWidget(this);
   connect(timeline_, &TimelineWidget::time_changed, this, &MainWindow::on_time_changed);
 
@@ -165,6 +163,7 @@ void MainWindow::build_ui() {
   plots_->addTab(root_tab, tr("Root force && moment"));
 
   auto* joint_tab = new QWidget(plots_);
+  joint_tab_ = joint_tab;
   auto* joint_layout = new QVBoxLayout(joint_tab);
   joint_layout->setContentsMargins(2, 2, 2, 2);
   auto* joint_row = new QHBoxLayout;
@@ -176,8 +175,15 @@ void MainWindow::build_ui() {
   joint_layout->addLayout(joint_row);
   joint_chart_ = new ChartWidget(joint_tab);
   joint_layout->addWidget(joint_chart_, 1);
-  connect(joint_combo_, qOverload<int>(&QComboBox::currentIndexChanged), this,
-          [this] { refresh_joint_chart(); });
+  connect(joint_combo_, qOverload<int>(&QComboBox::currentIndexChanged), this, [this](int joint) {
+    refresh_joint_chart();
+    // The highlighted segment follows the list, so the 3D view never marks another joint than
+    // the plot shows.
+    if (scene_->scene().highlight() >= 0 && joint >= 0) {
+      scene_->scene().set_highlight(joint);
+      scene_->request_render();
+    }
+  });
   plots_->addTab(joint_tab, tr("Joint loads"));
 
   auto* rotation_tab = new QWidget(plots_);
@@ -430,7 +436,8 @@ void MainWindow::build_menus() {
            "Up / Down  faster / slower\nB / A  show before / after optimisation\n"
            "1 2 3 4  side, front, top, follow camera;  R  reset camera\n"
            "Ctrl+O open, Ctrl+S save result, Ctrl+R run optimisation, Esc cancel\n\n"
-           "3D view: left-drag rotates, middle-drag pans, wheel zooms.\n"
+           "3D view: left-drag rotates, middle-drag pans, wheel zooms; a click on a body\n"
+           "segment plots the loads at its joint (a click beside the body unmarks it).\n"
            "Plots: click or drag to move the time cursor.\n"
            "Drop a *.motion.json (or a body model) on the window to open it."));
   });
@@ -588,6 +595,7 @@ bool MainWindow::open_motion(const QString& path, QString* error) {
   optimize_panel_->clear_result();
   optimize_panel_->set_available(true);
   refresh_all(true);
+  scene_->scene().set_highlight(-1);  // a pick belongs to the motion it was made on
   timeline_->seek(0.0);
   const MotionFile& f = document_.file();
   status_label_->setText(
@@ -862,10 +870,31 @@ void MainWindow::refresh_rotation_chart() {
 void MainWindow::on_time_changed(double t) {
   const bool playing = timeline_->playing();
   scene_->scene().set_time(t, playing);
-  scene_->render_now();
-  scene_rendered_ = true;
-  ++scene_renders_;
+  // Rendered with the next repaint: time changes that arrive before it cost one render.
+  scene_->request_render();
   update_cursors();
+}
+
+int MainWindow::selected_joint() const {
+  return document_.loaded() ? joint_combo_->currentIndex() : -1;
+}
+
+void MainWindow::pick_segment(int segment) {
+  if (!document_.loaded() || segment < 0 || segment >= joint_combo_->count()) {
+    // A click beside the body drops the highlight; the plot keeps its joint.
+    scene_->scene().set_highlight(-1);
+    scene_->request_render();
+    return;
+  }
+  // The list holds every segment in model order (its joint, then its name).
+  scene_->scene().set_highlight(segment);
+  joint_combo_->setCurrentIndex(segment);
+  plots_->setCurrentWidget(joint_tab_);
+  scene_->request_render();
+}
+
+int MainWindow::highlighted_segment() const {
+  return scene_->scene().highlight();
 }
 
 void MainWindow::update_cursors() {
@@ -1186,7 +1215,7 @@ void MainWindow::set_scene_options(const SceneOptions& options) {
 
 QImage MainWindow::grab_view() {
   scene_->render_now();
-  return scene_->grabFramebuffer();
+  return scene_->picture();
 }
 
 void MainWindow::fix_view_size(const QSize& size) {
@@ -1209,7 +1238,7 @@ double MainWindow::benchmark_playback(double seconds) {
   timeline_->go_to_start();
   QApplication::processEvents();
   frames_drawn_ = 0;
-  scene_renders_ = 0;
+  const int renders_before = scene_->render_count();
   QElapsedTimer clock;
   clock.start();
   timeline_->play();
@@ -1219,6 +1248,7 @@ double MainWindow::benchmark_playback(double seconds) {
   }
   timeline_->pause();
   const double elapsed = clock.elapsed() / 1000.0;
+  benchmark_renders_ = scene_->render_count() - renders_before;
   return elapsed > 0 ? frames_drawn_ / elapsed : 0.0;
 }
 

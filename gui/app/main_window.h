@@ -113,6 +113,14 @@ class MainWindow : public QMainWindow {
   Stage stage() const { return stage_; }
   void set_camera(CameraPreset preset);
   void set_scene_options(const SceneOptions& options);
+  /// The joint whose loads the "Joint loads" plot shows: a segment index (the segment below the
+  /// joint), -1 without a motion.
+  int selected_joint() const;
+  /// Shows the loads at a segment's joint in the plots (switching to that tab) and highlights
+  /// the segment in the 3D view, as a click on it does; -1 only removes the highlight.
+  void pick_segment(int segment);
+  /// The segment highlighted in the 3D view (-1: none).
+  int highlighted_segment() const;
   const Document& document() const { return document_; }
   /// The optimisation panel's current values.
   OptimizeSettings optimize_settings() const;
@@ -124,10 +132,10 @@ class MainWindow : public QMainWindow {
   void fix_view_size(const QSize& size);
   QImage grab_window();
   /// Plays the motion for `seconds` of wall time; returns the 3D view's frames per second
-  /// (new pictures of the 3D view that reached the screen).
+  /// (new pictures of the 3D view painted on the screen).
   double benchmark_playback(double seconds);
   /// 3D renders during the last benchmark (>= its frames; more means renders never shown).
-  int benchmark_renders() const { return scene_renders_; }
+  int benchmark_renders() const { return benchmark_renders_; }
 
  signals:
   void motion_opened();
@@ -181,12 +189,12 @@ class MainWindow : public QMainWindow {
   QString last_dir_;
   QStringList recent_;
   int frames_drawn_ = 0;
-  bool scene_rendered_ = false;
-  int scene_renders_ = 0;
+  int benchmark_renders_ = 0;
 
   SceneWidget* scene_ = nullptr;
   TimelineWidget* timeline_ = nullptr;
   QTabWidget* plots_ = nullptr;
+  QWidget* joint_tab_ = nullptr;
   ChartWidget* force_chart_ = nullptr;
   ChartWidget* moment_chart_ = nullptr;
   ChartWidget* joint_chart_ = nullptr;

@@ -6,6 +6,7 @@
 #include <vtkCamera.h>
 #include <vtkCapsuleSource.h>
 #include <vtkCellArray.h>
+#include <vtkCellPicker.h>
 #include <vtkConeSource.h>
 #include <vtkCoordinate.h>
 #include <vtkCubeSource.h>
@@ -51,12 +52,19 @@ constexpr double kArrowMaxLength = 1.0;       ///< m, full-scale residual arrows
 constexpr double kJointArrowMaxLength = 0.5;  ///< m, full-scale joint-force arrows
 constexpr double kFollowDistance = 7.0;       ///< m, camera to CoM in follow mode
 constexpr double kGhostRadiusFactor = 0.35;   ///< keyframe poses drawn as thin figures
+/// The picked segment: its colour this far towards white, and an outline this much wider (a
+/// share of its radius, at least kOutlineMinWidth) drawn only where it sticks out behind it.
+constexpr double kHighlightWhiten = 0.4;
+constexpr double kOutlineWidthFactor = 0.3;
+constexpr double kOutlineMinWidth = 0.015;  ///< m
 
 const Rgb kLeftColour{0.25, 0.47, 0.88};
 const Rgb kRightColour{0.93, 0.45, 0.18};
 const Rgb kTrunkColour{0.86, 0.82, 0.74};
 const Rgb kParabolaColour{0.92, 0.92, 0.95};
 const Rgb kTraceColour{1.0, 0.70, 0.20};
+/// Pale cyan: no other part of the scene has it (sides blue and orange, arrows green to red).
+const Rgb kOutlineColour{0.45, 0.95, 1.0};
 
 enum class Side { kLeft, kRight, kCentre };
 
@@ -180,10 +188,17 @@ struct BodyScene::Impl {
   std::vector<vtkSmartPointer<vtkPolyDataMapper>> segment_mappers;
   std::vector<vtkSmartPointer<vtkActor>> segments;
   std::vector<double> segment_offset;  ///< capsule centre along the segment's y axis
-  vtkSmartPointer<vtkActor> face;      ///< marks where the athlete faces
+  std::vector<Rgb> segment_colour;
+  std::vector<Eigen::Vector3d> outline_scale;  ///< capsule to its outline, per axis
+  vtkSmartPointer<vtkActor> face;              ///< marks where the athlete faces
   int face_segment = 0;
   Eigen::Vector3d face_offset = Eigen::Vector3d::Zero();
   vtkSmartPointer<vtkActor> ghosts;  ///< every keyframe pose, one mesh
+  vtkNew<vtkCellPicker> picker;      ///< picks among the segments (and the face) only
+  int highlight = -1;
+  /// The highlighted segment's capsule, enlarged, with its front faces culled: only a rim
+  /// around the segment shows.
+  vtkNew<vtkActor> outline;
 
   // Environment.
   std::vector<vtkSmartPointer<vtkActor>> trampoline;
@@ -250,6 +265,14 @@ struct BodyScene::Impl {
     overlay->AddActor(com_marker);
 
     build_environment();
+
+    picker->PickFromListOn();
+    outline->GetProperty()->FrontfaceCullingOn();
+    outline->GetProperty()->SetLighting(false);
+    set_colour(outline, kOutlineColour);
+    outline->PickableOff();
+    outline->SetVisibility(false);
+    renderer->AddActor(outline);
 
     force_bar = vtkSmartPointer<vtkScalarBarActor>::New();
     moment_bar = vtkSmartPointer<vtkScalarBarActor>::New();
@@ -326,6 +349,11 @@ struct BodyScene::Impl {
     segments.clear();
     segment_mappers.clear();
     segment_offset.clear();
+    segment_colour.clear();
+    outline_scale.clear();
+    picker->InitializePickList();
+    outline->SetMapper(nullptr);
+    outline->SetVisibility(false);
     ghosts = nullptr;
     joint_arrows.clear();
     face = nullptr;
@@ -344,15 +372,23 @@ struct BodyScene::Impl {
       auto mapper = mapper_for(capsule->GetOutputPort());
       segment_mappers.push_back(mapper);
       segment_offset.push_back(0.5 * s.shape.length);
+      // The outline is the capsule grown by a constant width all round: radius r + w, and
+      // half-height (cylinder half + cap) h + w.
+      const double r = std::max(s.shape.radius, 0.01);
+      const double h = 0.5 * std::abs(s.shape.length) + r;
+      const double w = std::max(kOutlineMinWidth, kOutlineWidthFactor * r);
+      outline_scale.emplace_back((r + w) / r, (h + w) / h, (r + w) / r);
       auto actor = actor_for(mapper);
       const Side side = side_of(s.name);
-      set_colour(actor, side == Side::kLeft    ? kLeftColour
-                        : side == Side::kRight ? kRightColour
-                                               : kTrunkColour);
+      segment_colour.push_back(side == Side::kLeft    ? kLeftColour
+                               : side == Side::kRight ? kRightColour
+                                                      : kTrunkColour);
+      set_colour(actor, segment_colour.back());
       actor->GetProperty()->SetSpecular(0.25);
       actor->GetProperty()->SetSpecularPower(20);
       segments.push_back(actor);
       renderer->AddActor(actor);
+      picker->AddPickList(actor);
     }
     // A small dark "nose" at the front of the top of the thorax (or the root) shows which way
     // the athlete faces: the model itself is left-right and front-back symmetric in shape.
@@ -366,6 +402,7 @@ struct BodyScene::Impl {
     face = actor_for(mapper_for(nose->GetOutputPort()));
     set_colour(face, {0.75, 0.10, 0.15});
     renderer->AddActor(face);
+    picker->AddPickList(face);
 
     for (int i = 1; i < model.size(); ++i) {
       auto a = actor_for(arrow_mapper);
@@ -374,14 +411,39 @@ struct BodyScene::Impl {
     }
   }
 
-  void pose(const std::vector<vtkSmartPointer<vtkActor>>& actors, const SampleRecord& s) {
-    for (std::size_t i = 0; i < actors.size() && i < s.segment_position.size(); ++i) {
-      Eigen::Affine3d t = Eigen::Affine3d::Identity();
-      t.translate(s.segment_position[i]);
-      t.rotate(s.segment_rotation[i]);
-      t.translate(Eigen::Vector3d(0, segment_offset[i], 0));
-      set_matrix(actors[i], t);
+  /// World from capsule (centred at its origin, along y) of segment i in sample s.
+  Eigen::Affine3d capsule_pose(const SampleRecord& s, std::size_t i) const {
+    Eigen::Affine3d t = Eigen::Affine3d::Identity();
+    t.translate(s.segment_position[i]);
+    t.rotate(s.segment_rotation[i]);
+    t.translate(Eigen::Vector3d(0, segment_offset[i], 0));
+    return t;
+  }
+
+  void pose(const SampleRecord& s) {
+    for (std::size_t i = 0; i < segments.size() && i < s.segment_position.size(); ++i)
+      set_matrix(segments[i], capsule_pose(s, i));
+    if (highlight >= 0 && static_cast<std::size_t>(highlight) < s.segment_position.size()) {
+      const auto i = static_cast<std::size_t>(highlight);
+      Eigen::Affine3d t = capsule_pose(s, i);
+      t.scale(outline_scale[i]);
+      set_matrix(outline, t);
     }
+  }
+
+  void apply_highlight() {
+    if (highlight >= static_cast<int>(segments.size())) highlight = -1;
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+      Rgb c = segment_colour[i];
+      if (static_cast<int>(i) == highlight) {
+        c = {c.r + kHighlightWhiten * (1.0 - c.r), c.g + kHighlightWhiten * (1.0 - c.g),
+             c.b + kHighlightWhiten * (1.0 - c.b)};
+      }
+      set_colour(segments[i], c);
+    }
+    outline->SetMapper(highlight >= 0 ? segment_mappers[static_cast<std::size_t>(highlight)]
+                                      : nullptr);
+    outline->SetVisibility(highlight >= 0);
   }
 
   void build_paths(const Document& d) {
@@ -517,7 +579,7 @@ struct BodyScene::Impl {
     const SampleRecord s = document->sample_at(stage, time);
     const RotationSample r = document->rotation_at(stage, time);
     current_com = s.com;
-    pose(segments, s);
+    pose(s);
     {
       Eigen::Affine3d t = Eigen::Affine3d::Identity();
       t.translate(s.segment_position[face_segment]);
@@ -637,6 +699,7 @@ void BodyScene::set_document(const Document* document, Stage stage) {
   }
   d.stage = document->available(stage);
   d.build_body(document->file().model);
+  d.apply_highlight();
   d.build_paths(*document);
   d.build_ghosts(*document);
   d.force_scale = document->residual_force_scale(kArrowMaxLength);
@@ -679,6 +742,28 @@ CameraPreset BodyScene::camera() const {
 
 void BodyScene::reset_camera() {
   impl_->apply_camera();
+}
+
+int BodyScene::segment_at(int x, int y) const {
+  Impl& d = *impl_;
+  if (!d.document || d.segments.empty()) return -1;
+  if (!d.picker->Pick(x, y, 0.0, d.renderer)) return -1;
+  const vtkActor* actor = d.picker->GetActor();
+  for (std::size_t i = 0; i < d.segments.size(); ++i)
+    if (d.segments[i] == actor) return static_cast<int>(i);
+  if (actor && actor == d.face) return d.face_segment;
+  return -1;
+}
+
+void BodyScene::set_highlight(int segment) {
+  Impl& d = *impl_;
+  d.highlight = segment < 0 ? -1 : segment;
+  d.apply_highlight();
+  d.update_time();
+}
+
+int BodyScene::highlight() const {
+  return impl_->highlight;
 }
 
 }  // namespace saltus::gui

@@ -4,7 +4,8 @@
 /// trampoline bed and a floor grid, the ballistic CoM parabola, the motion's own CoM trace and the
 /// current CoM, the residual force and moment about the CoM as arrows scaled and coloured by
 /// magnitude (with legends), optional joint-force arrows, translucent keyframe poses and a text
-/// panel of the rotation quantities. Camera presets: side, front, top, follow.
+/// panel of the rotation quantities. Camera presets: side, front, top, follow. A segment can be
+/// picked at a pixel and highlighted.
 
 #include <memory>
 
@@ -44,6 +45,16 @@ class BodyScene {
   CameraPreset camera() const;
   /// The current preset again, fitted to the whole flight.
   void reset_camera();
+
+  /// The body segment drawn at a pixel of the render window (x from the left, y from the
+  /// bottom, device pixels): its index in the model, the nearest along the line of sight; -1
+  /// where no segment is (background, trampoline, arrows, or no document). The red face marker
+  /// counts as the segment it sits on.
+  int segment_at(int x, int y) const;
+  /// Draws a segment brighter and outlined (-1: none). Stays across set_document while the
+  /// index exists in the new model.
+  void set_highlight(int segment);
+  int highlight() const;
 
  private:
   struct Impl;

@@ -14,6 +14,7 @@
 #include "app/compare_window.h"
 #include "app/main_window.h"
 #include "gui/support/image_checks.h"
+#include "gui/support/open_motion_fixture.h"
 #include "gui_core/test_motion.h"
 
 #include "saltus/body/body_model.h"
@@ -22,23 +23,8 @@
 namespace saltus::gui {
 namespace {
 
-class CompareWindowTest : public ::testing::Test {
+class CompareWindowTest : public test::OpenMotionTest {
  protected:
-  void SetUp() override {
-    window_ = std::make_unique<MainWindow>(false);
-    window_->resize(1280, 800);
-    window_->show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(window_.get()));
-    QString error;
-    ASSERT_TRUE(window_->open_motion(QString::fromStdString(test::gui_test_motion_path()), &error))
-        << error.toStdString();
-    QApplication::processEvents();
-  }
-  void TearDown() override {
-    window_->close();
-    window_.reset();
-  }
-
   /// The open motion's model with both thighs 50 % heavier, written as a model file.
   std::string scaled_model_file() {
     BodyModel scaled = window_->document().file().model;
@@ -51,7 +37,6 @@ class CompareWindowTest : public ::testing::Test {
   }
 
   saltus::test::TempDir dir_;
-  std::unique_ptr<MainWindow> window_;
 };
 
 void expect_drawn(const QImage& view, const char* name) {

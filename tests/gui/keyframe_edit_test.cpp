@@ -16,28 +16,15 @@
 #include "app/main_window.h"
 #include "app/model_panel.h"
 #include "gui/support/image_checks.h"
+#include "gui/support/open_motion_fixture.h"
 #include "gui_core/test_motion.h"
 #include "support/cli_runner.h"
 
 namespace saltus::gui {
 namespace {
 
-class KeyframeEditTest : public ::testing::Test {
+class KeyframeEditTest : public test::OpenMotionTest {
  protected:
-  void SetUp() override {
-    window_ = std::make_unique<MainWindow>(false);
-    window_->resize(1280, 800);
-    window_->show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(window_.get()));
-    QString error;
-    ASSERT_TRUE(window_->open_motion(QString::fromStdString(test::gui_test_motion_path()), &error))
-        << error.toStdString();
-    QApplication::processEvents();
-  }
-  void TearDown() override {
-    window_->close();
-    window_.reset();
-  }
   /// The root force plot (the chart titled so).
   ChartSpec force_chart() const {
     for (ChartWidget* chart : window_->findChildren<ChartWidget*>())
@@ -45,8 +32,6 @@ class KeyframeEditTest : public ::testing::Test {
     return {};
   }
   const Motion& motion() const { return window_->document().file().motion; }
-
-  std::unique_ptr<MainWindow> window_;
 };
 
 TEST_F(KeyframeEditTest, MovingAnAngleSliderChangesTheRootForcePlot) {
