@@ -69,9 +69,13 @@ struct MotionNlpOptions {
   /// not held near its own interpolation. Reported objectives are J alone. 0 disables it.
   double regularization = 1.0;
   /// Threads that evaluate the root wrench and its derivatives over the grid (each takes a
-  /// contiguous run of samples); 0 = one per hardware thread, at most 4. Results do not depend
-  /// on it: every sample is computed the same way whichever thread runs it.
-  int threads = 0;
+  /// contiguous run of samples); 0 = one per hardware thread, at most 4. A fixed default, not
+  /// the machine's core count, so that the same input gives the same output everywhere: the
+  /// values do not depend on it, but the Hessian's blocked products round differently with
+  /// where each thread's memory lies, and some solves are that sensitive (the dive at K = 1
+  /// with 101 samples solves with 2 threads, wanders with 1; with 99 or 103 samples it solves
+  /// with 1).
+  int threads = 2;
 };
 
 class MotionNlp : public Nlp {
