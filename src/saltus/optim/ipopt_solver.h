@@ -56,7 +56,8 @@ using ProgressCallback = std::function<void(const ProgressInfo&)>;
 
 struct SolveReport {
   /// "solved" (Ipopt optimal or acceptable), else why not: "max_iterations", "infeasible",
-  /// "cancelled", "diverging", "restoration_failed", "error".
+  /// "cancelled", "diverging", "restoration_failed", "tiny_step", "stalled" (no progress after
+  /// SolverOptions::max_restarts restarts), "error".
   std::string status;
   std::string ipopt_status;  ///< Ipopt's own name of its return status
   bool solved = false;
