@@ -56,11 +56,8 @@ Rgb compare_colour(int run, int component) {
 
 ChartSpec compare_root_chart(bool moment, const std::array<const WrenchSeries*, 2>& runs,
                              const std::array<std::string, 2>& labels, const ComponentMask& shown) {
-  ChartSpec chart;
   // The legend names the runs (first solid, second dashed); the title fits half a window.
-  chart.title = moment ? "Root moment F4-F6 (root frame)" : "Root force F1-F3 (root frame)";
-  chart.x_title = "time (s)";
-  chart.y_title = moment ? "root moment (N·m)" : "root force (N)";
+  ChartSpec chart = root_wrench_chart_frame(moment);
   const int first = moment ? 3 : 0;
   for (int r = 0; r < 2; ++r) {
     const WrenchSeries* series = runs[static_cast<std::size_t>(r)];

@@ -116,13 +116,18 @@ Rgb optimised_keyframe_colour() {
   return {0.95, 0.55, 0.05};
 }
 
-ChartSpec root_wrench_chart(bool moment, const WrenchSeries& before, const WrenchSeries* after,
-                            const ComponentMask& shown, const std::vector<double>& keyframes_before,
-                            const std::vector<double>& keyframes_after) {
+ChartSpec root_wrench_chart_frame(bool moment) {
   ChartSpec chart;
   chart.title = moment ? "Root moment F4-F6 (root frame)" : "Root force F1-F3 (root frame)";
   chart.x_title = "time (s)";
   chart.y_title = moment ? "root moment (N·m)" : "root force (N)";
+  return chart;
+}
+
+ChartSpec root_wrench_chart(bool moment, const WrenchSeries& before, const WrenchSeries* after,
+                            const ComponentMask& shown, const std::vector<double>& keyframes_before,
+                            const std::vector<double>& keyframes_after) {
+  ChartSpec chart = root_wrench_chart_frame(moment);
   const int first = moment ? 3 : 0;
   for (int stage = 0; stage < 2; ++stage) {
     const WrenchSeries* series = stage == 0 ? &before : after;

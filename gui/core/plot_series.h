@@ -42,6 +42,10 @@ Rgb component_colour(int component);
 Rgb given_keyframe_colour();
 Rgb optimised_keyframe_colour();
 
+/// An empty root force (`moment` false) or root moment chart: title and axis titles, the frame
+/// both root_wrench_chart and the compare view's chart fill.
+ChartSpec root_wrench_chart_frame(bool moment);
+
 /// Root force (F1..F3, `moment` false) or root moment (F4..F6) against time; keyframe times as
 /// vertical markers. With `after` (may be null) `before` is dashed and paler and `after` solid,
 /// labels end in ", before" / ", after"; alone, `before` is drawn plain.

@@ -32,6 +32,18 @@ class KeyframeEditTest : public test::OpenMotionTest {
     return {};
   }
   const Motion& motion() const { return window_->document().file().motion; }
+
+  /// Saves the window, with the dock holding `panel` raised, into the candidate folder (for a
+  /// person to look at; nothing compares it).
+  void save_with_panel_in_front(QWidget* panel, const char* name) {
+    QWidget* dock = panel->parentWidget();
+    while (dock && !dock->inherits("QDockWidget"))
+      dock = dock->parentWidget();
+    if (dock) dock->raise();
+    QApplication::processEvents();
+    QDir().mkpath(SALTUS_GUI_CANDIDATE_DIR);
+    window_->grab_window().save(QString(SALTUS_GUI_CANDIDATE_DIR) + "/" + name);
+  }
 };
 
 TEST_F(KeyframeEditTest, MovingAnAngleSliderChangesTheRootForcePlot) {
@@ -67,13 +79,7 @@ TEST_F(KeyframeEditTest, MovingAnAngleSliderChangesTheRootForcePlot) {
   EXPECT_EQ(panel->selected_keyframe(), 2);
   EXPECT_EQ(panel->selected_segment(), knee);
   // Left for a person to look at: the window with the Keyframes panel in front.
-  QWidget* dock = panel->parentWidget();
-  while (dock && !dock->inherits("QDockWidget"))
-    dock = dock->parentWidget();
-  if (dock) dock->raise();
-  QApplication::processEvents();
-  QDir().mkpath(SALTUS_GUI_CANDIDATE_DIR);
-  window_->grab_window().save(QString(SALTUS_GUI_CANDIDATE_DIR) + "/keyframe_editor.png");
+  save_with_panel_in_front(panel, "keyframe_editor.png");
 }
 
 TEST_F(KeyframeEditTest, BadEditsShowTheMessageAndChangeNothing) {
@@ -150,13 +156,7 @@ TEST_F(KeyframeEditTest, MassTableScalesASegmentAndRejectsBadFactors) {
   EXPECT_NE(panel->problem().indexOf("positive"), -1) << panel->problem().toStdString();
   EXPECT_NEAR(window_->document().file().model.total_mass(), mass + 0.5 * thigh_mass, 1e-9);
   EXPECT_EQ(table->item(thigh, 2)->text(), "1.5");
-  QWidget* dock = panel->parentWidget();
-  while (dock && !dock->inherits("QDockWidget"))
-    dock = dock->parentWidget();
-  if (dock) dock->raise();
-  QApplication::processEvents();
-  QDir().mkpath(SALTUS_GUI_CANDIDATE_DIR);
-  window_->grab_window().save(QString(SALTUS_GUI_CANDIDATE_DIR) + "/model_editor.png");
+  save_with_panel_in_front(panel, "model_editor.png");
 
   saltus::test::TempDir dir;
   QString error;
