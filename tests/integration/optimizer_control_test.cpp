@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <filesystem>
 
@@ -98,6 +99,36 @@ TEST(OptimizerControl, RefinesTheKnotsWhenTheInterpolationMissesTheKeyframes) {
   // The undisturbed motion is met on knots at the keyframes: no refinement.
   const OptimizationResult plain = optimize_motion(file.motion, file.model, options);
   EXPECT_EQ(plain.knots_per_interval, 1);
+}
+
+/// The largest turn between consecutive control points over every segment's curve.
+double largest_turn(const Trajectory<double>& trajectory) {
+  double largest = 0.0;
+  for (const QuaternionSpline<double>& curve : trajectory.rotations)
+    largest = std::max(largest, curve.largest_control_turn());
+  return largest;
+}
+
+TEST(OptimizerControl, RefinesTheKnotsWhenTheInterpolationTurnsNearlyAFullTurn) {
+  // M5 with its interior keyframe times 0.05 s off puts two keyframes 0.05 s apart; the fit on
+  // knots at the keyframes meets every keyframe but turns the arms by 2π between two control
+  // points, where the log map's derivative is unbounded (the root force's gradient there was
+  // 1e17 and Ipopt wandered for 300 iterations). One refinement gives an ordinary curve.
+  const MotionFile file = load_motion_file(std::string(SALTUS_EXAMPLES_DIR) +
+                                           "/motions/M5-front-somersault-one-and-a-half-twists.motion.json");
+  const Motion disturbed = disturb_keyframe_times(file.motion, 0.05, 1);
+  OptimizeOptions options;
+  options.solver.max_iterations = 0;
+  options.refine_when_keyframes_missed = false;
+  const OptimizationResult as_asked = optimize_motion(disturbed, file.model, options);
+  EXPECT_LE(as_asked.before.keyframe_errors.max_quaternion_error, 0.05);  // not a missed keyframe
+  EXPECT_GT(largest_turn(as_asked.before.trajectory), kMaxControlTurn);
+
+  options.refine_when_keyframes_missed = true;
+  const OptimizationResult refined = optimize_motion(disturbed, file.model, options);
+  EXPECT_EQ(refined.knots_per_interval, 2);
+  EXPECT_LE(largest_turn(refined.before.trajectory), kMaxControlTurn);
+  EXPECT_LE(refined.before.keyframe_errors.max_quaternion_error, 0.05);
 }
 
 }  // namespace

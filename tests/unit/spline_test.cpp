@@ -248,6 +248,29 @@ TEST(QuaternionSpline, EvaluateMatchesSpanFunction) {
   }
 }
 
+TEST(QuaternionSpline, LargestControlTurnFollowsTheControlSigns) {
+  // Turns of 0.3, 1.2 and 0.7 rad about different axes: the largest is 1.2. Flipping a control's
+  // sign makes the curve take the long way between it and its neighbours (2π − angle), and a
+  // control equal to minus its predecessor is a full turn: the log map's branch point.
+  const std::vector<double> k = knots_for({0.0, 1.0, 2.0, 3.0}, 1);  // 6 controls
+  std::vector<Quat<double>> c{Quat<double>::Identity()};
+  const double angles[] = {0.3, 1.2, 0.7, 0.2, 0.4};
+  const Eigen::Vector3d axes[] = {Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(),
+                                  Eigen::Vector3d::UnitZ(), Eigen::Vector3d(1, 1, 0),
+                                  Eigen::Vector3d(0, 1, 1)};
+  for (int j = 0; j < 5; ++j)
+    c.push_back(c.back() * axis_angle(angles[j], axes[j]));
+  EXPECT_NEAR(QuaternionSpline<double>(k, c).largest_control_turn(), 1.2, 1e-12);
+
+  std::vector<Quat<double>> flipped = c;
+  flipped[3].coeffs() *= -1.0;  // its turns 0.7 and 0.2 become 2π − 0.7 and 2π − 0.2
+  EXPECT_NEAR(QuaternionSpline<double>(k, flipped).largest_control_turn(), 2 * M_PI - 0.2, 1e-12);
+
+  std::vector<Quat<double>> full = c;
+  full[4].coeffs() = -full[3].coeffs();
+  EXPECT_NEAR(QuaternionSpline<double>(k, full).largest_control_turn(), 2 * M_PI, 1e-12);
+}
+
 TEST(QuaternionSpline, UnitNormAndEndInterpolation) {
   for (int refine = 1; refine <= 3; ++refine) {
     const QuaternionSpline<double> s = random_spline(refine, 10 + refine);

@@ -48,6 +48,11 @@ class QuaternionSpline {
   /// t outside the knot range is clamped to the nearest end knot (value, ω and α of that end).
   QuaternionSample<Scalar> evaluate(const Scalar& t) const;
 
+  /// The largest turn between consecutive control points, 2‖w_j‖ in [0, 2π] (rad). Near 2π the
+  /// log map that defines w_j reaches its branch point: its derivative grows like
+  /// 1/sin(‖w_j‖), so the curve's sensitivity to its controls is unbounded there.
+  Scalar largest_control_turn() const;
+
  private:
   std::vector<Scalar> knots_;
   std::vector<Quat<Scalar>> control_;

@@ -73,6 +73,18 @@ QuaternionSpline<Scalar>::QuaternionSpline(std::vector<Scalar> knots,
 }
 
 template <typename Scalar>
+Scalar QuaternionSpline<Scalar>::largest_control_turn() const {
+  // From the controls, not from relative_log_: at exactly 2π (c_j = −c_{j−1}) the log is 0/0.
+  Scalar largest(0);
+  for (std::size_t j = 1; j < control_.size(); ++j) {
+    const Quat<Scalar> d = control_[j - 1].conjugate() * control_[j];
+    const Scalar turn = Scalar(2) * atan2_same_type(d.vec().norm(), d.w());
+    if (value_of(turn) > value_of(largest)) largest = turn;
+  }
+  return largest;
+}
+
+template <typename Scalar>
 QuaternionSample<Scalar> QuaternionSpline<Scalar>::evaluate(const Scalar& t) const {
   // t outside the knot range: the nearest end's value, ω and α (see cubic_basis).
   const SpanBasis<Scalar> basis = cubic_basis(knots_, t);

@@ -1,5 +1,6 @@
 #include "saltus/optim/optimize.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "saltus/motion/interpolate.h"
@@ -27,7 +28,11 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
     const KeyframeErrors& missed = result.before.keyframe_errors;
     const bool meets_keyframes = missed.max_quaternion_error <= motion.tolerances.quaternion &&
                                  missed.max_translation_error_m <= motion.tolerances.translation_m;
-    if (meets_keyframes || start.spline || !options.refine_when_keyframes_missed ||
+    double largest_turn = 0.0;
+    for (const QuaternionSpline<double>& curve : result.before.trajectory.rotations)
+      largest_turn = std::max(largest_turn, curve.largest_control_turn());
+    const bool well_posed = meets_keyframes && largest_turn <= kMaxControlTurn;
+    if (well_posed || start.spline || !options.refine_when_keyframes_missed ||
         k >= std::max(options.nlp.knots_per_interval, kMaxAutomaticKnotsPerInterval))
       break;
     chosen.nlp.knots_per_interval = k + 1;

@@ -15,20 +15,33 @@ struct OptimizeOptions {
   MotionNlpOptions nlp;
   SolverOptions solver;
   /// Refine the knots (K = 2, 3, ... up to kMaxAutomaticKnotsPerInterval) when the interpolation
-  /// on the requested knots misses the keyframes by more than their tolerances (see
-  /// optimize_motion).
+  /// on the requested knots misses the keyframes by more than their tolerances, or turns a
+  /// segment by nearly a full turn between two control points (kMaxControlTurn); see
+  /// optimize_motion.
   bool refine_when_keyframes_missed = true;
 };
 
 /// The finest knot refinement optimize_motion picks on its own.
 inline constexpr int kMaxAutomaticKnotsPerInterval = 4;
 
+/// The largest turn between consecutive control points of one segment's interpolated curve that
+/// the optimiser starts from (rad); beyond it the knots are refined. Near 2π the curve's
+/// derivatives with respect to its controls blow up like 1/sin(turn/2)
+/// (QuaternionSpline::largest_control_turn); at 1.75π they are 2.6 times those at π.
+/// Measured on the interpolations of M1-M7 and the dive: at most 3.66 rad as given. With the
+/// convergence study's timing errors, keyframes 0.05 s apart made the fit turn the arms by
+/// exactly 2π (M5 at ±0.05 s: a root-force gradient of 1e17 at the start, then 300 iterations
+/// of wandering), and M5 and M7 at ±0.1 s start at 5.72-5.74 rad, from where two M5 runs
+/// reached the branch point (dual infeasibility 1e12) and never converged. Refined once, all
+/// of these solve (0.2-0.7 N).
+inline constexpr double kMaxControlTurn = 1.75 * 3.14159265358979323846;
+
 struct OptimizationResult {
   SolveReport solve;
   int variables = 0;
   int constraints = 0;
   /// The refinement K used: the requested one, or more when the interpolation on it could not
-  /// meet the keyframes (OptimizeOptions::refine_when_keyframes_missed).
+  /// meet the keyframes or was near-singular (OptimizeOptions::refine_when_keyframes_missed).
   int knots_per_interval = 1;
   MotionEvaluation before;  ///< the interpolated motion (the starting point)
   MotionEvaluation after;   ///< the optimised motion, on the same sample grid
