@@ -153,7 +153,7 @@ TEST(NlpHessian, IsDampedGaussNewtonOfTheRootWrench) {
     const Vector6d fm = wrench.wrench(times[k]);
     expected += 2.0 * weight * ((fp - fm) / (2 * eps)).squaredNorm();
   }
-  expected += nlp.options().damping * nlp.force_objective(s.x.data()) * v.squaredNorm();
+  expected += nlp.options().damping.initial * nlp.force_objective(s.x.data()) * v.squaredNorm();
   // Proximity term w·Σ‖δ‖² over the joints' tangent coordinates: curvature 2w.
   const double w = nlp.options().regularization;
   const TrajectoryLayout& layout = nlp.layout();
@@ -161,6 +161,93 @@ TEST(NlpHessian, IsDampedGaussNewtonOfTheRootWrench) {
     if (i % layout.curve_block() >= 3) expected += 2.0 * w * v[i] * v[i];
   const double actual = v.dot(h * v);
   EXPECT_NEAR(actual, expected, 1e-5 * expected);
+}
+
+/// The relaxed objective's Hessian (multipliers zero: no constraint curvature) as a dense
+/// matrix, and the gradient, at x.
+void dense_model(MotionNlp& nlp, const std::vector<double>& x, Eigen::MatrixXd& hessian,
+                 Eigen::VectorXd& gradient) {
+  const int n = nlp.variable_count();
+  const int nnz = nlp.hessian_nonzeros();
+  std::vector<int> rows(nnz), cols(nnz);
+  std::vector<double> values(nnz);
+  nlp.hessian_structure(rows.data(), cols.data());
+  const std::vector<double> lambda(nlp.constraint_count(), 0.0);
+  nlp.hessian_values(x.data(), 1.0, lambda.data(), values.data());
+  hessian = Eigen::MatrixXd::Zero(n, n);
+  for (int e = 0; e < nnz; ++e) {
+    hessian(rows[e], cols[e]) += values[e];
+    if (rows[e] != cols[e]) hessian(cols[e], rows[e]) += values[e];
+  }
+  gradient.resize(n);
+  nlp.gradient(x.data(), gradient.data());
+}
+
+TEST(NlpDamping, FollowsHowWellTheDampedModelPredictedTheStep) {
+  // The NLP judges each step by the damped quadratic model it handed Ipopt at the step's origin.
+  // Here the same judgement is made independently (dense model, objective values) along the
+  // damped Gauss-Newton direction d for step lengths α, and the factor must move the way
+  // AdaptiveDamping's rule says for that ratio. The model's decrease along d is
+  // α(1 − α/2)·gᵀB⁻¹g: beyond α = 2 it predicts an increase, which counts as poorly predicted
+  // (ratio −1); α = 2 itself (a predicted change of 0) is left out.
+  const DampingRule rule;
+  int shrunk = 0, kept = 0, grown = 0;
+  for (const double alpha : {1.0 / 256, 1.0 / 64, 1.0 / 16, 0.25, 0.5, 1.0, 1.5, 1.9, 3.0, 6.0}) {
+    NlpAtRandomPoint s(Formulation::kRelaxed, 1, 3);
+    MotionNlp& nlp = *s.nlp;
+    ASSERT_EQ(nlp.damping_factor(), rule.initial);
+    Eigen::MatrixXd hessian;
+    Eigen::VectorXd gradient;
+    dense_model(nlp, s.x, hessian, gradient);
+    const Eigen::VectorXd step = -alpha * hessian.ldlt().solve(gradient);
+    std::vector<double> next = s.x;
+    for (int v = 0; v < nlp.variable_count(); ++v)
+      next[v] += step[v];
+    const double predicted = -(gradient.dot(step) + 0.5 * step.dot(hessian * step));
+    const double before = nlp.objective(s.x.data());
+    const double ratio = predicted > 0 ? (before - nlp.objective(next.data())) / predicted : -1.0;
+    StepTaken taken;
+    taken.iteration = 1;
+    taken.line_search_trials = 1;
+    nlp.step_taken(taken);
+    Eigen::MatrixXd unused_hessian;
+    Eigen::VectorXd unused_gradient;
+    dense_model(nlp, next, unused_hessian, unused_gradient);
+    SCOPED_TRACE("alpha " + std::to_string(alpha) + ", ratio " + std::to_string(ratio));
+    if (ratio > rule.good_ratio + 0.01) {
+      EXPECT_DOUBLE_EQ(nlp.damping_factor(), rule.initial / rule.shrink);
+      ++shrunk;
+    } else if (ratio < rule.poor_ratio - 0.01) {
+      EXPECT_DOUBLE_EQ(nlp.damping_factor(), rule.initial * rule.grow);
+      ++grown;
+    } else if (ratio > rule.poor_ratio + 0.01 && ratio < rule.good_ratio - 0.01) {
+      EXPECT_DOUBLE_EQ(nlp.damping_factor(), rule.initial);
+      ++kept;
+    }
+  }
+  // Short steps are predicted well, long ones badly: both verdicts must have been exercised.
+  EXPECT_GT(shrunk, 0);
+  EXPECT_GT(grown, 0);
+
+  // A step the line search had to cut grows the factor even when predicted well; a new run
+  // (iteration 0) starts again from the initial factor.
+  NlpAtRandomPoint s(Formulation::kRelaxed, 1, 3);
+  MotionNlp& nlp = *s.nlp;
+  Eigen::MatrixXd hessian;
+  Eigen::VectorXd gradient;
+  dense_model(nlp, s.x, hessian, gradient);
+  std::vector<double> next = s.x;
+  const Eigen::VectorXd step = -1e-3 * hessian.ldlt().solve(gradient);
+  for (int v = 0; v < nlp.variable_count(); ++v)
+    next[v] += step[v];
+  StepTaken cut;
+  cut.iteration = 1;
+  cut.line_search_trials = 3;
+  nlp.step_taken(cut);
+  dense_model(nlp, next, hessian, gradient);
+  EXPECT_DOUBLE_EQ(nlp.damping_factor(), rule.initial * rule.grow);
+  nlp.step_taken(StepTaken{});
+  EXPECT_DOUBLE_EQ(nlp.damping_factor(), rule.initial);
 }
 
 TEST(NlpKeyframeRows, AreInUnitsOfTheirTolerance) {
@@ -232,7 +319,7 @@ TEST(Solver, StoppedEarlyReturnsTheBetterOfItsLastAndItsBestFeasibleIterate) {
                                          "/motions/M1-straight-back-somersault.motion.json");
   const Trajectory<double> initial = interpolate_keyframes(m1.motion, m1.model, {});
   MotionNlp nlp(m1.motion, m1.model, initial, MotionNlpOptions{});
-  for (int limit : {3, 12, 28}) {
+  for (int limit : {3, 10, 18}) {
     SolverOptions options;
     options.max_iterations = limit;
     double best_feasible = std::numeric_limits<double>::infinity(), last = 0.0;

@@ -102,10 +102,15 @@ class NlpAdapter : public Ipopt::TNLP {
   }
 
   bool intermediate_callback(Ipopt::AlgorithmMode mode, Index iter, Number obj_value, Number inf_pr,
-                             Number, Number, Number, Number, Number, Number, Index,
+                             Number, Number, Number, Number, Number, Number, Index ls_trials,
                              const Ipopt::IpoptData* ip_data,
                              Ipopt::IpoptCalculatedQuantities*) override {
     report_.iterations = first_iteration_ + iter;
+    StepTaken step;
+    step.iteration = iter;
+    step.line_search_trials = ls_trials;
+    step.restoration = mode == Ipopt::RestorationPhaseMode;
+    nlp_.step_taken(step);
     if (mode == Ipopt::RegularMode && obj_value < best_.objective) {
       // Progress: a feasible iterate better than the best one, or an infeasible one below it
       // (the usual way to approach a constrained optimum), but only the former is kept.

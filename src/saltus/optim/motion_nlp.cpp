@@ -41,7 +41,10 @@ Eigen::Vector4d wxyz(const Eigen::Quaterniond& q) {
 
 MotionNlp::MotionNlp(const Motion& motion, const BodyModel& model,
                      const Trajectory<double>& initial, const MotionNlpOptions& options)
-    : options_(options), takeoff_(motion.takeoff), tolerances_(motion.tolerances) {
+    : options_(options),
+      takeoff_(motion.takeoff),
+      tolerances_(motion.tolerances),
+      damping_(options.damping) {
   const int n_key = static_cast<int>(motion.keyframes.size());
   if (n_key < 2) throw std::invalid_argument("a motion needs at least two keyframes");
   if (options.samples < 2) throw std::invalid_argument("samples must be at least 2");
@@ -591,7 +594,8 @@ void MotionNlp::hessian_values(const double* x, double objective_factor, const d
     // Gauss-Newton of J = Σ w_s ‖F_s‖², damped (Levenberg-Marquardt, see MotionNlpOptions).
     compute_wrench_jacobians();
     add_wrench_gauss_newton(2.0 * objective_factor, values);
-    const double damping = objective_factor * options_.damping * force_objective(x);
+    if (options_.adapt_damping && objective_factor > 0 && last_model_.valid) judge_last_step(x);
+    const double damping = objective_factor * damping_.factor() * force_objective(x);
     for (int v = 0; v < layout_.size(); ++v)
       values[hessian_index(v, v)] += damping;
   } else {
@@ -608,6 +612,18 @@ void MotionNlp::hessian_values(const double* x, double objective_factor, const d
   proximity_term(x, nullptr, penalty_curvature.data());
   for (int v = 0; v < layout_.size(); ++v)
     values[hessian_index(v, v)] += objective_factor * penalty_curvature[v];
+  if (options_.formulation == Formulation::kRelaxed && options_.adapt_damping &&
+      objective_factor > 0) {
+    // Keep the objective's model (before the constraints' curvature joins it) for the next step.
+    last_model_.x = x_;
+    last_model_.gradient.resize(layout_.size());
+    gradient(x, last_model_.gradient.data());
+    last_model_.hessian.assign(values, values + hessian_nonzeros_);
+    for (double& h : last_model_.hessian)
+      h /= objective_factor;
+    last_model_.objective = objective(x);
+    last_model_.valid = true;
+  }
 
   // Gauss-Newton curvature of the quaternion-distance constraints g = ‖r‖² (∇²g ≈ 2 JᵀJ),
   // counted only where the multiplier makes it positive semi-definite.
@@ -619,6 +635,54 @@ void MotionNlp::hessian_values(const double* x, double objective_factor, const d
         add_gauss_newton(rotation_jacobian_[index], 2.0 * rotation_scale_ * lambda, values);
     }
   }
+}
+
+void MotionNlp::step_taken(const StepTaken& step) {
+  // A new run starts from scratch; a restoration step optimised something else (feasibility),
+  // so the model kept before it says nothing about it.
+  if (step.iteration == 0) damping_.reset();
+  if (step.iteration == 0 || step.restoration) last_model_.valid = false;
+  last_step_ = step;
+}
+
+std::vector<double> MotionNlp::band_product(const std::vector<double>& band,
+                                            const double* s) const {
+  const int n = layout_.size();
+  std::vector<double> product(n, 0.0);
+  for (int r = 0; r < n; ++r) {
+    const long start = hessian_row_start_[r];
+    const int first = hessian_first_column_[r];
+    for (int c = first; c < r; ++c) {
+      product[r] += band[start + (c - first)] * s[c];
+      product[c] += band[start + (c - first)] * s[r];
+    }
+    product[r] += band[start + (r - first)] * s[r];
+  }
+  return product;
+}
+
+void MotionNlp::judge_last_step(const double* x) {
+  const int n = layout_.size();
+  std::vector<double> step(n);
+  double length = 0.0;
+  for (int v = 0; v < n; ++v) {
+    step[v] = x[v] - last_model_.x[v];
+    length += step[v] * step[v];
+  }
+  if (length == 0.0) return;  // the same point again: nothing to judge
+  const std::vector<double> curvature = band_product(last_model_.hessian, step.data());
+  double slope = 0.0, quadratic = 0.0;
+  for (int v = 0; v < n; ++v) {
+    slope += last_model_.gradient[v] * step[v];
+    quadratic += step[v] * curvature[v];
+  }
+  const double predicted = -(slope + 0.5 * quadratic);
+  const double actual = last_model_.objective - objective(x);
+  // A step the model says goes uphill was taken for feasibility (Ipopt trades objective for
+  // constraint violation): counted as poorly predicted, so that μ grows while the keyframe
+  // constraints are being restored.
+  const double ratio = predicted > 0 ? actual / predicted : -1.0;
+  damping_.update(ratio, last_step_.line_search_trials > 1);
 }
 
 }  // namespace saltus

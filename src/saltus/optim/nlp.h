@@ -6,6 +6,13 @@
 
 namespace saltus {
 
+/// How the solver reached its current iterate. Told before that iterate's Hessian is asked for.
+struct StepTaken {
+  int iteration = 0;           ///< of the current solver run; 0: the starting point
+  int line_search_trials = 0;  ///< 1: the first trial step was accepted; more: it was cut back
+  bool restoration = false;    ///< the step came from the feasibility restoration phase
+};
+
 class Nlp {
  public:
   virtual ~Nlp() = default;
@@ -30,6 +37,10 @@ class Nlp {
   virtual void hessian_structure(int* rows, int* columns) const = 0;
   virtual void hessian_values(const double* x, double objective_factor, const double* multipliers,
                               double* values) = 0;
+
+  /// Called once per solver iteration, before its Hessian; default: ignored. An NLP whose
+  /// Hessian adapts to the solver's progress (MotionNlp's damping) listens here.
+  virtual void step_taken(const StepTaken&) {}
 };
 
 inline constexpr double kUnbounded = 1e19;
