@@ -96,6 +96,8 @@ MotionNlp::MotionNlp(const Motion& motion, const BodyModel& model,
   threads = std::max(1, std::min(threads, options.samples / 20));
   for (int t = 0; t < threads; ++t)
     derivatives_.push_back(std::make_unique<RootWrenchDerivatives>(model, layout_, reference_));
+  pool_ = std::make_unique<WorkerPool>(threads);
+  stacked_rows_.resize(threads);
 
   // Jacobian structure, row by row.
   std::vector<int> time_variables;
@@ -270,32 +272,30 @@ void MotionNlp::load(const double* x) {
 }
 
 template <typename Body>
-void MotionNlp::for_each_sample_range(Body&& body) {
-  const int samples = static_cast<int>(sample_times_.size());
-  const int parts = static_cast<int>(derivatives_.size());
-  std::vector<std::thread> helpers;
-  for (int p = 1; p < parts; ++p)
-    helpers.emplace_back(
-        [&, p] { body(*derivatives_[p], samples * p / parts, samples * (p + 1) / parts); });
-  body(*derivatives_[0], 0, samples / parts);
-  for (std::thread& helper : helpers)
-    helper.join();
+void MotionNlp::for_each_range(int count, Body&& body) {
+  const int parts = pool_->parts();
+  pool_->run([&](int p) {
+    const int begin = count * p / parts, end = count * (p + 1) / parts;
+    if (begin < end) body(p, begin, end);
+  });
 }
 
 void MotionNlp::compute_wrenches() {
   if (have_wrenches_) return;
-  for_each_sample_range([this](RootWrenchDerivatives& evaluator, int begin, int end) {
+  const int samples = static_cast<int>(sample_times_.size());
+  for_each_range(samples, [this](int part, int begin, int end) {
     for (int s = begin; s < end; ++s)
-      wrench_[s] = evaluator.wrench(sample_times_[s]);
+      wrench_[s] = derivatives_[part]->wrench(sample_times_[s]);
   });
   have_wrenches_ = true;
 }
 
 void MotionNlp::compute_wrench_jacobians() {
   if (have_wrench_jacobians_) return;
-  for_each_sample_range([this](RootWrenchDerivatives& evaluator, int begin, int end) {
+  const int samples = static_cast<int>(sample_times_.size());
+  for_each_range(samples, [this](int part, int begin, int end) {
     for (int s = begin; s < end; ++s) {
-      evaluator.wrench_jacobian(sample_times_[s], wrench_jacobian_[s]);
+      derivatives_[part]->wrench_jacobian(sample_times_[s], wrench_jacobian_[s]);
       wrench_[s] = wrench_jacobian_[s].value;
     }
   });
@@ -319,11 +319,14 @@ void MotionNlp::compute_keyframe_values() {
 void MotionNlp::compute_keyframes() {
   if (have_keyframes_) return;
   keyframe_times_ = keyframe_times_from(layout_, reference_, x_.data());
-  for (int i = 0; i < layout_.keyframe_count; ++i) {
-    derivatives_[0]->keyframe_translation(i, translation_jacobian_[i]);
-    for (int k = 0; k < layout_.segment_count; ++k)
-      derivatives_[0]->keyframe_rotation(i, k, rotation_jacobian_[i * layout_.segment_count + k]);
-  }
+  for_each_range(layout_.keyframe_count, [this](int part, int begin, int end) {
+    RootWrenchDerivatives& evaluator = *derivatives_[part];
+    for (int i = begin; i < end; ++i) {
+      evaluator.keyframe_translation(i, translation_jacobian_[i]);
+      for (int k = 0; k < layout_.segment_count; ++k)
+        evaluator.keyframe_rotation(i, k, rotation_jacobian_[i * layout_.segment_count + k]);
+    }
+  });
   have_keyframes_ = true;
 }
 
@@ -524,48 +527,65 @@ void MotionNlp::add_wrench_gauss_newton(double factor, double* values) {
   // Samples on one knot span share their columns (the span's control block and time slots), so
   // Σ w_s J_sᵀJ_s over the span is one symmetric rank-k update of the stacked, weighted rows
   // and one scatter into the band — instead of a dense product and a scatter per sample, which
-  // made the Hessian the most expensive part of an iteration.
+  // made the Hessian the most expensive part of an iteration. The spans' blocks are computed in
+  // parallel and scattered in span order, so the sums do not depend on the thread count.
   const std::size_t n = sample_times_.size();
-  std::size_t begin = 0;
-  while (begin < n) {
+  spans_.clear();
+  for (std::size_t begin = 0; begin < n;) {
     const LocalJacobian<6>& first = wrench_jacobian_[begin];
-    const int width = static_cast<int>(first.control.cols());
-    const int times = first.time_count;
     std::size_t end = begin + 1;
     while (end < n &&
            wrench_jacobian_[end].first_control_variable == first.first_control_variable &&
-           wrench_jacobian_[end].time_count == times &&
+           wrench_jacobian_[end].time_count == first.time_count &&
            wrench_jacobian_[end].time_variable == first.time_variable)
       ++end;
-    stacked_rows_.resize(6 * static_cast<int>(end - begin), width + times);
-    for (std::size_t s = begin; s < end; ++s) {
-      const double root_weight = std::sqrt(factor * sample_weights_[s]);
-      const int row = 6 * static_cast<int>(s - begin);
-      stacked_rows_.block(row, 0, 6, width) = root_weight * wrench_jacobian_[s].control;
-      stacked_rows_.block(row, width, 6, times) =
-          root_weight * wrench_jacobian_[s].time.leftCols(times);
+    spans_.emplace_back(static_cast<int>(begin), static_cast<int>(end));
+    begin = end;
+  }
+  span_blocks_.resize(spans_.size());
+  const int span_count = static_cast<int>(spans_.size());
+  for_each_range(span_count, [&](int part, int first_span, int end_span) {
+    Eigen::MatrixXd& stacked = stacked_rows_[part];
+    for (int index = first_span; index < end_span; ++index) {
+      const auto [begin, end] = spans_[index];
+      const LocalJacobian<6>& first = wrench_jacobian_[begin];
+      const int width = static_cast<int>(first.control.cols());
+      const int times = first.time_count;
+      stacked.resize(6 * (end - begin), width + times);
+      for (int s = begin; s < end; ++s) {
+        const double root_weight = std::sqrt(factor * sample_weights_[s]);
+        const int row = 6 * (s - begin);
+        stacked.block(row, 0, 6, width) = root_weight * wrench_jacobian_[s].control;
+        stacked.block(row, width, 6, times) =
+            root_weight * wrench_jacobian_[s].time.leftCols(times);
+      }
+      Eigen::MatrixXd& block = span_blocks_[index];
+      block.setZero(width + times, width + times);
+      block.selfadjointView<Eigen::Lower>().rankUpdate(stacked.transpose());
     }
-    span_block_.setZero(width + times, width + times);
-    span_block_.selfadjointView<Eigen::Lower>().rankUpdate(stacked_rows_.transpose());
+  });
+  for (int index = 0; index < span_count; ++index) {
+    const LocalJacobian<6>& first = wrench_jacobian_[spans_[index].first];
+    const Eigen::MatrixXd& block = span_blocks_[index];
+    const int width = static_cast<int>(first.control.cols());
+    const int times = first.time_count;
     // Scatter the lower triangle: controls are contiguous from `first_control_variable`, time
     // slot p is variable time_variable[p] (beyond every control).
     const int base = first.first_control_variable;
     for (int a = 0; a < width; ++a)
       Eigen::Map<Eigen::RowVectorXd>(values + hessian_index(base + a, base), a + 1) +=
-          span_block_.row(a).head(a + 1);
+          block.row(a).head(a + 1);
     for (int p = 0; p < times; ++p) {
       const int tv = first.time_variable[p];
       Eigen::Map<Eigen::RowVectorXd>(values + hessian_index(tv, base), width) +=
-          span_block_.row(width + p).head(width);
+          block.row(width + p).head(width);
       for (int q = 0; q < times; ++q) {
         const int other = first.time_variable[q];
         // Row width + max(p, q) holds the pair in the lower triangle.
         if (other <= tv)
-          values[hessian_index(tv, other)] +=
-              span_block_(width + std::max(p, q), width + std::min(p, q));
+          values[hessian_index(tv, other)] += block(width + std::max(p, q), width + std::min(p, q));
       }
     }
-    begin = end;
   }
 }
 

@@ -28,6 +28,7 @@
 #include "saltus/optim/nlp.h"
 #include "saltus/optim/root_wrench_derivatives.h"
 #include "saltus/optim/trajectory_layout.h"
+#include "saltus/optim/worker_pool.h"
 
 namespace saltus {
 
@@ -172,17 +173,21 @@ class MotionNlp : public Nlp {
   int hessian_nonzeros_ = 0;
 
   // Evaluation cache keyed on x.
-  /// One evaluator per thread (each has its own workspace); [0] also serves keyframes.
+  /// One evaluator per thread (each has its own workspace); [0] also serves line-search values.
   std::vector<std::unique_ptr<RootWrenchDerivatives>> derivatives_;
-  /// Runs body(evaluator, first_sample, end_sample) over the grid, split across the evaluators.
+  std::unique_ptr<WorkerPool> pool_;  ///< one part per evaluator
+  /// Runs body(part, first, end) over [0, count) split into contiguous ranges, one per pool part
+  /// (samples, keyframes or spans); part p uses derivatives_[p] and its own workspace.
   template <typename Body>
-  void for_each_sample_range(Body&& body);
+  void for_each_range(int count, Body&& body);
   std::vector<double> x_;
   bool have_x_ = false, have_wrenches_ = false, have_wrench_jacobians_ = false,
        have_keyframes_ = false, have_keyframe_values_ = false;
   std::vector<Vector6d> wrench_;
   std::vector<LocalJacobian<6>> wrench_jacobian_;
-  Eigen::MatrixXd stacked_rows_, span_block_;           ///< add_wrench_gauss_newton's workspace
+  /// add_wrench_gauss_newton's workspace: the stacked rows per thread, the block per span.
+  std::vector<Eigen::MatrixXd> stacked_rows_, span_blocks_;
+  std::vector<std::pair<int, int>> spans_;  ///< [first, end) samples of each knot span
   std::vector<LocalJacobian<3>> translation_jacobian_;  ///< [keyframe]
   std::vector<LocalJacobian<4>> rotation_jacobian_;     ///< [keyframe * segments + segment]
   std::vector<double> keyframe_times_;
