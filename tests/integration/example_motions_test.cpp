@@ -85,22 +85,32 @@ TEST_P(ExampleMotion, HasThePapersKeyframeCountAndTakeoff) {
   }
 }
 
+/// Angle (deg) between the body's long axis (the root segment's y axis) and world up (down: −y).
+double long_axis_angle_deg(const Eigen::Quaterniond& root, bool down) {
+  const Eigen::Vector3d long_axis = root * Eigen::Vector3d::UnitY();
+  return std::acos(std::clamp(down ? -long_axis.y() : long_axis.y(), -1.0, 1.0)) * kRadToDeg;
+}
+
 TEST_P(ExampleMotion, FreeFlightLandsOnTheLastKeyframe) {
   const MotionFile file = load_motion_file(GetParam());
   const SimulationResult flight = simulate_motion(file.motion, file.model);
   EXPECT_TRUE(flight.angular_momentum_from_file);
-  EXPECT_LT(flight.landing_root_error_deg, 5.0);
+  const Eigen::Quaterniond& flight_end = flight.samples.back().segment_rotation[0];
+  const Eigen::Quaterniond& last_keyframe = file.motion.keyframes.back().rotations[0];
 
-  // Where the body's long axis (the abdomen's y axis) points at the end of the flight: up after
-  // the trampoline skills, down at the dive's water entry. A take-off twist leaves some tilt
-  // (examples/README.md): a few degrees after whole somersaults, about twice the tilt of the
-  // angular momentum (14 deg here) after the dive's one and a half.
-  const Eigen::Vector3d long_axis =
-      flight.samples.back().segment_rotation[0] * Eigen::Vector3d::UnitY();
+  // Where the body's long axis points at the end of the flight: up after the trampoline skills,
+  // down at the dive's water entry. A take-off twist leaves some tilt (examples/README.md): a
+  // few degrees after whole somersaults, about twice the tilt of the angular momentum (14 deg
+  // here) after the dive's one and a half. The dive's entry keyframe is designed exactly
+  // vertical (paper §6.2), so there the flight misses its last keyframe by that tilt and the
+  // optimiser has to close the gap (optimize_examples_test.cpp).
   if (is_dive(GetParam())) {
-    EXPECT_LT(std::acos(std::clamp(-long_axis.y(), -1.0, 1.0)) * kRadToDeg, 15.0);
+    EXPECT_LT(long_axis_angle_deg(last_keyframe, true), 0.01);
+    EXPECT_LT(long_axis_angle_deg(flight_end, true), 15.0);
+    EXPECT_LT(flight.landing_root_error_deg, 15.0);
   } else {
-    EXPECT_LT(std::acos(std::clamp(long_axis.y(), -1.0, 1.0)) * kRadToDeg, 6.0);
+    EXPECT_LT(flight.landing_root_error_deg, 5.0);
+    EXPECT_LT(long_axis_angle_deg(flight_end, false), 6.0);
   }
 }
 
