@@ -13,13 +13,13 @@
 
 namespace saltus {
 
-namespace {
-
-std::string format(const char* pattern, double value) {
+std::string format_number(const char* pattern, double value) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, pattern, value);
   return buffer;
 }
+
+namespace {
 
 double median(std::vector<double> values) {
   if (values.empty()) return std::nan("");
@@ -30,11 +30,11 @@ double median(std::vector<double> values) {
 
 std::string mass_label(const StudyCase& c) {
   if (c.mass_error == 0.0) return "0 %";
-  return format("%+.0f %%", 100.0 * c.mass_error) + " (" + c.mass_segment + ")";
+  return format_number("%+.0f %%", 100.0 * c.mass_error) + " (" + c.mass_segment + ")";
 }
 
 std::string timing_label(const StudyCase& c) {
-  return c.timing_error_s == 0.0 ? "0 s" : format("±%.2f s", c.timing_error_s);
+  return c.timing_error_s == 0.0 ? "0 s" : format_number("±%.2f s", c.timing_error_s);
 }
 
 /// Success-rate table: one row per value of `row_of`, one column per formulation.
@@ -196,7 +196,7 @@ std::vector<StudyOutcome> run_convergence_study(
 
 std::string formulation_label(const StudyCase& study_case) {
   if (study_case.formulation == Formulation::kRelaxed) return "relaxed";
-  return format("strict ε=%g", study_case.epsilon);
+  return format_number("strict ε=%g", study_case.epsilon);
 }
 
 std::string convergence_markdown(const std::vector<StudyOutcome>& outcomes) {
@@ -226,10 +226,10 @@ std::string convergence_markdown(const std::vector<StudyOutcome>& outcomes) {
       }
     }
     out << "| " << label << " | " << total << " | " << solved << " ("
-        << format("%.0f", 100.0 * solved / std::max(total, 1)) << " %) | "
-        << format("%.0f", median(iterations)) << " | " << format("%.2f", median(seconds)) << " | "
-        << format("%.3g", median(force)) << " | "
-        << (solved ? format("%.3g", worst) : std::string("–")) << " |\n";
+        << format_number("%.0f", 100.0 * solved / std::max(total, 1)) << " %) | "
+        << format_number("%.0f", median(iterations)) << " | " << format_number("%.2f", median(seconds)) << " | "
+        << format_number("%.3g", median(force)) << " | "
+        << (solved ? format_number("%.3g", worst) : std::string("–")) << " |\n";
   }
   // Cases whose interpolation could not meet the keyframes on the requested knots ran refined.
   std::map<std::string, int> refined;
@@ -238,7 +238,7 @@ std::string convergence_markdown(const std::vector<StudyOutcome>& outcomes) {
     requested = std::min(requested, o.knots_per_interval);
   for (const StudyOutcome& o : outcomes)
     if (o.knots_per_interval > requested)
-      ++refined[o.study_case.motion + format(" at ±%g s", o.study_case.timing_error_s)];
+      ++refined[o.study_case.motion + format_number(" at ±%g s", o.study_case.timing_error_s)];
   if (!refined.empty()) {
     out << "\nRun with refined knots (K > " << requested
         << ") because the interpolation on the requested knots missed the keyframes by more than "
@@ -295,7 +295,7 @@ MassStudyResult run_mass_study(const MotionFile& file, const MassStudyOptions& o
     scaled = scale_segment_mass(scaled, s, options.factor);
     label += (label.empty() ? "" : "+") + s;
   }
-  label += format(" x%g", options.factor);
+  label += format_number(" x%g", options.factor);
   study.runs.push_back({file.model.name, file.model, {}});
   study.runs.push_back({label, scaled, {}});
   for (MassStudyRun& run : study.runs)
@@ -351,18 +351,18 @@ std::string mass_study_markdown(const MassStudyResult& study) {
       const double rms_force = std::sqrt(force2 / n), rms_moment = std::sqrt(moment2 / n);
       figures[s].push_back(rms_force);
       figures[s].push_back(rms_moment);
-      out << "| " << run.label << " | " << s << " | " << format("%.1f", rms_force) << " | "
-          << format("%.1f", peak_force) << " | " << format("%.2f", rms_moment) << " | "
-          << format("%.2f", peak_moment) << " | "
-          << format("%.3g", run.result.after.metrics.avg_root_force) << " |\n";
+      out << "| " << run.label << " | " << s << " | " << format_number("%.1f", rms_force) << " | "
+          << format_number("%.1f", peak_force) << " | " << format_number("%.2f", rms_moment) << " | "
+          << format_number("%.2f", peak_moment) << " | "
+          << format_number("%.3g", run.result.after.metrics.avg_root_force) << " |\n";
     }
   }
   if (study.runs.size() == 2) {
     out << "\nScaled / given (RMS):\n\n| segment | force | moment |\n|---|---|---|\n";
     for (const std::string& s : study.load_segments) {
       const std::vector<double>& f = figures[s];
-      out << "| " << s << " | " << format("%.2f", f[2] / f[0]) << " | "
-          << format("%.2f", f[3] / f[1]) << " |\n";
+      out << "| " << s << " | " << format_number("%.2f", f[2] / f[0]) << " | "
+          << format_number("%.2f", f[3] / f[1]) << " |\n";
     }
   }
   return out.str();

@@ -22,6 +22,9 @@ struct LabelledMotion {
   MotionFile file;
 };
 
+/// One number in a printf pattern ("%.2f N", "±%g s"): the studies' tables and reports.
+std::string format_number(const char* pattern, double value);
+
 /// Short label of a motion file for tables and folder names: "M3-tucked-double-back.motion.json"
 /// -> "M3"; any other file: its name without ".motion.json".
 std::string motion_label(const std::string& path);

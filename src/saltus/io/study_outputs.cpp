@@ -24,12 +24,6 @@ const PaperTableRow kPaperTable1[7] = {
 
 namespace {
 
-std::string format(const char* pattern, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, pattern, value);
-  return buffer;
-}
-
 nlohmann::json outcome_json(const StudyOutcome& o) {
   const StudyCase& c = o.study_case;
   return {{"motion", c.motion},
@@ -66,14 +60,14 @@ std::string table1_markdown(const std::vector<Table1Row>& rows) {
   for (const Table1Row& r : rows) {
     const OptimizationResult& o = r.paper_resolution;
     out << "| " << r.label << " | " << r.keyframes << " | " << o.variables << " | " << o.constraints
-        << " | " << format("%.3g", o.before.metrics.objective) << " | "
-        << format("%.3g", o.after.metrics.objective) << " | "
-        << format("%.3g", o.before.metrics.avg_root_force) << " | "
-        << format("%.3g", o.after.metrics.avg_root_force) << " | " << o.solve.iterations << " | "
-        << format("%.2f", o.solve.seconds) << " | " << o.solve.status << " | "
-        << (r.refined_run ? format("%.3g", r.refined_force_after) + " (" +
+        << " | " << format_number("%.3g", o.before.metrics.objective) << " | "
+        << format_number("%.3g", o.after.metrics.objective) << " | "
+        << format_number("%.3g", o.before.metrics.avg_root_force) << " | "
+        << format_number("%.3g", o.after.metrics.avg_root_force) << " | " << o.solve.iterations << " | "
+        << format_number("%.2f", o.solve.seconds) << " | " << o.solve.status << " | "
+        << (r.refined_run ? format_number("%.3g", r.refined_force_after) + " (" +
                                 std::to_string(r.refined_iterations) + " it., " +
-                                format("%.1f", r.refined_seconds) + " s, " + r.refined_status + ")"
+                                format_number("%.1f", r.refined_seconds) + " s, " + r.refined_status + ")"
                           : std::string("–"))
         << " |\n";
   }
@@ -82,8 +76,8 @@ std::string table1_markdown(const std::vector<Table1Row>& rows) {
          "before (N) | avg root force after (N) |\n|---|---|---|---|---|---|---|---|\n";
   for (const PaperTableRow& p : kPaperTable1)
     out << "| " << p.label << " | " << p.keyframes << " | " << p.variables << " | " << p.constraints
-        << " | " << format("%.3g", p.objective_before) << " | " << format("%.3g", p.objective_after)
-        << " | " << format("%.3g", p.force_before) << " | " << format("%.3g", p.force_after)
+        << " | " << format_number("%.3g", p.objective_before) << " | " << format_number("%.3g", p.objective_after)
+        << " | " << format_number("%.3g", p.force_before) << " | " << format_number("%.3g", p.force_after)
         << " |\n";
   out << "\nAverage root force after optimisation, ours (K = 1, the paper's resolution) against "
          "the paper's:\n\n| skill | ours (N) | paper (N) | ours below paper |\n|---|---|---|---|\n";
@@ -91,8 +85,8 @@ std::string table1_markdown(const std::vector<Table1Row>& rows) {
     const PaperTableRow* p = paper_table1(r.label);
     if (!p) continue;
     const double ours = r.paper_resolution.after.metrics.avg_root_force;
-    out << "| " << r.label << " | " << format("%.3g", ours) << " | "
-        << format("%.3g", p->force_after) << " | " << (ours < p->force_after ? "yes" : "NO")
+    out << "| " << r.label << " | " << format_number("%.3g", ours) << " | "
+        << format_number("%.3g", p->force_after) << " | " << (ours < p->force_after ? "yes" : "NO")
         << " |\n";
   }
   return out.str();
@@ -209,8 +203,8 @@ nlohmann::json write_paper_report(const std::string& out_dir, const PaperReportO
     row.paper_resolution = optimize_motion(file.motion, file.model, k1);
     write_optimization_outputs(folder.file(label), file, row.paper_resolution, k1);
     log(label + ": " + row.paper_resolution.solve.status + ", " +
-        format("%.3g", row.paper_resolution.before.metrics.avg_root_force) + " -> " +
-        format("%.3g N", row.paper_resolution.after.metrics.avg_root_force));
+        format_number("%.3g", row.paper_resolution.before.metrics.avg_root_force) + " -> " +
+        format_number("%.3g N", row.paper_resolution.after.metrics.avg_root_force));
     if (!options.quick) {
       OptimizeOptions k3 = options.optimize;
       k3.nlp.knots_per_interval = 3;
@@ -221,7 +215,7 @@ nlohmann::json write_paper_report(const std::string& out_dir, const PaperReportO
       row.refined_seconds = refined.solve.seconds;
       row.refined_status = refined.solve.status;
       log(label + ", K = 3: " + refined.solve.status + ", " +
-          format("%.3g N", row.refined_force_after));
+          format_number("%.3g N", row.refined_force_after));
     }
     rows.push_back(std::move(row));
   }
@@ -236,13 +230,13 @@ nlohmann::json write_paper_report(const std::string& out_dir, const PaperReportO
     write_optimization_outputs(folder.file(label), file, r, k1);
     log(label + ": " + r.solve.status);
     dive_md << "**" << file.motion.name << "** (`" << label << "/`): " << r.solve.status
-            << " after " << r.solve.iterations << " iterations, " << format("%.2f", r.solve.seconds)
-            << " s; average root force " << format("%.3g", r.before.metrics.avg_root_force)
-            << " N → " << format("%.3g", r.after.metrics.avg_root_force) << " N.\n\n"
+            << " after " << r.solve.iterations << " iterations, " << format_number("%.2f", r.solve.seconds)
+            << " s; average root force " << format_number("%.3g", r.before.metrics.avg_root_force)
+            << " N → " << format_number("%.3g", r.after.metrics.avg_root_force) << " N.\n\n"
             << "| keyframe | time given (s) | time optimised (s) |\n|---|---|---|\n";
     for (std::size_t i = 0; i < r.before.keyframe_times.size(); ++i)
-      dive_md << "| " << i + 1 << " | " << format("%.3f", r.before.keyframe_times[i]) << " | "
-              << format("%.3f", r.after.keyframe_times[i]) << " |\n";
+      dive_md << "| " << i + 1 << " | " << format_number("%.3f", r.before.keyframe_times[i]) << " | "
+              << format_number("%.3f", r.after.keyframe_times[i]) << " |\n";
     dive_md << "\n![Keyframe times before and after (Fig. 9)](figures/" << label
             << "_keyframe_times.png)\n\n";
   }
