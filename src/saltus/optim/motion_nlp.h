@@ -11,7 +11,10 @@
 /// with B̄(t) = s(t) − s'_i (the CoM parabola at the keyframe's current time minus the keyframe
 /// pose's CoM offset) unless the keyframe gives root_position.
 /// The Hessian is Gauss-Newton, (2/T) Σ w_s J_sᵀ J_s: J is a sum of squares whose residuals vanish
-/// at the physical optimum, where Gauss-Newton is exact.
+/// at the physical optimum, where Gauss-Newton is exact. Where they do not (the paper's coarse
+/// knots), it is damped by μ·J·I with μ adapted step by step (MotionNlpOptions::damping): each
+/// Hessian evaluation first judges the step that led to it, so hessian_values is not a pure
+/// function of x (step_taken tells the NLP how the solver got there).
 ///
 /// Strict (classic spacetime constraints): the same variables and keyframe constraints plus
 /// |F_i(t_s)| <= ε at every grid time; objective the keyframe distance
