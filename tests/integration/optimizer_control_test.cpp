@@ -114,8 +114,9 @@ TEST(OptimizerControl, RefinesTheKnotsWhenTheInterpolationTurnsNearlyAFullTurn) 
   // knots at the keyframes meets every keyframe but turns the arms by 2π between two control
   // points, where the log map's derivative is unbounded (the root force's gradient there was
   // 1e17 and Ipopt wandered for 300 iterations). One refinement gives an ordinary curve.
-  const MotionFile file = load_motion_file(std::string(SALTUS_EXAMPLES_DIR) +
-                                           "/motions/M5-front-somersault-one-and-a-half-twists.motion.json");
+  const MotionFile file =
+      load_motion_file(std::string(SALTUS_EXAMPLES_DIR) +
+                       "/motions/M5-front-somersault-one-and-a-half-twists.motion.json");
   const Motion disturbed = disturb_keyframe_times(file.motion, 0.05, 1);
   OptimizeOptions options;
   options.solver.max_iterations = 0;

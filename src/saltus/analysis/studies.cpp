@@ -227,9 +227,9 @@ std::string convergence_markdown(const std::vector<StudyOutcome>& outcomes) {
     }
     out << "| " << label << " | " << total << " | " << solved << " ("
         << format_number("%.0f", 100.0 * solved / std::max(total, 1)) << " %) | "
-        << format_number("%.0f", median(iterations)) << " | " << format_number("%.2f", median(seconds)) << " | "
-        << format_number("%.3g", median(force)) << " | "
-        << (solved ? format_number("%.3g", worst) : std::string("–")) << " |\n";
+        << format_number("%.0f", median(iterations)) << " | "
+        << format_number("%.2f", median(seconds)) << " | " << format_number("%.3g", median(force))
+        << " | " << (solved ? format_number("%.3g", worst) : std::string("–")) << " |\n";
   }
   // Cases whose interpolation could not meet the keyframes on the requested knots ran refined.
   std::map<std::string, int> refined;
@@ -352,8 +352,8 @@ std::string mass_study_markdown(const MassStudyResult& study) {
       figures[s].push_back(rms_force);
       figures[s].push_back(rms_moment);
       out << "| " << run.label << " | " << s << " | " << format_number("%.1f", rms_force) << " | "
-          << format_number("%.1f", peak_force) << " | " << format_number("%.2f", rms_moment) << " | "
-          << format_number("%.2f", peak_moment) << " | "
+          << format_number("%.1f", peak_force) << " | " << format_number("%.2f", rms_moment)
+          << " | " << format_number("%.2f", peak_moment) << " | "
           << format_number("%.3g", run.result.after.metrics.avg_root_force) << " |\n";
     }
   }

@@ -63,12 +63,13 @@ std::string table1_markdown(const std::vector<Table1Row>& rows) {
         << " | " << format_number("%.3g", o.before.metrics.objective) << " | "
         << format_number("%.3g", o.after.metrics.objective) << " | "
         << format_number("%.3g", o.before.metrics.avg_root_force) << " | "
-        << format_number("%.3g", o.after.metrics.avg_root_force) << " | " << o.solve.iterations << " | "
-        << format_number("%.2f", o.solve.seconds) << " | " << o.solve.status << " | "
-        << (r.refined_run ? format_number("%.3g", r.refined_force_after) + " (" +
-                                std::to_string(r.refined_iterations) + " it., " +
-                                format_number("%.1f", r.refined_seconds) + " s, " + r.refined_status + ")"
-                          : std::string("–"))
+        << format_number("%.3g", o.after.metrics.avg_root_force) << " | " << o.solve.iterations
+        << " | " << format_number("%.2f", o.solve.seconds) << " | " << o.solve.status << " | "
+        << (r.refined_run
+                ? format_number("%.3g", r.refined_force_after) + " (" +
+                      std::to_string(r.refined_iterations) + " it., " +
+                      format_number("%.1f", r.refined_seconds) + " s, " + r.refined_status + ")"
+                : std::string("–"))
         << " |\n";
   }
   out << "\nThe paper's Table 1 (SQP, at most 80 iterations, 78 minutes per motion on average):\n\n"
@@ -76,8 +77,9 @@ std::string table1_markdown(const std::vector<Table1Row>& rows) {
          "before (N) | avg root force after (N) |\n|---|---|---|---|---|---|---|---|\n";
   for (const PaperTableRow& p : kPaperTable1)
     out << "| " << p.label << " | " << p.keyframes << " | " << p.variables << " | " << p.constraints
-        << " | " << format_number("%.3g", p.objective_before) << " | " << format_number("%.3g", p.objective_after)
-        << " | " << format_number("%.3g", p.force_before) << " | " << format_number("%.3g", p.force_after)
+        << " | " << format_number("%.3g", p.objective_before) << " | "
+        << format_number("%.3g", p.objective_after) << " | "
+        << format_number("%.3g", p.force_before) << " | " << format_number("%.3g", p.force_after)
         << " |\n";
   out << "\nAverage root force after optimisation, ours (K = 1, the paper's resolution) against "
          "the paper's:\n\n| skill | ours (N) | paper (N) | ours below paper |\n|---|---|---|---|\n";
@@ -230,13 +232,14 @@ nlohmann::json write_paper_report(const std::string& out_dir, const PaperReportO
     write_optimization_outputs(folder.file(label), file, r, k1);
     log(label + ": " + r.solve.status);
     dive_md << "**" << file.motion.name << "** (`" << label << "/`): " << r.solve.status
-            << " after " << r.solve.iterations << " iterations, " << format_number("%.2f", r.solve.seconds)
-            << " s; average root force " << format_number("%.3g", r.before.metrics.avg_root_force)
-            << " N → " << format_number("%.3g", r.after.metrics.avg_root_force) << " N.\n\n"
+            << " after " << r.solve.iterations << " iterations, "
+            << format_number("%.2f", r.solve.seconds) << " s; average root force "
+            << format_number("%.3g", r.before.metrics.avg_root_force) << " N → "
+            << format_number("%.3g", r.after.metrics.avg_root_force) << " N.\n\n"
             << "| keyframe | time given (s) | time optimised (s) |\n|---|---|---|\n";
     for (std::size_t i = 0; i < r.before.keyframe_times.size(); ++i)
-      dive_md << "| " << i + 1 << " | " << format_number("%.3f", r.before.keyframe_times[i]) << " | "
-              << format_number("%.3f", r.after.keyframe_times[i]) << " |\n";
+      dive_md << "| " << i + 1 << " | " << format_number("%.3f", r.before.keyframe_times[i])
+              << " | " << format_number("%.3f", r.after.keyframe_times[i]) << " |\n";
     dive_md << "\n![Keyframe times before and after (Fig. 9)](figures/" << label
             << "_keyframe_times.png)\n\n";
   }

@@ -20,8 +20,8 @@ struct DampingRule {
   double initial = 1.0;  ///< μ at the first iteration: the fixed damping that was measured safe
   double minimum = 0.01;
   double maximum = 10.0;
-  double shrink = 2.0;     ///< μ /= shrink after a well-predicted step
-  double grow = 4.0;       ///< μ *= grow after a poorly predicted or shortened step
+  double shrink = 2.0;       ///< μ /= shrink after a well-predicted step
+  double grow = 4.0;         ///< μ *= grow after a poorly predicted or shortened step
   double good_ratio = 0.75;  ///< actual/predicted decrease above which a step is well predicted
   double poor_ratio = 0.25;  ///< ... below which it is poorly predicted
 };

@@ -189,7 +189,7 @@ class MotionNlp : public Nlp {
   std::vector<LocalJacobian<6>> wrench_jacobian_;
   /// add_wrench_gauss_newton's workspace: the stacked rows per thread, the block per span.
   std::vector<Eigen::MatrixXd> stacked_rows_, span_blocks_;
-  std::vector<std::pair<int, int>> spans_;  ///< [first, end) samples of each knot span
+  std::vector<std::pair<int, int>> spans_;              ///< [first, end) samples of each knot span
   std::vector<LocalJacobian<3>> translation_jacobian_;  ///< [keyframe]
   std::vector<LocalJacobian<4>> rotation_jacobian_;     ///< [keyframe * segments + segment]
   std::vector<double> keyframe_times_;
