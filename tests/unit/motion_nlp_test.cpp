@@ -110,6 +110,27 @@ INSTANTIATE_TEST_SUITE_P(Formulations, NlpDerivatives,
                                                               Formulation::kStrict),
                                             ::testing::Values(1, 2)));
 
+/// The relaxed objective's Hessian (multipliers zero: no constraint curvature) as a dense
+/// matrix, and the gradient, at x.
+void dense_model(MotionNlp& nlp, const std::vector<double>& x, Eigen::MatrixXd& hessian,
+                 Eigen::VectorXd& gradient) {
+  const int n = nlp.variable_count();
+  const int nnz = nlp.hessian_nonzeros();
+  std::vector<int> rows(nnz), cols(nnz);
+  std::vector<double> values(nnz);
+  nlp.hessian_structure(rows.data(), cols.data());
+  const std::vector<double> lambda(nlp.constraint_count(), 0.0);
+  nlp.hessian_values(x.data(), 1.0, lambda.data(), values.data());
+  hessian = Eigen::MatrixXd::Zero(n, n);
+  for (int e = 0; e < nnz; ++e) {
+    EXPECT_LE(cols[e], rows[e]);  // lower triangle
+    hessian(rows[e], cols[e]) += values[e];
+    if (rows[e] != cols[e]) hessian(cols[e], rows[e]) += values[e];
+  }
+  gradient.resize(n);
+  nlp.gradient(x.data(), gradient.data());
+}
+
 TEST(NlpHessian, IsDampedGaussNewtonOfTheRootWrench) {
   // vᵀHv = Σ_s 2 w_s ‖J_s v‖² + c·J(x)·‖v‖² (damping) + proximity curvature, with J_s v by central
   // differences of
@@ -117,18 +138,9 @@ TEST(NlpHessian, IsDampedGaussNewtonOfTheRootWrench) {
   NlpAtRandomPoint s(Formulation::kRelaxed, 2, 3);
   MotionNlp& nlp = *s.nlp;
   const int n = nlp.variable_count();
-  const int nnz = nlp.hessian_nonzeros();
-  std::vector<int> rows(nnz), cols(nnz);
-  std::vector<double> values(nnz);
-  nlp.hessian_structure(rows.data(), cols.data());
-  std::vector<double> lambda(nlp.constraint_count(), 0.0);
-  nlp.hessian_values(s.x.data(), 1.0, lambda.data(), values.data());
-  Eigen::MatrixXd h = Eigen::MatrixXd::Zero(n, n);
-  for (int e = 0; e < nnz; ++e) {
-    ASSERT_LE(cols[e], rows[e]);  // lower triangle
-    h(rows[e], cols[e]) += values[e];
-    if (rows[e] != cols[e]) h(cols[e], rows[e]) += values[e];
-  }
+  Eigen::MatrixXd h;
+  Eigen::VectorXd unused_gradient;
+  dense_model(nlp, s.x, h, unused_gradient);
   std::mt19937 rng(5);
   std::normal_distribution<double> g;
   Eigen::VectorXd v(n);
@@ -161,26 +173,6 @@ TEST(NlpHessian, IsDampedGaussNewtonOfTheRootWrench) {
     if (i % layout.curve_block() >= 3) expected += 2.0 * w * v[i] * v[i];
   const double actual = v.dot(h * v);
   EXPECT_NEAR(actual, expected, 1e-5 * expected);
-}
-
-/// The relaxed objective's Hessian (multipliers zero: no constraint curvature) as a dense
-/// matrix, and the gradient, at x.
-void dense_model(MotionNlp& nlp, const std::vector<double>& x, Eigen::MatrixXd& hessian,
-                 Eigen::VectorXd& gradient) {
-  const int n = nlp.variable_count();
-  const int nnz = nlp.hessian_nonzeros();
-  std::vector<int> rows(nnz), cols(nnz);
-  std::vector<double> values(nnz);
-  nlp.hessian_structure(rows.data(), cols.data());
-  const std::vector<double> lambda(nlp.constraint_count(), 0.0);
-  nlp.hessian_values(x.data(), 1.0, lambda.data(), values.data());
-  hessian = Eigen::MatrixXd::Zero(n, n);
-  for (int e = 0; e < nnz; ++e) {
-    hessian(rows[e], cols[e]) += values[e];
-    if (rows[e] != cols[e]) hessian(cols[e], rows[e]) += values[e];
-  }
-  gradient.resize(n);
-  nlp.gradient(x.data(), gradient.data());
 }
 
 TEST(NlpDamping, FollowsHowWellTheDampedModelPredictedTheStep) {

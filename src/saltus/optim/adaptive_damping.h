@@ -31,7 +31,6 @@ class AdaptiveDamping {
   explicit AdaptiveDamping(const DampingRule& rule = {}) : rule_(rule), factor_(rule.initial) {}
 
   double factor() const { return factor_; }
-  const DampingRule& rule() const { return rule_; }
 
   /// Back to the initial factor (a new solver run from another point).
   void reset() { factor_ = rule_.initial; }

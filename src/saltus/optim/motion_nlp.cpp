@@ -266,7 +266,8 @@ void MotionNlp::load(const double* x) {
   if (have_x_ && std::memcmp(x, x_.data(), n * sizeof(double)) == 0) return;
   x_.assign(x, x + n);
   have_x_ = true;
-  have_wrenches_ = have_wrench_jacobians_ = have_keyframes_ = have_keyframe_values_ = false;
+  have_wrenches_ = have_wrench_jacobians_ = have_keyframes_ = have_keyframe_values_ =
+      have_gradient_ = false;
   for (auto& evaluator : derivatives_)
     evaluator->set_variables(x);
 }
@@ -360,8 +361,20 @@ double MotionNlp::objective(const double* x) {
   return f + proximity_term(x, nullptr, nullptr);
 }
 
-void MotionNlp::gradient(const double* x, double* gradient) {
+void MotionNlp::gradient(const double* x, double* out) {
+  // Cached per x: Ipopt asks for it once per iteration and the Hessian's objective model
+  // (hessian_values) needs it at the same point.
   load(x);
+  if (!have_gradient_) {
+    gradient_.resize(layout_.size());
+    compute_gradient(gradient_.data());
+    have_gradient_ = true;
+  }
+  std::copy(gradient_.begin(), gradient_.end(), out);
+}
+
+void MotionNlp::compute_gradient(double* gradient) {
+  const double* x = x_.data();
   std::fill(gradient, gradient + layout_.size(), 0.0);
   if (options_.formulation == Formulation::kRelaxed) {
     compute_wrench_jacobians();

@@ -130,8 +130,9 @@ class MotionNlp : public Nlp {
   void load(const double* x);
   void compute_wrenches();
   void compute_wrench_jacobians();
-  void compute_keyframes();        ///< values and derivatives of every keyframe quantity
-  void compute_keyframe_values();  ///< values only
+  void compute_keyframes();                 ///< values and derivatives of every keyframe quantity
+  void compute_gradient(double* gradient);  ///< the objective's gradient at the loaded x
+  void compute_keyframe_values();           ///< values only
   Eigen::Vector3d root_target(int keyframe, double time) const;
   int hessian_index(int row, int column) const;
   /// Adds weight·JᵀJ of a local Jacobian to the Hessian band.
@@ -184,7 +185,8 @@ class MotionNlp : public Nlp {
   void for_each_range(int count, Body&& body);
   std::vector<double> x_;
   bool have_x_ = false, have_wrenches_ = false, have_wrench_jacobians_ = false,
-       have_keyframes_ = false, have_keyframe_values_ = false;
+       have_keyframes_ = false, have_keyframe_values_ = false, have_gradient_ = false;
+  std::vector<double> gradient_;  ///< at x_, when have_gradient_
   std::vector<Vector6d> wrench_;
   std::vector<LocalJacobian<6>> wrench_jacobian_;
   /// add_wrench_gauss_newton's workspace: the stacked rows per thread, the block per span.
