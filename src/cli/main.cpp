@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <cctype>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -130,6 +131,7 @@ struct OptimizeArgs {
   double objective_change_tolerance = saltus::SolverOptions{}.objective_change_tolerance;
   double max_time_shift = 0.25;
   double regularization = 1.0;
+  double max_joint_turn_deg = 180.0;
 };
 
 void add_optimize(CLI::App* cmd, OptimizeArgs& args) {
@@ -163,6 +165,12 @@ void add_optimize(CLI::App* cmd, OptimizeArgs& args) {
                   "interpolated motion (light limbs would otherwise flail); 0 = none")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  cmd->add_option("--max-joint-turn", args.max_joint_turn_deg,
+                  "soft limit (degrees) on how far a joint turns relative to its parent between "
+                  "two spline control points (where the interpolation itself turns further, "
+                  "that is the limit); 0 = none")
+      ->check(CLI::Range(0.0, 360.0))
+      ->capture_default_str();
 }
 
 int run_optimize(const OptimizeArgs& args) {
@@ -178,6 +186,7 @@ int run_optimize(const OptimizeArgs& args) {
   options.nlp.samples = args.common.samples;
   options.nlp.max_time_shift = args.max_time_shift;
   options.nlp.regularization = args.regularization;
+  options.nlp.joint_turn_limit = args.max_joint_turn_deg * std::acos(-1.0) / 180.0;
   options.solver.max_iterations = args.max_iterations;
   options.solver.tolerance = args.tolerance;
   options.solver.objective_change_tolerance = args.objective_change_tolerance;
@@ -226,6 +235,14 @@ int run_optimize(const OptimizeArgs& args) {
         "error %.3g (tolerance %.3g)\n",
         result.after.keyframe_errors.max_translation_error_m, file.motion.tolerances.translation_m,
         result.after.keyframe_errors.max_quaternion_error, file.motion.tolerances.quaternion);
+    const double degrees = 180.0 / std::acos(-1.0);
+    std::printf("  largest joint turn between two control points: %.0f deg before, %.0f deg after",
+                saltus::largest_control_turn(result.before.trajectory, 1) * degrees,
+                saltus::largest_control_turn(result.after.trajectory, 1) * degrees);
+    if (args.max_joint_turn_deg > 0)
+      std::printf(" (soft limit %.0f deg, or the interpolation's own turn)",
+                  args.max_joint_turn_deg);
+    std::printf("\n");
     std::printf(
         "  wrote %s/{result.json, trajectory_before.csv, trajectory_after.csv, model.json, "
         "optimized.motion.json} in %.3f s\n",

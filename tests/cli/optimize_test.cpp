@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -83,7 +84,33 @@ TEST(CliOptimize, BadOptionsExitWithTwo) {
   EXPECT_EQ(test::run_cli("optimize " + test::m1_path() + " --out " + (dir / "o") + " --epsilon -1")
                 .status,
             2);
+  EXPECT_EQ(test::run_cli("optimize " + test::m1_path() + " --out " + (dir / "o") +
+                          " --max-joint-turn 400")
+                .status,
+            2);
   EXPECT_FALSE(std::filesystem::exists(dir / "o"));
+}
+
+TEST(CliOptimize, MaxJointTurnKeepsLimbsFromSpinningBetweenControlPoints) {
+  // M3 at the paper's resolution: without the limit the optimum turns light limbs by more than
+  // 300° between two control points; with the default 180° they stay near it (a soft limit).
+  test::TempDir dir;
+  const std::string m3 =
+      std::string(SALTUS_EXAMPLES_DIR) + "/motions/M3-tucked-double-back.motion.json";
+  auto optimize_m3 = [&](const std::string& name, const std::string& flags) {
+    const auto run =
+        test::run_cli("optimize " + m3 + " --out " + (dir / name) + " --quiet" + flags);
+    EXPECT_EQ(run.status, 0) << run.output;
+    return read_json(dir / name + "/result.json");
+  };
+  const auto limited = optimize_m3("limited", "");
+  EXPECT_EQ(limited["joint_turn_limit_deg"].get<double>(), 180.0);
+  const double before = limited["largest_joint_turn_deg"]["before"];
+  EXPECT_LE(limited["largest_joint_turn_deg"]["after"].get<double>(),
+            std::max(180.0, before) + 6.0);
+  const auto free = optimize_m3("free", " --max-joint-turn 0");
+  EXPECT_EQ(free["joint_turn_limit_deg"].get<double>(), 0.0);
+  EXPECT_GT(free["largest_joint_turn_deg"]["after"].get<double>(), 270.0);
 }
 
 }  // namespace

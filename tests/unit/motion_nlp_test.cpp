@@ -4,10 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <limits>
 #include <random>
 
+#include "saltus/math/quaternion.h"
 #include "saltus/motion/interpolate.h"
 #include "saltus/optim/ipopt_solver.h"
 #include "saltus/optim/motion_nlp.h"
@@ -281,6 +284,119 @@ TEST(NlpKeyframeRows, AreInUnitsOfTheirTolerance) {
     EXPECT_DOUBLE_EQ(g_upper[row], 1.0 - kKeyframeBoundMargin);
     EXPECT_DOUBLE_EQ(g_lower[row], -(1.0 - kKeyframeBoundMargin));
   }
+}
+
+/// Two NLPs on the tuck motion at K = 1, with and without the joint-turn penalty, and a point
+/// where one light segment's control j is turned 0.3 rad past the limit of the pair (j − 1, j)
+/// (and, where the reference hardly turns, of the pair (j, j + 1) too).
+struct SpunLimb {
+  BodyModel model = test::bundled_model();
+  Motion motion = test::tuck_motion(model);
+  std::unique_ptr<MotionNlp> with_penalty, without;
+  std::vector<double> start, x;
+  int segment = 0, control = 3;
+
+  SpunLimb() {
+    const Trajectory<double> initial = interpolate_keyframes(motion, model, {});
+    MotionNlpOptions options;
+    options.samples = 23;
+    with_penalty = std::make_unique<MotionNlp>(motion, model, initial, options);
+    options.joint_turn_weight = 0.0;
+    without = std::make_unique<MotionNlp>(motion, model, initial, options);
+    segment = with_penalty->layout().segment_count - 1;  // the last segment: a foot
+    start.resize(with_penalty->variable_count());
+    with_penalty->initial_point(start.data());
+    x = start;
+    // Turn control j further about the axis it already turns about (from control j − 1): the
+    // tangent δ adds 2|δ| to the turn.
+    const auto& c = with_penalty->reference().joint_control[segment];
+    const Eigen::Quaterniond d = c[control - 1].conjugate() * c[control];
+    const Eigen::Vector3d axis =
+        d.vec().norm() > 1e-6 ? Eigen::Vector3d(d.vec().normalized()) : Eigen::Vector3d::UnitX();
+    const double turn = 2.0 * std::acos(std::clamp(d.w(), -1.0, 1.0));
+    const double push = 0.5 * (std::max(M_PI, turn) + 0.3 - turn);
+    for (int i = 0; i < 3; ++i)
+      x[with_penalty->layout().control_variable(segment + 1, control, i)] = push * axis[i];
+  }
+
+  /// The turn from control j − 1 to j of `segment` at point y, by acos (independent of the
+  /// library's atan2 form).
+  double turn(const std::vector<double>& y, int k, int j) const {
+    const TrajectoryLayout& layout = with_penalty->layout();
+    const auto& c = with_penalty->reference().joint_control[k];
+    auto control_at = [&](int i) {
+      const Eigen::Vector3d delta(y[layout.control_variable(k + 1, i, 0)],
+                                  y[layout.control_variable(k + 1, i, 1)],
+                                  y[layout.control_variable(k + 1, i, 2)]);
+      return Eigen::Quaterniond(c[i] * quat_exp(delta));
+    };
+    const Eigen::Quaterniond d = control_at(j - 1).conjugate() * control_at(j);
+    return 2.0 * std::acos(std::clamp(d.w(), -1.0, 1.0));
+  }
+
+  /// ρ·Σ (θ − max(π, θ̄))₊² over every non-root pair, from turn().
+  double expected_penalty(const std::vector<double>& y) const {
+    const double rho = with_penalty->options().joint_turn_weight;
+    double sum = 0.0;
+    for (int k = 1; k < with_penalty->layout().segment_count; ++k)
+      for (int j = 1; j < with_penalty->layout().control_count(); ++j) {
+        const double excess = turn(y, k, j) - std::max(M_PI, turn(start, k, j));
+        if (excess > 0) sum += rho * excess * excess;
+      }
+    return sum;
+  }
+};
+
+TEST(NlpJointTurn, PenalisesOnlyTurnsPastTheLimitOrTheInterpolationsOwnTurn) {
+  SpunLimb s;
+  // The start is never penalised, whatever its own turns.
+  EXPECT_EQ(s.with_penalty->objective(s.start.data()), s.without->objective(s.start.data()));
+  const double expected = s.expected_penalty(s.x);
+  EXPECT_GE(expected, 1000.0 * 0.3 * 0.3 - 1e-6);  // at least the pushed pair, 0.3 rad past
+  EXPECT_NEAR(s.with_penalty->objective(s.x.data()) - s.without->objective(s.x.data()), expected,
+              1e-9 * expected);
+}
+
+TEST(NlpJointTurn, GradientAndGaussNewtonHessianMatchFiniteDifferencesOfTheTurn) {
+  SpunLimb s;
+  MotionNlp& nlp = *s.with_penalty;
+  const TrajectoryLayout& layout = nlp.layout();
+  std::vector<double> gradient(nlp.variable_count());
+  nlp.gradient(s.x.data(), gradient.data());
+  const double scale =
+      Eigen::Map<Eigen::VectorXd>(gradient.data(), gradient.size()).cwiseAbs().maxCoeff();
+  // The three controls of the pairs (j − 1, j) and (j, j + 1).
+  std::vector<int> variables;
+  for (int j = s.control - 1; j <= s.control + 1; ++j)
+    for (int i = 0; i < 3; ++i)
+      variables.push_back(layout.control_variable(s.segment + 1, j, i));
+  const double h = 1e-6;
+  Eigen::MatrixXd expected = Eigen::MatrixXd::Zero(nlp.variable_count(), nlp.variable_count());
+  for (int v : variables) {
+    std::vector<double> xp = s.x, xm = s.x;
+    xp[v] += h;
+    xm[v] -= h;
+    const double numeric = (nlp.objective(xp.data()) - nlp.objective(xm.data())) / (2 * h);
+    expect_close(gradient[v], numeric, scale, "variable " + std::to_string(v));
+  }
+  // The Hessians differ by 2ρ·∇θ∇θᵀ for each pair past its limit (∇θ by central differences).
+  for (int pair = s.control; pair <= s.control + 1; ++pair) {
+    if (s.turn(s.x, s.segment, pair) <= std::max(M_PI, s.turn(s.start, s.segment, pair))) continue;
+    Eigen::VectorXd turn_gradient = Eigen::VectorXd::Zero(nlp.variable_count());
+    for (int v : variables) {
+      std::vector<double> xp = s.x, xm = s.x;
+      xp[v] += h;
+      xm[v] -= h;
+      turn_gradient[v] = (s.turn(xp, s.segment, pair) - s.turn(xm, s.segment, pair)) / (2 * h);
+    }
+    expected += 2.0 * nlp.options().joint_turn_weight * turn_gradient * turn_gradient.transpose();
+  }
+  Eigen::MatrixXd h_with, h_without;
+  Eigen::VectorXd unused;
+  dense_model(nlp, s.x, h_with, unused);
+  dense_model(*s.without, s.x, h_without, unused);
+  ASSERT_GT(expected.norm(), 100.0);
+  EXPECT_LE((h_with - h_without - expected).norm(), 1e-5 * expected.norm());
 }
 
 TEST(NlpThreads, GiveBitForBitTheValuesOfOneThread) {

@@ -68,6 +68,15 @@ Scalar rotation_angle_between(const Quat<Scalar>& a, const Quat<Scalar>& b) {
   return Scalar(2) * atan2_same_type(d.vec().norm(), abs(d.w()));
 }
 
+/// The turn in radians, in [0, 2π], from control a to control b of a quaternion spline: signs
+/// count (the spline goes the way the signs say), so b = −a is a full turn. Near 2π the relative
+/// log the spline is built on has its branch point (see QuaternionSpline::largest_control_turn).
+template <typename Scalar>
+Scalar control_turn(const Quat<Scalar>& a, const Quat<Scalar>& b) {
+  const Quat<Scalar> d = a.conjugate() * b;
+  return Scalar(2) * atan2_same_type(d.vec().norm(), d.w());
+}
+
 /// ‖a − b‖ after flipping b to a's hemisphere: the paper's quaternion distance (eq. 3).
 template <typename Scalar>
 Scalar quaternion_distance(const Quat<Scalar>& a, const Quat<Scalar>& b) {

@@ -77,8 +77,7 @@ Scalar QuaternionSpline<Scalar>::largest_control_turn() const {
   // From the controls, not from relative_log_: at exactly 2π (c_j = −c_{j−1}) the log is 0/0.
   Scalar largest(0);
   for (std::size_t j = 1; j < control_.size(); ++j) {
-    const Quat<Scalar> d = control_[j - 1].conjugate() * control_[j];
-    const Scalar turn = Scalar(2) * atan2_same_type(d.vec().norm(), d.w());
+    const Scalar turn = control_turn(control_[j - 1], control_[j]);
     if (value_of(turn) > value_of(largest)) largest = turn;
   }
   return largest;

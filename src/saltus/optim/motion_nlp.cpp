@@ -69,6 +69,9 @@ MotionNlp::MotionNlp(const Motion& motion, const BodyModel& model,
   for (const auto& r : initial.rotations)
     reference_.joint_control.push_back(r.control());
   initial_x_ = variables_from(layout_, reference_, initial, reference_.keyframe_times);
+  if (options.joint_turn_limit > 0 && options.joint_turn_weight > 0)
+    turn_penalty_ = std::make_unique<JointTurnPenalty>(
+        layout_, reference_, options.joint_turn_limit, options.joint_turn_weight);
   duration_ = motion.flight_time();
   double shortest = duration_;
   for (int i = 0; i + 1 < n_key; ++i)
@@ -347,7 +350,7 @@ double MotionNlp::force_objective(const double* x) {
 
 double MotionNlp::objective(const double* x) {
   if (options_.formulation == Formulation::kRelaxed)
-    return force_objective(x) + proximity_term(x, nullptr, nullptr);
+    return force_objective(x) + proximity_term(x, nullptr, nullptr) + turn_term(x, nullptr);
   load(x);
   compute_keyframe_values();
   double f = 0.0;
@@ -358,7 +361,7 @@ double MotionNlp::objective(const double* x) {
       f += (q - wxyz(aligned(keyframe_rotation_[i][k], q))).squaredNorm();
     }
   }
-  return f + proximity_term(x, nullptr, nullptr);
+  return f + proximity_term(x, nullptr, nullptr) + turn_term(x, nullptr);
 }
 
 void MotionNlp::gradient(const double* x, double* out) {
@@ -387,6 +390,7 @@ void MotionNlp::compute_gradient(double* gradient) {
         gradient[jac.time_variable[p]] += w * jac.time.col(p);
     }
     proximity_term(x, gradient, nullptr);
+    turn_term(x, gradient);
     return;
   }
   compute_keyframes();
@@ -412,6 +416,7 @@ void MotionNlp::compute_gradient(double* gradient) {
     }
   }
   proximity_term(x, gradient, nullptr);
+  turn_term(x, gradient);
 }
 
 void MotionNlp::constraints(const double* x, double* g) {
@@ -645,6 +650,7 @@ void MotionNlp::hessian_values(const double* x, double objective_factor, const d
   proximity_term(x, nullptr, penalty_curvature.data());
   for (int v = 0; v < layout_.size(); ++v)
     values[hessian_index(v, v)] += objective_factor * penalty_curvature[v];
+  add_turn_curvature(x, objective_factor, values);
   if (options_.formulation == Formulation::kRelaxed && options_.adapt_damping &&
       objective_factor > 0) {
     // Keep the objective's model (before the constraints' curvature joins it) for the next step.
@@ -676,6 +682,25 @@ void MotionNlp::step_taken(const StepTaken& step) {
   if (step.iteration == 0) damping_.reset();
   if (step.iteration == 0 || step.restoration) last_model_.valid = false;
   last_step_ = step;
+}
+
+double MotionNlp::turn_term(const double* x, double* gradient) const {
+  return turn_penalty_ ? turn_penalty_->evaluate(x, gradient, nullptr) : 0.0;
+}
+
+void MotionNlp::add_turn_curvature(const double* x, double factor, double* values) const {
+  if (!turn_penalty_) return;
+  std::vector<JointTurnPenalty::ActivePair> active;
+  turn_penalty_->evaluate(x, nullptr, &active);
+  // Gauss–Newton of ρ·r² with r = θ − L: 2ρ·∇θ∇θᵀ. Both controls are neighbours on one curve,
+  // inside the band.
+  const double scale = 2.0 * factor * turn_penalty_->weight();
+  for (const JointTurnPenalty::ActivePair& pair : active)
+    for (int a = 0; a < 6; ++a)
+      for (int b = 0; b < 6; ++b)
+        if (pair.variables[b] <= pair.variables[a])
+          values[hessian_index(pair.variables[a], pair.variables[b])] +=
+              scale * pair.turn_gradient[a] * pair.turn_gradient[b];
 }
 
 std::vector<double> MotionNlp::band_product(const std::vector<double>& band,

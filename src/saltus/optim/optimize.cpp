@@ -7,6 +7,13 @@
 
 namespace saltus {
 
+double largest_control_turn(const Trajectory<double>& trajectory, int first_segment) {
+  double largest = 0.0;
+  for (std::size_t k = std::max(0, first_segment); k < trajectory.rotations.size(); ++k)
+    largest = std::max(largest, trajectory.rotations[k].largest_control_turn());
+  return largest;
+}
+
 OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
                                    const OptimizeOptions& options, const ProgressCallback& progress,
                                    const std::atomic<bool>* cancel) {
@@ -28,10 +35,8 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
     const KeyframeErrors& missed = result.before.keyframe_errors;
     const bool meets_keyframes = missed.max_quaternion_error <= motion.tolerances.quaternion &&
                                  missed.max_translation_error_m <= motion.tolerances.translation_m;
-    double largest_turn = 0.0;
-    for (const QuaternionSpline<double>& curve : result.before.trajectory.rotations)
-      largest_turn = std::max(largest_turn, curve.largest_control_turn());
-    const bool well_posed = meets_keyframes && largest_turn <= kMaxControlTurn;
+    const bool well_posed =
+        meets_keyframes && largest_control_turn(result.before.trajectory) <= kMaxControlTurn;
     if (well_posed || start.spline || !options.refine_when_keyframes_missed ||
         k >= std::max(options.nlp.knots_per_interval, kMaxAutomaticKnotsPerInterval))
       break;

@@ -36,6 +36,11 @@ inline constexpr int kMaxAutomaticKnotsPerInterval = 4;
 /// of these solve (0.2-0.7 N).
 inline constexpr double kMaxControlTurn = 1.75 * 3.14159265358979323846;
 
+/// The largest turn between consecutive control points (rad) over the curves of segments
+/// `first_segment` onwards: 0 counts the root, whose turns are the somersault's own; 1 the joints
+/// alone (what MotionNlpOptions::joint_turn_limit bounds).
+double largest_control_turn(const Trajectory<double>& trajectory, int first_segment = 0);
+
 struct OptimizationResult {
   SolveReport solve;
   int variables = 0;

@@ -1,0 +1,60 @@
+#pragma once
+/// @file
+/// A soft limit on how far a joint may turn between two consecutive control points of its
+/// quaternion spline: ρ·Σ (θ − L)₊² over every non-root joint and pair of controls, where θ is
+/// the turn from control j−1 to control j (control_turn) and L = max(limit, the interpolation's
+/// own turn there), so the starting point is never penalised.
+///
+/// Why. A joint rotation is the child segment relative to its parent, and no human joint turns
+/// through half a revolution between two control points. But the root force hardly depends on
+/// light segments, and at the paper's resolution (K = 1, controls 0.15-0.3 s apart) the relaxed
+/// optimum used to spin forearms, feet and shanks by 5-6.3 rad between two controls (measured
+/// on M2, M3, M5, M7 and the dive). At 2π the spline's relative log has its branch point: the
+/// gradient blows up there (1e17), and runs that reached it failed (M3 with the right thigh 10 %
+/// light and 0.05 s timing errors: 300 iterations, not solved).
+///
+/// A penalty, not constraint rows: the residual √ρ·(θ − L)₊ joins the objective's sum of squares
+/// with a Gauss–Newton Hessian 2ρ·∇θ∇θᵀ on the two controls' 6 tangent coordinates, which lie
+/// inside the Hessian's band. Hard rows ⟨c_{j−1}, c_j⟩ >= cos(L/2) were tried: they kept runs off
+/// the branch too, but the examples needed 455 iterations instead of 364.
+
+#include <array>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "saltus/optim/trajectory_layout.h"
+
+namespace saltus {
+
+class JointTurnPenalty {
+ public:
+  /// A pair of controls past its limit: the 6 tangent coordinates (control j−1's, then j's)
+  /// and the gradient of the turn with respect to them.
+  struct ActivePair {
+    std::array<int, 6> variables{};
+    Eigen::Matrix<double, 6, 1> turn_gradient;
+    double excess = 0.0;  ///< θ − L, rad (> 0)
+  };
+
+  /// @param limit   L's floor, rad (> 0)
+  /// @param weight  ρ, in the objective's units per rad² (N²/rad² for the relaxed model); 0 = off
+  JointTurnPenalty(const TrajectoryLayout& layout, const TrajectoryReference& reference,
+                   double limit, double weight);
+
+  /// The penalty at x. Adds its gradient to `gradient` and lists the active pairs (for the
+  /// Hessian) when given.
+  double evaluate(const double* x, double* gradient, std::vector<ActivePair>* active) const;
+
+  /// L of segment k's controls j−1, j (1 <= j < controls).
+  double limit(int segment, int control) const { return limit_[segment][control]; }
+  double weight() const { return weight_; }
+
+ private:
+  TrajectoryLayout layout_;
+  std::vector<std::vector<Eigen::Quaterniond>> reference_control_;  ///< q̄, [segment][control]
+  double weight_;
+  std::vector<std::vector<double>> limit_;  ///< [segment][control j], for the pair (j−1, j)
+};
+
+}  // namespace saltus
