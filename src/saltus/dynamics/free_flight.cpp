@@ -44,8 +44,11 @@ void set_root_from_momentum(const BodyModel& model, const Eigen::Vector3d& com_p
   // Angular momentum about the root origin: L_O = L_G + (G − O) × P.
   const Eigen::Vector3d angular_at_root =
       angular_momentum + (com_position - state.root_position).cross(linear);
+  // Head and tail assigned separately: GCC 12 misreads the comma initializer's 3-vector
+  // temporaries as 4-wide AVX loads (a false -Warray-bounds).
   Vec6<double> wanted;
-  wanted << r0.transpose() * angular_at_root, r0.transpose() * linear;
+  wanted.head<3>() = r0.transpose() * angular_at_root;
+  wanted.tail<3>() = r0.transpose() * linear;
   const Vec6<double> v0 = ic.ldlt().solve(wanted - h_joints);
   state.joints[0].omega = v0.head<3>();
   state.root_velocity = r0 * v0.tail<3>();
