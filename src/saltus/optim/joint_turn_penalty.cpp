@@ -16,7 +16,7 @@ JointTurnPenalty::JointTurnPenalty(const TrajectoryLayout& layout,
                                    double weight)
     : layout_(layout), reference_control_(reference.joint_control), weight_(weight) {
   if (!(limit > 0)) throw std::invalid_argument("the joint turn limit must be positive");
-  if (!(weight >= 0)) throw std::invalid_argument("the joint turn weight must not be negative");
+  if (!(weight > 0)) throw std::invalid_argument("the joint turn weight must be positive");
   limit_.assign(layout.segment_count, std::vector<double>(layout.control_count(), limit));
   for (int k = 0; k < layout.segment_count; ++k)
     for (int j = 1; j < layout.control_count(); ++j)
@@ -27,7 +27,6 @@ JointTurnPenalty::JointTurnPenalty(const TrajectoryLayout& layout,
 double JointTurnPenalty::evaluate(const double* x, double* gradient,
                                   std::vector<ActivePair>* active) const {
   if (active) active->clear();
-  if (weight_ == 0) return 0.0;
   double penalty = 0.0;
   // Segment 0 is the root: the whole body somersaults, so its turns are the skill's own.
   for (int k = 1; k < layout_.segment_count; ++k) {
@@ -57,7 +56,6 @@ double JointTurnPenalty::evaluate(const double* x, double* gradient,
         seeded[side] = reference_control_[k][j - 1 + side].cast<TurnAD>() * quat_exp(delta);
       }
       pair.turn_gradient = control_turn(seeded[0], seeded[1]).derivatives();
-      pair.excess = excess;
       if (gradient)
         for (int i = 0; i < 6; ++i)
           gradient[pair.variables[i]] += 2.0 * weight_ * excess * pair.turn_gradient[i];

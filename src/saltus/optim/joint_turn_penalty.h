@@ -34,11 +34,10 @@ class JointTurnPenalty {
   struct ActivePair {
     std::array<int, 6> variables{};
     Eigen::Matrix<double, 6, 1> turn_gradient;
-    double excess = 0.0;  ///< θ − L, rad (> 0)
   };
 
   /// @param limit   L's floor, rad (> 0)
-  /// @param weight  ρ, in the objective's units per rad² (N²/rad² for the relaxed model); 0 = off
+  /// @param weight  ρ, in the objective's units per rad² (N²/rad² for the relaxed model)
   JointTurnPenalty(const TrajectoryLayout& layout, const TrajectoryReference& reference,
                    double limit, double weight);
 
@@ -46,8 +45,6 @@ class JointTurnPenalty {
   /// Hessian) when given.
   double evaluate(const double* x, double* gradient, std::vector<ActivePair>* active) const;
 
-  /// L of segment k's controls j−1, j (1 <= j < controls).
-  double limit(int segment, int control) const { return limit_[segment][control]; }
   double weight() const { return weight_; }
 
  private:

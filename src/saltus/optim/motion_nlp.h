@@ -19,8 +19,10 @@
 ///
 /// Strict (classic spacetime constraints): the same variables and keyframe constraints plus
 /// |F_i(t_s)| <= ε at every grid time; objective the keyframe distance
-/// Σ‖B(t_i) − B̄_i‖² + Σ‖Q_k(t_i) − Q̄_k‖². Its Hessian is the Gauss-Newton one of that
-/// objective; the force constraints' curvature is not available and left out.
+/// Σ‖B(t_i) − B̄_i‖² + Σ‖Q_k(t_i) − Q̄_k‖², plus the same proximity term and joint-turn limit
+/// (with the same weights, so here they weigh more against the objective). Its Hessian is the
+/// Gauss-Newton one of that objective; the force constraints' curvature is not available and
+/// left out.
 
 #include <memory>
 #include <vector>
@@ -81,13 +83,15 @@ struct MotionNlpOptions {
   double regularization = 1.0;
   /// Soft limit (rad) on the turn of each non-root joint between two consecutive control points
   /// (JointTurnPenalty: the floor of L; the interpolation's own larger turns stay allowed), with
-  /// weight joint_turn_weight (N²/rad²: 0.1 rad past the limit costs 10 N², as much as the
-  /// whole mean squared root force of a good K = 1 result). Half a revolution: no joint turns
+  /// weight joint_turn_weight (N²/rad², in J's units: 0.1 rad past the limit costs 10 N², 0.3 rad
+  /// 90 N²; J after optimisation at K = 1 is 1.8 N² for M1, 2700 N² for M3, so the limit holds
+  /// to a few hundredths of a radian). Half a revolution: no joint turns
   /// further relative to its parent between two controls, and it keeps every run well off the
   /// spline's branch point at 2π. Measured at K = 1: the largest non-root turn after optimising
-  /// M2, M3, M5, M7 and the dive fell from 5.3-6.3 rad to 3.1-3.4 rad (the average root force
-  /// rose 3.6-26 %: the spins were buying it); the examples took 335 iterations instead of 350;
-  /// the relaxed convergence study solved all 105 cases; at K = 3 no turn reaches it. 0 = none.
+  /// M2, M3, M5, M7 and the dive fell from 5.3-6.3 rad to 3.1-3.4 rad, and the average root
+  /// force rose where the spins had been buying it (M2 +10 %, M3 +7 %, M5 +26 %, M7 +5 %, dive
+  /// +17 %; all still below the paper's); the examples took 329 iterations instead of 350; the
+  /// relaxed convergence study solved all 105 cases. At K = 3 no turn reaches it. 0 = none.
   double joint_turn_limit = 3.14159265358979323846;
   double joint_turn_weight = 1000.0;
   /// Threads that evaluate the root wrench and its derivatives (each takes a contiguous run of
