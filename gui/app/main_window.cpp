@@ -525,6 +525,7 @@ void MainWindow::load_settings() {
   o.knots_per_interval = s.value("optimize/knots_per_interval", o.knots_per_interval).toInt();
   o.samples = s.value("optimize/samples", o.samples).toInt();
   o.max_iterations = s.value("optimize/max_iterations", o.max_iterations).toInt();
+  o.max_joint_turn_deg = s.value("optimize/max_joint_turn_deg", o.max_joint_turn_deg).toDouble();
   optimize_panel_->set_settings(o);
   for (int i = 0; i < 8; ++i)
     option_actions_[i]->setChecked(
@@ -554,6 +555,7 @@ void MainWindow::save_settings() const {
   s.setValue("optimize/knots_per_interval", o.knots_per_interval);
   s.setValue("optimize/samples", o.samples);
   s.setValue("optimize/max_iterations", o.max_iterations);
+  s.setValue("optimize/max_joint_turn_deg", o.max_joint_turn_deg);
   for (int i = 0; i < 8; ++i)
     s.setValue(QString("view/") + kOptionNames[i], option_actions_[i]->isChecked());
   s.setValue("view/camera", qstr(camera_preset_name(scene_->scene().camera())));

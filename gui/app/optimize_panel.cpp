@@ -39,12 +39,22 @@ OptimizePanel::OptimizePanel(QWidget* parent) : QWidget(parent) {
   iterations_ = new QSpinBox(this);
   iterations_->setRange(0, kMaxIterations);
   iterations_->setToolTip(tr("Ipopt iteration limit"));
+  joint_turn_ = new QDoubleSpinBox(this);
+  joint_turn_->setRange(0.0, 360.0);
+  joint_turn_->setDecimals(0);
+  joint_turn_->setSuffix(tr("°"));
+  joint_turn_->setSpecialValueText(tr("none"));
+  joint_turn_->setToolTip(
+      tr("Soft limit on how far a joint turns relative to its parent between two spline control\n"
+         "points (or the interpolation's own turn where larger). Without it, light limbs can\n"
+         "spin between keyframes at little cost in root force."));
   form->addRow(tr("Model"), formulation_);
   form->addRow(tr("ε (strict)"), epsilon_);
   form->addRow(QString(), timing_);
   form->addRow(tr("Knots per interval"), knots_);
   form->addRow(tr("Samples"), samples_);
   form->addRow(tr("Max iterations"), iterations_);
+  form->addRow(tr("Max joint turn"), joint_turn_);
   layout->addLayout(form);
 
   auto* buttons = new QHBoxLayout;
@@ -91,6 +101,7 @@ OptimizeSettings OptimizePanel::settings() const {
   s.knots_per_interval = knots_->value();
   s.samples = samples_->value();
   s.max_iterations = iterations_->value();
+  s.max_joint_turn_deg = joint_turn_->value();
   return s;
 }
 
@@ -101,6 +112,7 @@ void OptimizePanel::set_settings(const OptimizeSettings& s) {
   knots_->setValue(s.knots_per_interval);
   samples_->setValue(s.samples);
   iterations_->setValue(s.max_iterations);
+  joint_turn_->setValue(s.max_joint_turn_deg);
   update_enabled();
 }
 
@@ -151,8 +163,8 @@ void OptimizePanel::clear_result() {
 
 void OptimizePanel::update_enabled() {
   const bool idle = !running_;
-  for (QWidget* w :
-       std::initializer_list<QWidget*>{formulation_, timing_, knots_, samples_, iterations_})
+  for (QWidget* w : std::initializer_list<QWidget*>{formulation_, timing_, knots_, samples_,
+                                                    iterations_, joint_turn_})
     w->setEnabled(idle);
   epsilon_->setEnabled(idle && formulation_->currentIndex() == 1);
   run_->setEnabled(idle && available_);

@@ -51,6 +51,7 @@ class OptimizePanel : public QWidget {
   QSpinBox* knots_ = nullptr;
   QSpinBox* samples_ = nullptr;
   QSpinBox* iterations_ = nullptr;
+  QDoubleSpinBox* joint_turn_ = nullptr;
   QPushButton* run_ = nullptr;
   QPushButton* cancel_ = nullptr;
   QProgressBar* bar_ = nullptr;

@@ -34,12 +34,15 @@ OptimizeOptions to_optimize_options(const OptimizeSettings& s) {
     throw std::invalid_argument("max iterations must be in 0-100000");
   if (s.samples < kMinSamples || s.samples > kMaxSamples)
     throw std::invalid_argument("samples must be in 2-100000");
+  if (!(s.max_joint_turn_deg >= 0 && s.max_joint_turn_deg <= 360))
+    throw std::invalid_argument("max joint turn must be in 0-360°");
   OptimizeOptions o;
   o.nlp.formulation = s.strict ? Formulation::kStrict : Formulation::kRelaxed;
   o.nlp.epsilon = s.epsilon;
   o.nlp.optimize_timing = s.optimize_timing;
   o.nlp.knots_per_interval = s.knots_per_interval;
   o.nlp.samples = s.samples;
+  o.nlp.joint_turn_limit = s.max_joint_turn_deg / kDegreesPerRadian;
   o.solver.max_iterations = s.max_iterations;
   // The CLI's default tolerance (src/cli/main.cpp); the stalled-objective exit keeps the
   // library's default, as the CLI does.
@@ -84,6 +87,11 @@ std::vector<ResultRow> result_table(const OptimizationResult& r, const OptimizeO
   rows.push_back({"max keyframe translation error (m)",
                   number("%.3g", r.before.keyframe_errors.max_translation_error_m),
                   number("%.3g", r.after.keyframe_errors.max_translation_error_m)});
+  // Light limbs spin between keyframes when nothing holds them (MotionNlpOptions::
+  // joint_turn_limit): the largest turn of a joint between two control points shows it.
+  rows.push_back({"largest joint turn between control points (°)",
+                  number("%.0f", largest_control_turn(r.before.trajectory, 1) * kDegreesPerRadian),
+                  number("%.0f", largest_control_turn(r.after.trajectory, 1) * kDegreesPerRadian)});
   rows.push_back({"max keyframe rotation error (°)",
                   number("%.3g", r.before.keyframe_errors.max_rotation_error_deg),
                   number("%.3g", r.after.keyframe_errors.max_rotation_error_deg)});

@@ -17,6 +17,8 @@ struct OptimizeSettings {
   int knots_per_interval = 1;
   int max_iterations = SolverOptions{}.max_iterations;  ///< the library's (and CLI's) default
   int samples = kDefaultSamples;
+  /// Soft limit on a joint's turn between two control points (`--max-joint-turn`), 0 = none.
+  double max_joint_turn_deg = 180.0;
 };
 
 /// `saltus optimize --tol`'s default: the library's.

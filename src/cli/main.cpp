@@ -5,7 +5,6 @@
 #include <CLI/CLI.hpp>
 #include <cctype>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -186,7 +185,7 @@ int run_optimize(const OptimizeArgs& args) {
   options.nlp.samples = args.common.samples;
   options.nlp.max_time_shift = args.max_time_shift;
   options.nlp.regularization = args.regularization;
-  options.nlp.joint_turn_limit = args.max_joint_turn_deg * std::acos(-1.0) / 180.0;
+  options.nlp.joint_turn_limit = args.max_joint_turn_deg / saltus::kDegreesPerRadian;
   options.solver.max_iterations = args.max_iterations;
   options.solver.tolerance = args.tolerance;
   options.solver.objective_change_tolerance = args.objective_change_tolerance;
@@ -235,10 +234,10 @@ int run_optimize(const OptimizeArgs& args) {
         "error %.3g (tolerance %.3g)\n",
         result.after.keyframe_errors.max_translation_error_m, file.motion.tolerances.translation_m,
         result.after.keyframe_errors.max_quaternion_error, file.motion.tolerances.quaternion);
-    const double degrees = 180.0 / std::acos(-1.0);
-    std::printf("  largest joint turn between two control points: %.0f deg before, %.0f deg after",
-                saltus::largest_control_turn(result.before.trajectory, 1) * degrees,
-                saltus::largest_control_turn(result.after.trajectory, 1) * degrees);
+    std::printf(
+        "  largest joint turn between two control points: %.0f deg before, %.0f deg after",
+        saltus::largest_control_turn(result.before.trajectory, 1) * saltus::kDegreesPerRadian,
+        saltus::largest_control_turn(result.after.trajectory, 1) * saltus::kDegreesPerRadian);
     if (args.max_joint_turn_deg > 0)
       std::printf(" (soft limit %.0f deg, or the interpolation's own turn)",
                   args.max_joint_turn_deg);

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 
 #include "core/optimize_settings.h"
@@ -24,6 +25,7 @@ TEST(OptimizeSettings, MapOntoTheLibraryOptions) {
   s.knots_per_interval = 2;
   s.max_iterations = 7;
   s.samples = 51;
+  s.max_joint_turn_deg = 90.0;
   const OptimizeOptions o = to_optimize_options(s);
   EXPECT_EQ(o.nlp.formulation, Formulation::kStrict);
   EXPECT_DOUBLE_EQ(o.nlp.epsilon, 40.0);
@@ -31,6 +33,9 @@ TEST(OptimizeSettings, MapOntoTheLibraryOptions) {
   EXPECT_EQ(o.nlp.knots_per_interval, 2);
   EXPECT_EQ(o.nlp.samples, 51);
   EXPECT_EQ(o.solver.max_iterations, 7);
+  EXPECT_NEAR(o.nlp.joint_turn_limit, M_PI / 2, 1e-15);
+  // The CLI's default limit, half a turn.
+  EXPECT_NEAR(to_optimize_options(OptimizeSettings{}).nlp.joint_turn_limit, M_PI, 1e-15);
   // The CLI's defaults for what the panel does not show.
   EXPECT_DOUBLE_EQ(o.solver.tolerance, 1e-8);
   EXPECT_DOUBLE_EQ(o.solver.objective_change_tolerance, SolverOptions{}.objective_change_tolerance);
@@ -52,6 +57,9 @@ TEST(OptimizeSettings, RejectValuesOutOfRange) {
   EXPECT_THROW(to_optimize_options(s), std::invalid_argument);
   s = {};
   s.max_iterations = -1;
+  EXPECT_THROW(to_optimize_options(s), std::invalid_argument);
+  s = {};
+  s.max_joint_turn_deg = -1;
   EXPECT_THROW(to_optimize_options(s), std::invalid_argument);
 }
 
@@ -111,6 +119,10 @@ TEST_F(OptimizedMotion, ResultTableHasTheRequiredRows) {
   EXPECT_EQ(find("knots per keyframe interval K")->after,
             std::to_string(result_->knots_per_interval));
   EXPECT_EQ(find("keyframes")->before, std::to_string(file_->motion.keyframes.size()));
+  const ResultRow* turn = find("largest joint turn between control points (°)");
+  ASSERT_NE(turn, nullptr);
+  EXPECT_NEAR(std::stod(turn->after),
+              largest_control_turn(result_->after.trajectory, 1) * 180.0 / M_PI, 0.5);
 }
 
 TEST_F(OptimizedMotion, ReadsTheOutputFolderBack) {

@@ -1,6 +1,5 @@
 #include "saltus/io/result_files.h"
 
-#include <cmath>
 #include <fstream>
 #include <stdexcept>
 
@@ -153,12 +152,11 @@ nlohmann::json optimization_result_json(const MotionFile& file, const Optimizati
   put_keyframe_errors(r, result.after.keyframe_errors);
   r["tolerances"] = {{"translation_m", file.motion.tolerances.translation_m},
                      {"quaternion", file.motion.tolerances.quaternion}};
-  const double degrees = 180.0 / std::acos(-1.0);
   const bool turn_limited = options.nlp.joint_turn_limit > 0 && options.nlp.joint_turn_weight > 0;
-  r["joint_turn_limit_deg"] = turn_limited ? options.nlp.joint_turn_limit * degrees : 0.0;
+  r["joint_turn_limit_deg"] = turn_limited ? options.nlp.joint_turn_limit * kDegreesPerRadian : 0.0;
   r["largest_joint_turn_deg"] = {
-      {"before", largest_control_turn(result.before.trajectory, 1) * degrees},
-      {"after", largest_control_turn(result.after.trajectory, 1) * degrees}};
+      {"before", largest_control_turn(result.before.trajectory, 1) * kDegreesPerRadian},
+      {"after", largest_control_turn(result.after.trajectory, 1) * kDegreesPerRadian}};
   return r;
 }
 

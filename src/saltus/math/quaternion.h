@@ -60,6 +60,8 @@ Vec3<Scalar> quat_log(const Quat<Scalar>& q) {
   return factor * u;
 }
 
+inline constexpr double kDegreesPerRadian = 180.0 / 3.14159265358979323846;
+
 /// Rotation angle in radians between two orientations (sign of the quaternions ignored).
 template <typename Scalar>
 Scalar rotation_angle_between(const Quat<Scalar>& a, const Quat<Scalar>& b) {
