@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 #include <sstream>
+#include <string>
 
 #include "saltus/io/input_error.h"
 #include "saltus/io/output_folder.h"
@@ -291,7 +292,11 @@ nlohmann::json write_paper_report(const std::string& out_dir, const PaperReportO
         "magnitude, not of identical inputs.\n\n"
      << "Settings: relaxed model, " << options.optimize.nlp.samples
      << " samples, timing optimised, Ipopt with exact first derivatives and a Gauss-Newton "
-        "Hessian, one core."
+        "Hessian; the root wrench and its derivatives on "
+     << (options.optimize.nlp.threads > 0
+             ? std::to_string(options.optimize.nlp.threads) + " threads"
+             : std::string("one thread per hardware thread (at most 4)"))
+     << ", Ipopt's linear solver (MUMPS) on one."
      << (options.quick ? " **Quick run** (reduced convergence study, no K = 3 runs)." : "")
      << "\n\n## Table 1\n\n"
      << table1_markdown(rows) << "\n## Root force before and after (Figs. 4 and 5)\n\n"
