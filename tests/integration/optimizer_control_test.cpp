@@ -102,14 +102,6 @@ TEST(OptimizerControl, RefinesTheKnotsWhenTheInterpolationMissesTheKeyframes) {
   EXPECT_EQ(plain.knots_per_interval, 1);
 }
 
-/// The largest turn between consecutive control points over every segment's curve.
-double largest_turn(const Trajectory<double>& trajectory) {
-  double largest = 0.0;
-  for (const QuaternionSpline<double>& curve : trajectory.rotations)
-    largest = std::max(largest, curve.largest_control_turn());
-  return largest;
-}
-
 TEST(OptimizerControl, KeepsEveryJointWithinHalfATurnBetweenControlPoints) {
   // At the paper's resolution the root force hardly cares about light limbs, and without the
   // joint-turn penalty the optimum spun them: on M3 seven segments turned 4.8-6.2 rad between
@@ -157,12 +149,12 @@ TEST(OptimizerControl, RefinesTheKnotsWhenTheInterpolationTurnsNearlyAFullTurn) 
   options.refine_when_keyframes_missed = false;
   const OptimizationResult as_asked = optimize_motion(disturbed, file.model, options);
   EXPECT_LE(as_asked.before.keyframe_errors.max_quaternion_error, 0.05);  // not a missed keyframe
-  EXPECT_GT(largest_turn(as_asked.before.trajectory), kMaxControlTurn);
+  EXPECT_GT(largest_control_turn(as_asked.before.trajectory), kMaxControlTurn);
 
   options.refine_when_keyframes_missed = true;
   const OptimizationResult refined = optimize_motion(disturbed, file.model, options);
   EXPECT_EQ(refined.knots_per_interval, 2);
-  EXPECT_LE(largest_turn(refined.before.trajectory), kMaxControlTurn);
+  EXPECT_LE(largest_control_turn(refined.before.trajectory), kMaxControlTurn);
   EXPECT_LE(refined.before.keyframe_errors.max_quaternion_error, 0.05);
 }
 
