@@ -152,8 +152,8 @@ nlohmann::json optimization_result_json(const MotionFile& file, const Optimizati
   put_keyframe_errors(r, result.after.keyframe_errors);
   r["tolerances"] = {{"translation_m", file.motion.tolerances.translation_m},
                      {"quaternion", file.motion.tolerances.quaternion}};
-  const bool turn_limited = options.nlp.joint_turn_limit > 0 && options.nlp.joint_turn_weight > 0;
-  r["joint_turn_limit_deg"] = turn_limited ? options.nlp.joint_turn_limit * kDegreesPerRadian : 0.0;
+  r["joint_turn_limit_deg"] =
+      options.nlp.limits_joint_turns() ? options.nlp.joint_turn_limit * kDegreesPerRadian : 0.0;
   r["largest_joint_turn_deg"] = {
       {"before", largest_control_turn(result.before.trajectory, 1) * kDegreesPerRadian},
       {"after", largest_control_turn(result.after.trajectory, 1) * kDegreesPerRadian}};

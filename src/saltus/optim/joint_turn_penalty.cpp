@@ -31,14 +31,18 @@ double JointTurnPenalty::evaluate(const double* x, double* gradient,
   // Segment 0 is the root: the whole body somersaults, so its turns are the skill's own.
   for (int k = 1; k < layout_.segment_count; ++k) {
     const int curve = k + 1;
+    auto control = [&](int c) {
+      const Eigen::Vector3d delta(x[layout_.control_variable(curve, c, 0)],
+                                  x[layout_.control_variable(curve, c, 1)],
+                                  x[layout_.control_variable(curve, c, 2)]);
+      return Eigen::Quaterniond(reference_control_[k][c] * quat_exp(delta));
+    };
+    // Each control once: it belongs to the pair before it and the pair after it.
+    Eigen::Quaterniond previous = control(0);
     for (int j = 1; j < layout_.control_count(); ++j) {
-      auto control = [&](int c) {
-        const Eigen::Vector3d delta(x[layout_.control_variable(curve, c, 0)],
-                                    x[layout_.control_variable(curve, c, 1)],
-                                    x[layout_.control_variable(curve, c, 2)]);
-        return Eigen::Quaterniond(reference_control_[k][c] * quat_exp(delta));
-      };
-      const double excess = control_turn(control(j - 1), control(j)) - limit_[k][j];
+      const Eigen::Quaterniond current = control(j);
+      const double excess = control_turn(previous, current) - limit_[k][j];
+      previous = current;
       if (excess <= 0) continue;
       penalty += weight_ * excess * excess;
       if (!gradient && !active) continue;

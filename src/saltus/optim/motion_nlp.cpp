@@ -69,7 +69,7 @@ MotionNlp::MotionNlp(const Motion& motion, const BodyModel& model,
   for (const auto& r : initial.rotations)
     reference_.joint_control.push_back(r.control());
   initial_x_ = variables_from(layout_, reference_, initial, reference_.keyframe_times);
-  if (options.joint_turn_limit > 0 && options.joint_turn_weight > 0)
+  if (options.limits_joint_turns())
     turn_penalty_ = std::make_unique<JointTurnPenalty>(
         layout_, reference_, options.joint_turn_limit, options.joint_turn_weight);
   duration_ = motion.flight_time();
@@ -350,7 +350,7 @@ double MotionNlp::force_objective(const double* x) {
 
 double MotionNlp::objective(const double* x) {
   if (options_.formulation == Formulation::kRelaxed)
-    return force_objective(x) + proximity_term(x, nullptr, nullptr) + turn_term(x, nullptr);
+    return force_objective(x) + regularization(x, nullptr);
   load(x);
   compute_keyframe_values();
   double f = 0.0;
@@ -361,7 +361,7 @@ double MotionNlp::objective(const double* x) {
       f += (q - wxyz(aligned(keyframe_rotation_[i][k], q))).squaredNorm();
     }
   }
-  return f + proximity_term(x, nullptr, nullptr) + turn_term(x, nullptr);
+  return f + regularization(x, nullptr);
 }
 
 void MotionNlp::gradient(const double* x, double* out) {
@@ -389,8 +389,7 @@ void MotionNlp::compute_gradient(double* gradient) {
       for (int p = 0; p < jac.time_count; ++p)
         gradient[jac.time_variable[p]] += w * jac.time.col(p);
     }
-    proximity_term(x, gradient, nullptr);
-    turn_term(x, gradient);
+    regularization(x, gradient);
     return;
   }
   compute_keyframes();
@@ -415,8 +414,7 @@ void MotionNlp::compute_gradient(double* gradient) {
         gradient[rj.time_variable[p]] += wq * rj.time.col(p);
     }
   }
-  proximity_term(x, gradient, nullptr);
-  turn_term(x, gradient);
+  regularization(x, gradient);
 }
 
 void MotionNlp::constraints(const double* x, double* g) {
@@ -646,11 +644,7 @@ void MotionNlp::hessian_values(const double* x, double objective_factor, const d
                          values);
     }
   }
-  std::vector<double> penalty_curvature(layout_.size(), 0.0);
-  proximity_term(x, nullptr, penalty_curvature.data());
-  for (int v = 0; v < layout_.size(); ++v)
-    values[hessian_index(v, v)] += objective_factor * penalty_curvature[v];
-  add_turn_curvature(x, objective_factor, values);
+  add_regularization_curvature(x, objective_factor, values);
   if (options_.formulation == Formulation::kRelaxed && options_.adapt_damping &&
       objective_factor > 0) {
     // Keep the objective's model (before the constraints' curvature joins it) for the next step.
@@ -684,11 +678,16 @@ void MotionNlp::step_taken(const StepTaken& step) {
   last_step_ = step;
 }
 
-double MotionNlp::turn_term(const double* x, double* gradient) const {
-  return turn_penalty_ ? turn_penalty_->evaluate(x, gradient, nullptr) : 0.0;
+double MotionNlp::regularization(const double* x, double* gradient) const {
+  return proximity_term(x, gradient, nullptr) +
+         (turn_penalty_ ? turn_penalty_->evaluate(x, gradient, nullptr) : 0.0);
 }
 
-void MotionNlp::add_turn_curvature(const double* x, double factor, double* values) const {
+void MotionNlp::add_regularization_curvature(const double* x, double factor, double* values) const {
+  std::vector<double> proximity_curvature(layout_.size(), 0.0);
+  proximity_term(x, nullptr, proximity_curvature.data());
+  for (int v = 0; v < layout_.size(); ++v)
+    values[hessian_index(v, v)] += factor * proximity_curvature[v];
   if (!turn_penalty_) return;
   std::vector<JointTurnPenalty::ActivePair> active;
   turn_penalty_->evaluate(x, nullptr, &active);

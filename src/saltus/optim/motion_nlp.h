@@ -94,6 +94,7 @@ struct MotionNlpOptions {
   /// relaxed convergence study solved all 105 cases. At K = 3 no turn reaches it. 0 = none.
   double joint_turn_limit = 3.14159265358979323846;
   double joint_turn_weight = 1000.0;
+  bool limits_joint_turns() const { return joint_turn_limit > 0 && joint_turn_weight > 0; }
   /// Threads that evaluate the root wrench and its derivatives (each takes a contiguous run of
   /// samples, keyframes or knot spans); 0 = one per hardware thread, at most 4. A fixed
   /// default, not the machine's core count, so that the same input gives the same output
@@ -161,10 +162,12 @@ class MotionNlp : public Nlp {
   LocalJacobian<3> translation_residual_jacobian(int keyframe) const;
   /// The proximity term at x; adds its gradient and Hessian diagonal when given.
   double proximity_term(const double* x, double* gradient, double* hessian_diagonal) const;
-  /// The joint-turn penalty at x (0 without one); adds its gradient when given.
-  double turn_term(const double* x, double* gradient) const;
-  /// factor · its Gauss–Newton Hessian into the band.
-  void add_turn_curvature(const double* x, double factor, double* values) const;
+  /// The terms both formulations add to their objective: the proximity term and the joint-turn
+  /// penalty (when on). Adds their gradient when given.
+  double regularization(const double* x, double* gradient) const;
+  /// factor · their curvature into the band: the proximity's diagonal, the penalty's
+  /// Gauss–Newton blocks.
+  void add_regularization_curvature(const double* x, double factor, double* values) const;
   /// Judges the step from the last Hessian's point to x by the damped model of the objective
   /// kept at that point, and updates μ.
   void judge_last_step(const double* x);
