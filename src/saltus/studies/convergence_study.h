@@ -5,7 +5,6 @@
 /// `saltus study convergence` and the reproduction report; its files are
 /// formats/convergence_files.h.
 
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -70,12 +69,15 @@ std::vector<StudyCase> convergence_study_cases(const std::vector<LabelledMotion>
 StudyOutcome run_study_case(const LabelledMotion& motion, const StudyCase& study_case,
                             const ConvergenceStudyOptions& options);
 
-/// Runs every case in order; `progress(done, total, outcome)` after each.
-std::vector<StudyOutcome> run_convergence_study(
-    const std::vector<LabelledMotion>& motions, const ConvergenceStudyOptions& options,
-    const std::function<void(int, int, const StudyOutcome&)>& progress = {});
+/// The outcome recorded for a case whose process did not finish (status "crashed" or
+/// "timed_out"): not solved, no figures.
+StudyOutcome unfinished_outcome(const StudyCase& study_case, const std::string& status,
+                                double seconds);
 
 /// "relaxed" or "strict ε=50".
 std::string formulation_label(const StudyCase& study_case);
+
+/// One line per case: "M3 strict ε=50, mass -20 % (all), timing ±0.05 s".
+std::string study_case_label(const StudyCase& study_case);
 
 }  // namespace saltus
