@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "saltus/base/input_error.h"
+#include "saltus/base/text_format.h"
 #include "saltus/formats/convergence_files.h"
 #include "saltus/formats/mass_files.h"
 #include "saltus/formats/motion_file.h"
@@ -65,6 +66,7 @@ struct RunArgs {
   double case_time_limit_s = 900.0;
   std::string emit_slurm;
   int shards = 0;
+  bool no_early_stop = false;
 };
 
 void add_run_options(CLI::App* cmd, RunArgs& args) {
@@ -88,6 +90,14 @@ void add_run_options(CLI::App* cmd, RunArgs& args) {
                   "--shards of them) instead of running it");
   cmd->add_option("--shards", args.shards, "array tasks of --emit-slurm")
       ->check(CLI::Range(1, 100000));
+  std::string checkpoints;
+  for (const FeasibilityCheckpoint& c : kStrictStudyCheckpoints)
+    checkpoints += (checkpoints.empty() ? "" : ", ") + format_number("%g", c.violation) +
+                   " by iteration " + std::to_string(c.iterations);
+  cmd->add_flag("--no-early-stop", args.no_early_stop,
+                "run every strict case to its iteration limit (by default a strict run whose "
+                "constraint violation has not come below " +
+                    checkpoints + " stops as stopped_infeasible)");
 }
 
 std::string clock_text(double seconds) {
@@ -400,6 +410,7 @@ int StudyVerbs::State::run_convergence() const {
             "--mass-segments: model " + m.file.model.name + " has no segment '" + segment + "'");
   options.timing_errors = a.timing_errors;
   options.seed = a.seed;
+  if (a.run.no_early_stop) options.strict_checkpoints.clear();
   const StudyJob job = convergence_study_job(motions, options);
   return run_job(job, a.common, a.run, [&](const StudyRunResult& result) {
     const std::string out = absolute(a.common.out_dir);
@@ -446,6 +457,7 @@ int StudyVerbs::State::run_paper() const {
   options.motions_dir = a.motions_dir;
   options.quick = a.quick;
   options.optimize = study_optimize_options(a.common);
+  if (a.run.no_early_stop) options.strict_checkpoints.clear();
   const StudyJob job = paper_report_job(options);
   return run_job(job, a.common, a.run, [&](const StudyRunResult&) {
     const std::string out = absolute(a.common.out_dir);

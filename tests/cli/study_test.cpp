@@ -207,6 +207,35 @@ TEST(CliStudy, ACaseOverItsTimeLimitIsAFailureAndTheStudyGoesOn) {
             std::string::npos);
 }
 
+TEST(CliStudy, AHopelessStrictRunStopsEarlyAndSaysSo) {
+  // M3 (a tucked double) with |F_i| <= 10 N at every sample: the strict run never comes within
+  // 20 N of feasibility in 80 iterations, and run to the end it does not solve either.
+  TempDir dir;
+  const std::string m3 =
+      std::string(SALTUS_EXAMPLES_DIR) + "/motions/M3-tucked-double-back.motion.json";
+  const std::string study =
+      "study convergence " + m3 + " --epsilons 10 --mass-errors 0 --timing-errors 0 --quiet --out ";
+  const auto early = run_cli(study + (dir / "early"));
+  ASSERT_EQ(early.status, 0) << early.output;
+  const auto result = nlohmann::json::parse(test::read_text(dir / "early/result.json"));
+  ASSERT_EQ(result["cases"].size(), 2u);
+  const auto& strict = result["cases"][1];
+  EXPECT_EQ(strict["status"], "stopped_infeasible");
+  EXPECT_EQ(strict["iterations"], 80);
+  EXPECT_EQ(result["strict_checkpoints"],
+            nlohmann::json::parse("[[80, 20.0], [120, 10.0], [150, 5.0]]"));
+  EXPECT_NE(test::read_text(dir / "early/convergence.md").find("1 strict runs were stopped early"),
+            std::string::npos);
+  const auto full = run_cli(study + (dir / "full") + " --no-early-stop");
+  ASSERT_EQ(full.status, 0) << full.output;
+  const auto full_result = nlohmann::json::parse(test::read_text(dir / "full/result.json"));
+  EXPECT_EQ(full_result["cases"][1]["status"], "max_iterations");
+  EXPECT_EQ(full_result["cases"][1]["iterations"], 300);
+  EXPECT_EQ(full_result["strict_checkpoints"], nlohmann::json::array());
+  // The relaxed run is the same either way.
+  EXPECT_EQ(full_result["cases"][0]["iterations"], result["cases"][0]["iterations"]);
+}
+
 TEST(CliStudy, EmitSlurmWritesAJobArrayOverTheShards) {
   TempDir dir;
   const std::string script = dir / "study.sbatch";

@@ -157,6 +157,16 @@ std::string convergence_markdown(const std::vector<StudyOutcome>& outcomes) {
       out << (i ? "; " : "") << unfinished[i];
     out << ".\n";
   }
+  // Strict runs given up at a feasibility checkpoint (SolverOptions::feasibility_checkpoints).
+  int stopped = 0;
+  for (const StudyOutcome& o : outcomes)
+    stopped += o.status == "stopped_infeasible" ? 1 : 0;
+  if (stopped > 0)
+    out << "\n"
+        << stopped
+        << " strict runs were stopped early (status stopped_infeasible): by a checkpoint of "
+           "result.json's strict_checkpoints ([iterations, violation]) their constraint "
+           "violation had not once come below its bound. They count as not solved.\n";
   // Cases whose interpolation could not meet the keyframes on the requested knots ran refined.
   std::map<std::string, int> refined;
   int requested = std::numeric_limits<int>::max();
@@ -216,6 +226,7 @@ nlohmann::json convergence_definition(const std::vector<LabelledMotion>& motions
           {"mass_segments", options.mass_segments},
           {"timing_errors", options.timing_errors},
           {"seed", options.seed},
+          {"strict_checkpoints", checkpoints_json(options.strict_checkpoints)},
           {"optimize", optimize_options_json(options.optimize)}};
 }
 
@@ -273,6 +284,7 @@ nlohmann::json write_convergence_files(const std::string& dir,
   result["samples"] = settings.samples;
   result["knots_per_interval"] = settings.knots_per_interval;
   result["max_iterations"] = settings.max_iterations;
+  result["strict_checkpoints"] = definition.at("strict_checkpoints");
   int failed = 0;
   result["cases"] = nlohmann::json::array();
   for (const StudyOutcome& o : outcomes) {

@@ -376,6 +376,13 @@ std::string motion_digest(const MotionFile& file) {
   return hex64(hash);
 }
 
+nlohmann::json checkpoints_json(const std::vector<FeasibilityCheckpoint>& checkpoints) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const FeasibilityCheckpoint& c : checkpoints)
+    list.push_back({c.iterations, c.violation});
+  return list;
+}
+
 nlohmann::json optimize_options_json(const OptimizeOptions& o) {
   const MotionNlpOptions& n = o.nlp;
   const SolverOptions& s = o.solver;
@@ -407,7 +414,8 @@ nlohmann::json optimize_options_json(const OptimizeOptions& o) {
             {"acceptable_iterations", s.acceptable_iterations},
             {"acceptable_constraint_violation", s.acceptable_constraint_violation},
             {"stall_iterations", s.stall_iterations},
-            {"max_restarts", s.max_restarts}}},
+            {"max_restarts", s.max_restarts},
+            {"feasibility_checkpoints", checkpoints_json(s.feasibility_checkpoints)}}},
           {"refine_when_keyframes_missed", o.refine_when_keyframes_missed}};
 }
 

@@ -94,4 +94,7 @@ std::string motion_digest(const MotionFile& file);
 /// Every optimiser setting that decides a result, for a study's definition.
 nlohmann::json optimize_options_json(const OptimizeOptions& options);
 
+/// [[iterations, violation], ...].
+nlohmann::json checkpoints_json(const std::vector<FeasibilityCheckpoint>& checkpoints);
+
 }  // namespace saltus

@@ -73,7 +73,10 @@ StudyOutcome run_study_case(const LabelledMotion& motion, const StudyCase& study
   }
   OptimizeOptions optimize = options.optimize;
   optimize.nlp.formulation = study_case.formulation;
-  if (study_case.formulation == Formulation::kStrict) optimize.nlp.epsilon = study_case.epsilon;
+  if (study_case.formulation == Formulation::kStrict) {
+    optimize.nlp.epsilon = study_case.epsilon;
+    optimize.solver.feasibility_checkpoints = options.strict_checkpoints;
+  }
   const OptimizationResult r = optimize_motion(disturbed, model, optimize);
   StudyOutcome o;
   o.study_case = study_case;

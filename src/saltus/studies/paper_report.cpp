@@ -41,6 +41,7 @@ PaperPlan paper_report_plan(const std::vector<LabelledMotion>& skills,
   // Convergence study (§3.4's claim).
   ConvergenceStudyOptions& convergence = plan.convergence;
   convergence.optimize = options.optimize;
+  convergence.strict_checkpoints = options.strict_checkpoints;
   plan.convergence_motions = skills;
   // The paper's mass-parameter errors hit every segment alike; a single segment's error (the
   // right thigh, as in the mass study) also breaks the body's left-right symmetry.

@@ -20,6 +20,8 @@ struct PaperReportOptions {
   /// Reduced settings (the CTest "paper" run): no K = 3 runs, a small convergence study.
   bool quick = false;
   OptimizeOptions optimize;  ///< paper-resolution settings for every run (K is set per run)
+  /// The convergence study's early stop of strict runs (ConvergenceStudyOptions).
+  std::vector<FeasibilityCheckpoint> strict_checkpoints = kStrictStudyCheckpoints;
 };
 
 /// What the report keeps of one optimisation (the whole result goes to its own folder).
