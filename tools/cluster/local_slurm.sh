@@ -4,9 +4,9 @@
 # (tools/bootstrap.sh test installs them); touches nothing outside DIR: its own munge key and
 # socket, its own ports, state and logs.
 #
-#   tools/cluster/local_slurm.sh start DIR [--nodes N] [--watch PID]
-#       starts munged, slurmctld and N slurmd (default 1; each a node with all CPUs, the same
-#       machine) and waits until every node is idle. With --watch, everything is stopped as
+#   tools/cluster/local_slurm.sh start DIR [--nodes N] [--cpus C] [--watch PID]
+#       starts munged, slurmctld and N slurmd (default 1) on this machine, each a node with C
+#       CPUs (default: all of them), and waits until every node is idle. With --watch, everything is stopped as
 #       soon as process PID ends (a killed test leaves nothing running). Prints the line to use:
 #       export SLURM_CONF=DIR/slurm.conf
 #   tools/cluster/local_slurm.sh stop DIR
@@ -14,7 +14,7 @@
 set -euo pipefail
 
 usage() {
-  echo "usage: $0 start DIR [--nodes N] [--watch PID] | stop DIR" >&2
+  echo "usage: $0 start DIR [--nodes N] [--cpus C] [--watch PID] | stop DIR" >&2
   exit 2
 }
 [ $# -ge 2 ] || usage
@@ -22,10 +22,12 @@ action="$1"
 dir="$(mkdir -p "$2" && cd "$2" && pwd)"
 shift 2
 nodes=1
+cpus="$(nproc)"
 watch=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --nodes) nodes="$2"; shift 2 ;;
+    --cpus) cpus="$2"; shift 2 ;;
     --watch) watch="$2"; shift 2 ;;
     *) usage ;;
   esac
@@ -96,7 +98,6 @@ while [ "${#ports[@]}" -lt $((nodes + 1)) ]; do
 done
 
 host="$(hostname -s)"
-cpus="$(nproc)"
 {
   echo "ClusterName=saltus-local"
   echo "SlurmctldHost=$host(127.0.0.1)"
