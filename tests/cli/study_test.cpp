@@ -208,8 +208,10 @@ TEST(CliStudy, ACaseOverItsTimeLimitIsAFailureAndTheStudyGoesOn) {
 }
 
 TEST(CliStudy, AHopelessStrictRunStopsEarlyAndSaysSo) {
-  // M3 (a tucked double) with |F_i| <= 10 N at every sample: the strict run never comes within
-  // 20 N of feasibility in 80 iterations, and run to the end it does not solve either.
+  // M3 (a tucked double) with |F_i| <= 10 N at every sample. Its relaxed optimum has an average
+  // root force sqrt(J/6) of 21 N, and a point meeting the strict bounds would have at most
+  // 10 N: the strict run never comes within 20 N of feasibility in 80 iterations, and run to
+  // the end it does not solve either.
   TempDir dir;
   const std::string m3 =
       std::string(SALTUS_EXAMPLES_DIR) + "/motions/M3-tucked-double-back.motion.json";
@@ -219,6 +221,7 @@ TEST(CliStudy, AHopelessStrictRunStopsEarlyAndSaysSo) {
   ASSERT_EQ(early.status, 0) << early.output;
   const auto result = nlohmann::json::parse(test::read_text(dir / "early/result.json"));
   ASSERT_EQ(result["cases"].size(), 2u);
+  EXPECT_GT(result["cases"][0]["avg_force_after_N"].get<double>(), 10.0);
   const auto& strict = result["cases"][1];
   EXPECT_EQ(strict["status"], "stopped_infeasible");
   EXPECT_EQ(strict["iterations"], 80);
