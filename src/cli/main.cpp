@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <cctype>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -116,12 +117,18 @@ int run_simulate(const CommonArgs& args) {
     print_header("simulate", file, options);
     std::printf("  free flight, take-off angular momentum (%.3g, %.3g, %.3g) kg·m²/s from the %s\n",
                 s.angular_momentum.x(), s.angular_momentum.y(), s.angular_momentum.z(),
-                s.angular_momentum_from_file ? "motion file" : "keyframes at t = 0");
+                s.angular_momentum_from_file
+                    ? "motion file"
+                    : "motion itself (the constant nearest its L(t) over the flight)");
+    std::printf("  the motion's own L(t) strays from that constant by %.3g kg·m²/s RMS\n",
+                s.angular_momentum_spread);
     print_forces(s.metrics);
     std::printf(
         "  landing vs last keyframe: whole-body orientation off by %.2f deg, CoM off the "
         "parabola by %.3g m\n",
         s.landing_root_error_deg, s.landing_com_error_m);
+    std::printf("  landing vs the motion's own end: whole-body orientation off by %.2f deg\n",
+                s.landing_vs_motion_deg);
     print_outputs(args.out_dir, seconds);
   }
   return 0;
@@ -225,8 +232,11 @@ int run_optimize(const OptimizeArgs& args) {
     if (result.solve.restarts > 0)
       std::printf("  the solver restarted %d time(s) from its best feasible iterate\n",
                   result.solve.restarts);
-    std::printf("  average root force sqrt(J/6): %.4g N before, %.4g N after\n",
-                result.before.metrics.avg_root_force, result.after.metrics.avg_root_force);
+    std::printf(
+        "  average root force sqrt(J/6): %.4g N before, %.4g N after (checked on %d points; "
+        "the optimiser's own integral: %.4g N)\n",
+        result.before.metrics.avg_root_force, result.after.metrics.avg_root_force,
+        result.after.check.points, std::sqrt(result.optimizer_objective_after / 6.0));
     std::printf("  root force  RMS %.4g -> %.4g N, max %.4g -> %.4g N\n",
                 result.before.metrics.rms_force_N, result.after.metrics.rms_force_N,
                 result.before.metrics.max_force_N, result.after.metrics.max_force_N);
