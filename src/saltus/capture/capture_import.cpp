@@ -15,6 +15,8 @@ namespace saltus {
 namespace {
 
 constexpr double kDegrees = 180.0 / M_PI;
+/// Extrapolated frames beyond each end of the capture's own splines (captured_trajectory).
+constexpr int kGhostFrames = 4;
 
 std::string format(const char* pattern, double value) {
   char buffer[64];
@@ -83,6 +85,8 @@ double angle_at(const std::vector<double>& angles, double frame_time, double t) 
 }  // namespace
 
 Trajectory<double> captured_trajectory(const Motion& captured, const BodyModel& model) {
+  const std::size_t n = captured.keyframes.size();
+  if (n < 3) throw std::invalid_argument("captured_trajectory: needs at least 3 frames");
   std::vector<double> times;
   std::vector<Eigen::Vector3d> roots;
   for (const Keyframe& k : captured.keyframes) {
@@ -91,17 +95,48 @@ Trajectory<double> captured_trajectory(const Motion& captured, const BodyModel& 
     times.push_back(k.time);
     roots.push_back(*k.root_position);
   }
-  Trajectory<double> trajectory;
-  trajectory.knots = clamped_cubic_knots(times);
-  std::vector<Eigen::Quaterniond> targets(times.size());
-  for (int s = 0; s < model.size(); ++s) {
-    for (std::size_t i = 0; i < times.size(); ++i)
-      targets[i] = captured.keyframes[i].rotations[s];
-    trajectory.rotations.emplace_back(trajectory.knots,
-                                      fit_quaternion_spline(trajectory.knots, times, targets));
+  // Ghost frames continue the motion past each end (positions on the parabola through the last
+  // three frames, rotations turning on at their last rate of change), so the splines' free ends,
+  // which stop accelerating, lie outside the flight.
+  std::vector<double> ghost_times = times;
+  std::vector<Eigen::Vector3d> ghost_roots = roots;
+  for (int g = 0; g < kGhostFrames; ++g) {
+    const double step_front = ghost_times[1] - ghost_times[0];
+    const double step_back = ghost_times.back() - ghost_times[ghost_times.size() - 2];
+    ghost_times.insert(ghost_times.begin(), ghost_times.front() - step_front);
+    ghost_times.push_back(ghost_times.back() + step_back);
+    const std::size_t m = ghost_roots.size();
+    ghost_roots.insert(ghost_roots.begin(),
+                       3.0 * ghost_roots[0] - 3.0 * ghost_roots[1] + ghost_roots[2]);
+    ghost_roots.push_back(3.0 * ghost_roots[m] - 3.0 * ghost_roots[m - 1] + ghost_roots[m - 2]);
   }
-  trajectory.root_translation =
-      VectorSpline<double>(trajectory.knots, fit_vector_spline(trajectory.knots, times, roots));
+  Trajectory<double> trajectory;
+  trajectory.knots = clamped_cubic_knots(ghost_times);
+  std::vector<Eigen::Quaterniond> targets(n);
+  for (int s = 0; s < model.size(); ++s) {
+    for (std::size_t i = 0; i < n; ++i)
+      targets[i] = captured.keyframes[i].rotations[s];
+    for (std::size_t i = 1; i < n; ++i)
+      if (targets[i].coeffs().dot(targets[i - 1].coeffs()) < 0) targets[i].coeffs() *= -1.0;
+    for (int g = 0; g < kGhostFrames; ++g) {
+      // The next step repeats the last one changed by the last change: w0 = 2·w1 − w2 with
+      // w_k the rotation vector of the k-th step from the end.
+      auto extend = [](const Eigen::Quaterniond& q0, const Eigen::Quaterniond& q1,
+                       const Eigen::Quaterniond& q2) {
+        const Eigen::Vector3d w1 = quat_log(Eigen::Quaterniond(q1.conjugate() * q0));
+        const Eigen::Vector3d w2 = quat_log(Eigen::Quaterniond(q2.conjugate() * q1));
+        return Eigen::Quaterniond(q0 * quat_exp(Eigen::Vector3d(2.0 * w1 - w2))).normalized();
+      };
+      const std::size_t m = targets.size();
+      targets.insert(targets.begin(), extend(targets[0], targets[1], targets[2]));
+      targets.push_back(extend(targets[m], targets[m - 1], targets[m - 2]));
+    }
+    trajectory.rotations.emplace_back(
+        trajectory.knots, fit_quaternion_spline(trajectory.knots, ghost_times, targets));
+    targets.resize(n);
+  }
+  trajectory.root_translation = VectorSpline<double>(
+      trajectory.knots, fit_vector_spline(trajectory.knots, ghost_times, ghost_roots));
   return trajectory;
 }
 

@@ -84,9 +84,9 @@ struct CaptureImport {
   Motion captured;   ///< every flight frame a keyframe (captured root positions included)
   Motion keyframes;  ///< the picked keyframes
   KeyframePick pick;
-  /// The capture itself as a trajectory (quaternion splines through every flight frame, the
-  /// root translation through the captured root positions) and its dynamics: how physically
-  /// consistent the capture is.
+  /// The capture itself as a trajectory (captured_trajectory; sample it on [0, T], T =
+  /// captured.flight_time()) and its dynamics on a dense grid: how physically consistent the
+  /// capture is.
   Trajectory<double> trajectory;
   std::vector<SampleRecord> samples;
   ForceMetrics metrics;
@@ -102,7 +102,11 @@ CaptureImport import_capture(const MocapClip& clip, const BodyModel& model,
 
 /// The capture's own trajectory: quaternion splines through every keyframe and the root
 /// translation through the keyframes' root positions (all must have one), knots at the
-/// keyframe times.
+/// keyframe times. Two extrapolated frames continue it past each end (positions on the
+/// parabola through the last three frames, rotations at their last rate of change), so that the
+/// splines' free ends, which stop accelerating, lie outside [0, T]: an exact free flight then
+/// keeps a near-zero residual up to its ends. Its knots span [−2Δt, T + 2Δt]; the flight is
+/// [0, T].
 Trajectory<double> captured_trajectory(const Motion& captured, const BodyModel& model);
 
 /// Unwrapped turn (rad) about the world x axis of a segment's long (y) axis between frames,

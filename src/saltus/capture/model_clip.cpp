@@ -52,19 +52,15 @@ MocapClip model_skeleton_clip(const BodyModel& model) {
   return clip;
 }
 
-MocapClip motion_clip(const BodyModel& model, const Trajectory<double>& trajectory, double fps) {
-  if (!(fps > 0) || !std::isfinite(fps))
-    throw std::invalid_argument("frames per second must be > 0");
-  if (trajectory.segment_count() != model.size())
-    throw std::invalid_argument("motion_clip: the trajectory does not fit the model");
+MocapClip model_clip_from_states(const BodyModel& model, double frame_time,
+                                 const std::vector<BodyState<double>>& states) {
+  if (!(frame_time > 0) || !std::isfinite(frame_time))
+    throw std::invalid_argument("the frame time must be > 0");
   MocapClip clip = model_skeleton_clip(model);
-  const double duration = trajectory.duration();
-  const int frames = std::max(2, static_cast<int>(std::lround(duration * fps)) + 1);
-  clip.frame_time = duration / (frames - 1);
-  BodyState<double> state(model.size());
-  for (int f = 0; f < frames; ++f) {
-    const double t = f + 1 == frames ? duration : f * clip.frame_time;
-    trajectory.sample(t, state);
+  clip.frame_time = frame_time;
+  for (const BodyState<double>& state : states) {
+    if (static_cast<int>(state.joints.size()) != model.size())
+      throw std::invalid_argument("model_clip_from_states: a state does not fit the model");
     std::vector<double> row;
     row.reserve(clip.column_count());
     for (const MocapJoint& joint : clip.joints) {
@@ -79,6 +75,20 @@ MocapClip motion_clip(const BodyModel& model, const Trajectory<double>& trajecto
   }
   validate_clip(clip);
   return clip;
+}
+
+MocapClip motion_clip(const BodyModel& model, const Trajectory<double>& trajectory, double fps) {
+  if (!(fps > 0) || !std::isfinite(fps))
+    throw std::invalid_argument("frames per second must be > 0");
+  if (trajectory.segment_count() != model.size())
+    throw std::invalid_argument("motion_clip: the trajectory does not fit the model");
+  const double duration = trajectory.duration();
+  const int frames = std::max(2, static_cast<int>(std::lround(duration * fps)) + 1);
+  const double frame_time = duration / (frames - 1);
+  std::vector<BodyState<double>> states(frames, BodyState<double>(model.size()));
+  for (int f = 0; f < frames; ++f)
+    trajectory.sample(f + 1 == frames ? duration : f * frame_time, states[f]);
+  return model_clip_from_states(model, frame_time, states);
 }
 
 }  // namespace saltus

@@ -13,12 +13,19 @@
 
 #include "saltus/body/body_model.h"
 #include "saltus/capture/mocap_clip.h"
+#include "saltus/dynamics/body_state.h"
 #include "saltus/motion/trajectory.h"
 
 namespace saltus {
 
 /// The model's skeleton with no frames (frame_time 0; add frames before validating).
 MocapClip model_skeleton_clip(const BodyModel& model);
+
+/// Poses as frames `frame_time` apart: each state's root position and joint rotations (rates
+/// are not used). Throws std::invalid_argument for frame_time <= 0 or states that do not fit
+/// the model.
+MocapClip model_clip_from_states(const BodyModel& model, double frame_time,
+                                 const std::vector<BodyState<double>>& states);
 
 /// The trajectory sampled on [0, T] at about `fps` frames per second: round(T·fps) + 1 frames
 /// (at least 2), spaced exactly T/(frames − 1) so the last frame is the landing. Throws
