@@ -235,7 +235,9 @@ class Parser {
       if (start >= tokens.size()) continue;
       if (first_data_line) one_line_per_frame = tokens.size() - start == columns;
       first_data_line = false;
-      if (one_line_per_frame && tokens.size() - start != columns)
+      // A line longer than a frame is never a wrapped frame.
+      if ((one_line_per_frame || tokens.size() - start > columns) &&
+          tokens.size() - start != columns)
         fail(tokens[start].line, "frame " + std::to_string(clip.frames.size()) + " has " +
                                      std::to_string(tokens.size() - start) + " values, expected " +
                                      std::to_string(columns) + " (one per channel)");
