@@ -33,12 +33,16 @@
 #include <string>
 #include <vector>
 
-#include "saltus/analysis/evaluation.h"
-#include "saltus/analysis/motion_analysis.h"
+#include "saltus/base/constants.h"
+#include "saltus/base/resources.h"
 #include "saltus/body/body_model.h"
 #include "saltus/dynamics/free_flight.h"
 #include "saltus/dynamics/inverse_dynamics.h"
-#include "saltus/io/resources.h"
+#include "saltus/evaluation/evaluate.h"
+#include "saltus/evaluation/sampling.h"
+#include "saltus/evaluation/simulate.h"
+#include "saltus/formats/model_file.h"
+#include "saltus/formats/motion_file.h"
 #include "saltus/math/quaternion.h"
 #include "saltus/motion/interpolate.h"
 #include "saltus/motion/motion.h"

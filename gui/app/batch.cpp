@@ -10,7 +10,7 @@
 
 #include "app/main_window.h"
 #include "core/result_folder.h"
-#include "saltus/io/input_error.h"
+#include "saltus/base/input_error.h"
 #include "scene/chart_view.h"
 
 namespace saltus::gui {

@@ -46,8 +46,10 @@
 #include "core/compare.h"
 #include "core/model_edit.h"
 #include "core/motion_edit.h"
-#include "saltus/io/input_error.h"
-#include "saltus/io/json_reader.h"
+#include "saltus/base/input_error.h"
+#include "saltus/base/json_reader.h"
+#include "saltus/formats/model_file.h"
+#include "saltus/formats/motion_file.h"
 #include "scene/chart_view.h"
 
 namespace saltus::gui {

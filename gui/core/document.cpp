@@ -4,7 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "saltus/io/result_files.h"
+#include "saltus/formats/motion_file.h"
+#include "saltus/formats/result_json.h"
 
 namespace saltus::gui {
 

@@ -11,8 +11,8 @@
 
 #include "core/glyph_scale.h"
 #include "core/parabola.h"
-#include "saltus/analysis/motion_analysis.h"
-#include "saltus/analysis/rotation_metrics.h"
+#include "saltus/evaluation/evaluate.h"
+#include "saltus/evaluation/rotation_metrics.h"
 #include "saltus/optim/optimize.h"
 
 namespace saltus::gui {

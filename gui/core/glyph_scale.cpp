@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "saltus/base/text_format.h"
+
 namespace saltus::gui {
 
 double nice_ceiling(double x) {

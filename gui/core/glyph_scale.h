@@ -8,6 +8,8 @@
 
 #include "core/chart_spec.h"
 
+#include "saltus/base/text_format.h"
+
 namespace saltus::gui {
 
 /// Smallest 1, 2 or 5 × 10^k that is >= x (x > 0); 1 for x <= 0 or not finite.

@@ -3,6 +3,8 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "saltus/formats/model_file.h"
+
 namespace saltus::gui {
 
 BodyModel model_with_mass_factors(const BodyModel& original, const std::vector<double>& factors,

@@ -7,6 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "saltus/formats/motion_file.h"
+
 namespace saltus::gui {
 
 namespace {

@@ -9,7 +9,8 @@
 #include <optional>
 #include <string>
 
-#include "saltus/analysis/evaluation.h"
+#include "saltus/evaluation/sampling.h"
+#include "saltus/formats/motion_file.h"
 #include "saltus/motion/motion.h"
 
 namespace saltus::gui {

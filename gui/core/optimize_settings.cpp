@@ -5,6 +5,9 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "saltus/base/constants.h"
+#include "saltus/evaluation/force_metrics.h"
+
 namespace saltus::gui {
 
 namespace {

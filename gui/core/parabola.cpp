@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "saltus/analysis/evaluation.h"
+#include "saltus/base/constants.h"
 #include "saltus/dynamics/inverse_dynamics.h"
+#include "saltus/evaluation/sampling.h"
 #include "saltus/motion/interpolate.h"
 
 namespace saltus::gui {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "saltus/io/input_error.h"
+#include "saltus/base/input_error.h"
 
 namespace saltus::gui {
 

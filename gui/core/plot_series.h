@@ -9,10 +9,10 @@
 #include <vector>
 
 #include "core/chart_spec.h"
-#include "saltus/analysis/evaluation.h"
-#include "saltus/analysis/rotation_metrics.h"
 #include "saltus/body/body_model.h"
-#include "saltus/io/trajectory_csv.h"
+#include "saltus/evaluation/rotation_metrics.h"
+#include "saltus/evaluation/sampling.h"
+#include "saltus/formats/trajectory_csv.h"
 
 namespace saltus::gui {
 

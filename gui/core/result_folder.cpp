@@ -3,8 +3,8 @@
 #include <filesystem>
 #include <set>
 
-#include "saltus/io/input_error.h"
-#include "saltus/io/json_reader.h"
+#include "saltus/base/input_error.h"
+#include "saltus/base/json_reader.h"
 
 namespace saltus::gui {
 

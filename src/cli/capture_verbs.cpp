@@ -5,8 +5,8 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "saltus/base/input_error.h"
 #include "saltus/formats/capture_files.h"
-#include "saltus/io/input_error.h"
 
 namespace saltus_cli {
 

@@ -11,13 +11,20 @@
 #include <stdexcept>
 
 #include "capture_verbs.h"
-#include "saltus/analysis/motion_analysis.h"
+#include "saltus/base/constants.h"
+#include "saltus/base/input_error.h"
+#include "saltus/evaluation/evaluate.h"
+#include "saltus/evaluation/force_metrics.h"
+#include "saltus/evaluation/simulate.h"
 #include "saltus/formats/capture_files.h"
-#include "saltus/io/input_error.h"
-#include "saltus/io/result_files.h"
-#include "saltus/io/study_outputs.h"
+#include "saltus/formats/convergence_files.h"
+#include "saltus/formats/mass_files.h"
+#include "saltus/formats/motion_file.h"
+#include "saltus/formats/paper_report_files.h"
+#include "saltus/formats/result_json.h"
 #include "saltus/motion/motion.h"
 #include "saltus/optim/optimize.h"
+#include "saltus/studies/mass_study.h"
 
 namespace {
 

@@ -3,8 +3,9 @@
 
 #include <benchmark/benchmark.h>
 
-#include "saltus/analysis/motion_analysis.h"
 #include "saltus/dynamics/inverse_dynamics.h"
+#include "saltus/evaluation/evaluate.h"
+#include "saltus/formats/motion_file.h"
 #include "saltus/motion/interpolate.h"
 
 namespace saltus {

@@ -4,6 +4,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "saltus/formats/motion_file.h"
 #include "saltus/motion/interpolate.h"
 #include "saltus/optim/motion_nlp.h"
 #include "saltus/optim/optimize.h"

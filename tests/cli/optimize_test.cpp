@@ -8,7 +8,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "saltus/io/trajectory_csv.h"
+#include "saltus/formats/trajectory_csv.h"
 #include "support/cli_runner.h"
 
 namespace saltus {

@@ -18,6 +18,7 @@
 #include "gui_core/test_motion.h"
 
 #include "saltus/body/body_model.h"
+#include "saltus/formats/model_file.h"
 #include "support/cli_runner.h"
 
 namespace saltus::gui {

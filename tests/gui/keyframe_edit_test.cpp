@@ -20,6 +20,8 @@
 #include "gui_core/test_motion.h"
 #include "support/cli_runner.h"
 
+#include "saltus/formats/model_file.h"
+
 namespace saltus::gui {
 namespace {
 

@@ -4,6 +4,8 @@
 
 #include "core/glyph_scale.h"
 
+#include "saltus/base/text_format.h"
+
 namespace saltus::gui {
 namespace {
 

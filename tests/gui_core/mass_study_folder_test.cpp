@@ -8,10 +8,13 @@
 
 #include "core/result_folder.h"
 #include "gui_core/test_motion.h"
-#include "saltus/analysis/motion_analysis.h"
-#include "saltus/analysis/studies.h"
-#include "saltus/io/input_error.h"
-#include "saltus/io/study_outputs.h"
+#include "saltus/base/input_error.h"
+#include "saltus/evaluation/evaluate.h"
+#include "saltus/formats/mass_files.h"
+#include "saltus/formats/motion_file.h"
+#include "saltus/formats/paper_report_files.h"
+#include "saltus/studies/convergence_study.h"
+#include "saltus/studies/mass_study.h"
 
 namespace saltus::gui {
 namespace {

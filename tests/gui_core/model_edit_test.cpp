@@ -6,7 +6,8 @@
 #include "core/document.h"
 #include "core/model_edit.h"
 #include "gui_core/test_motion.h"
-#include "saltus/io/input_error.h"
+#include "saltus/base/input_error.h"
+#include "saltus/formats/motion_file.h"
 
 namespace saltus::gui {
 namespace {

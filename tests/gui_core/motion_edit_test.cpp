@@ -9,7 +9,8 @@
 #include "core/document.h"
 #include "core/motion_edit.h"
 #include "gui_core/test_motion.h"
-#include "saltus/io/input_error.h"
+#include "saltus/base/input_error.h"
+#include "saltus/formats/motion_file.h"
 #include "saltus/math/quaternion.h"
 
 namespace saltus::gui {

@@ -9,8 +9,9 @@
 #include "core/optimize_settings.h"
 #include "core/result_folder.h"
 #include "gui_core/test_motion.h"
-#include "saltus/io/input_error.h"
-#include "saltus/io/result_files.h"
+#include "saltus/base/input_error.h"
+#include "saltus/formats/motion_file.h"
+#include "saltus/formats/result_json.h"
 
 namespace saltus::gui {
 namespace {

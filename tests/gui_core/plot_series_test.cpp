@@ -8,7 +8,7 @@
 #include "core/document.h"
 #include "core/plot_series.h"
 #include "gui_core/test_motion.h"
-#include "saltus/io/input_error.h"
+#include "saltus/base/input_error.h"
 
 namespace saltus::gui {
 namespace {

@@ -13,7 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "saltus/analysis/motion_analysis.h"
+#include "saltus/evaluation/evaluate.h"
+#include "saltus/evaluation/simulate.h"
+#include "saltus/formats/motion_file.h"
 #include "saltus/motion/motion.h"
 
 namespace saltus {

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "saltus/base/constants.h"
 #include "saltus/dynamics/free_flight.h"
 #include "saltus/dynamics/inverse_dynamics.h"
 #include "saltus/dynamics/momentum.h"

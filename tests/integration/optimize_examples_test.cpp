@@ -15,10 +15,12 @@
 #include <string>
 #include <vector>
 
-#include "saltus/analysis/studies.h"
-#include "saltus/io/study_outputs.h"
+#include "saltus/formats/motion_file.h"
+#include "saltus/formats/paper_report_files.h"
 #include "saltus/motion/motion.h"
 #include "saltus/optim/optimize.h"
+#include "saltus/studies/convergence_study.h"
+#include "saltus/studies/paper_table1.h"
 
 namespace saltus {
 namespace {

@@ -9,8 +9,9 @@
 #include <cmath>
 #include <filesystem>
 
-#include "saltus/analysis/studies.h"
+#include "saltus/formats/motion_file.h"
 #include "saltus/optim/optimize.h"
+#include "saltus/studies/convergence_study.h"
 #include "support/cli_runner.h"
 
 namespace saltus {

@@ -8,7 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "saltus/body/body_model.h"
-#include "saltus/io/trajectory_csv.h"
+#include "saltus/formats/model_file.h"
+#include "saltus/formats/trajectory_csv.h"
 #include "support/cli_runner.h"
 
 namespace saltus {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "saltus/body/body_model.h"
+#include "saltus/formats/model_file.h"
 #include "saltus/math/quaternion.h"
 #include "saltus/motion/motion.h"
 

@@ -19,8 +19,9 @@
 #include <string>
 #include <vector>
 
-#include "saltus/io/input_error.h"
-#include "saltus/io/json_reader.h"
+#include "saltus/base/input_error.h"
+#include "saltus/base/json_reader.h"
+#include "saltus/formats/model_file.h"
 
 namespace saltus {
 namespace {

@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "saltus/io/input_error.h"
+#include "saltus/base/input_error.h"
 #include "support/cli_runner.h"
 
 namespace saltus {

@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "saltus/io/input_error.h"
+#include "saltus/base/input_error.h"
 
 namespace saltus {
 namespace {

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "saltus/base/constants.h"
 #include "saltus/dynamics/inverse_dynamics.h"
 #include "saltus/dynamics/momentum.h"
 #include "support/test_motions.h"

@@ -10,6 +10,7 @@
 #include <limits>
 #include <random>
 
+#include "saltus/formats/motion_file.h"
 #include "saltus/math/quaternion.h"
 #include "saltus/motion/interpolate.h"
 #include "saltus/optim/ipopt_solver.h"

@@ -14,8 +14,9 @@
 #include <random>
 #include <string>
 
+#include "saltus/base/input_error.h"
 #include "saltus/body/body_model.h"
-#include "saltus/io/input_error.h"
+#include "saltus/formats/motion_file.h"
 #include "saltus/motion/motion.h"
 
 namespace saltus {

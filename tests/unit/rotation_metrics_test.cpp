@@ -6,10 +6,11 @@
 
 #include <cmath>
 
-#include "saltus/analysis/motion_analysis.h"
-#include "saltus/analysis/rotation_metrics.h"
 #include "saltus/dynamics/inverse_dynamics.h"
 #include "saltus/dynamics/momentum.h"
+#include "saltus/evaluation/evaluate.h"
+#include "saltus/evaluation/rotation_metrics.h"
+#include "saltus/evaluation/simulate.h"
 #include "support/test_motions.h"
 
 namespace saltus {

@@ -1,7 +1,8 @@
 // The study machinery's pure parts: the factorial design, the seeded timing disturbance and the
 // tables. (Whole studies run in tests/cli/study_test.cpp.)
 
-#include "saltus/analysis/studies.h"
+#include "saltus/formats/convergence_files.h"
+#include "saltus/studies/convergence_study.h"
 
 #include <gtest/gtest.h>
 

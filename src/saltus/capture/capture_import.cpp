@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "saltus/analysis/motion_analysis.h"
-#include "saltus/dynamics/inverse_dynamics.h"
+#include "saltus/base/constants.h"
+#include "saltus/evaluation/evaluate.h"
 #include "saltus/math/bspline_basis.h"
 #include "saltus/motion/interpolate.h"
 
@@ -14,7 +14,6 @@ namespace saltus {
 
 namespace {
 
-constexpr double kDegrees = 180.0 / M_PI;
 /// Extrapolated frames beyond each end of the capture's own splines (captured_trajectory).
 constexpr int kGhostFrames = 4;
 
@@ -146,10 +145,10 @@ std::vector<double> somersault_angles(const std::vector<Eigen::Quaterniond>& wor
     const Eigen::Vector3d axis = r * Eigen::Vector3d::UnitY();
     double angle = std::atan2(axis.z(), axis.y());
     if (!out.empty()) {
-      while (angle - out.back() > M_PI)
-        angle -= 2 * M_PI;
-      while (angle - out.back() < -M_PI)
-        angle += 2 * M_PI;
+      while (angle - out.back() > kPi)
+        angle -= 2 * kPi;
+      while (angle - out.back() < -kPi)
+        angle += 2 * kPi;
     }
     out.push_back(angle);
   }
@@ -209,7 +208,7 @@ CaptureImport import_capture(const MocapClip& clip, const BodyModel& model,
     }
     const double yaw = std::atan2(horizontal.z(), horizontal.x());
     apply_heading(out.frames, yaw);
-    out.heading_yaw_deg = yaw * kDegrees;
+    out.heading_yaw_deg = yaw * kDegreesPerRadian;
   }
 
   // The model's CoM per frame and the ballistic fits over the flight.
@@ -287,8 +286,8 @@ CaptureImport import_capture(const MocapClip& clip, const BodyModel& model,
   const std::vector<double> angles = somersault_angles(trunk);
   out.somersault_flight_deg =
       (angle_at(angles, dt, flight.touchdown_time) - angle_at(angles, dt, flight.liftoff_time)) *
-      kDegrees;
-  out.somersault_clip_deg = (angles.back() - angles.front()) * kDegrees;
+      kDegreesPerRadian;
+  out.somersault_clip_deg = (angles.back() - angles.front()) * kDegreesPerRadian;
 
   // Keyframes for optimisation.
   if (options.all_keyframes) {

@@ -9,11 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "saltus/analysis/evaluation.h"
 #include "saltus/capture/flight.h"
 #include "saltus/capture/keyframe_picking.h"
 #include "saltus/capture/mocap_clip.h"
 #include "saltus/capture/retarget.h"
+#include "saltus/evaluation/force_metrics.h"
+#include "saltus/evaluation/sampling.h"
 #include "saltus/motion/motion.h"
 #include "saltus/motion/trajectory.h"
 

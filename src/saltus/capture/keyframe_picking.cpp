@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "saltus/base/constants.h"
 #include "saltus/math/bspline_basis.h"
 #include "saltus/math/quaternion_spline.h"
 
@@ -33,7 +34,7 @@ KeyframePick keyframe_errors_of(const Motion& captured, const std::vector<int>& 
   pick.max_quaternion_error = worst[pick.worst_frame];
   // ‖q − q̄‖ = 2 sin(θ/4) for a rotation θ between them (sign-aligned).
   pick.max_rotation_error_deg =
-      4.0 * std::asin(std::min(1.0, pick.max_quaternion_error / 2.0)) * 180.0 / M_PI;
+      4.0 * std::asin(std::min(1.0, pick.max_quaternion_error / 2.0)) * kDegreesPerRadian;
   return pick;
 }
 

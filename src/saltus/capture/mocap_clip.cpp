@@ -4,11 +4,13 @@
 #include <set>
 #include <stdexcept>
 
+#include "saltus/base/constants.h"
+
 namespace saltus {
 
 namespace {
 
-constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180.0;
+constexpr double kRadiansPerDegree = kPi / 180.0;
 
 Eigen::Vector3d unit_axis(int axis) {
   return Eigen::Vector3d::Unit(axis);

@@ -6,6 +6,8 @@
 #include <set>
 #include <stdexcept>
 
+#include "saltus/base/constants.h"
+
 namespace saltus {
 
 namespace {
@@ -159,7 +161,7 @@ Eigen::Quaterniond shortest_rotation(const Eigen::Vector3d& from, const Eigen::V
     Eigen::Vector3d axis = Eigen::Vector3d::UnitX();
     if (std::abs(a.dot(axis)) > 0.9) axis = Eigen::Vector3d::UnitZ();
     axis = (axis - a * a.dot(axis)).normalized();
-    return Eigen::Quaterniond(Eigen::AngleAxisd(M_PI, axis));
+    return Eigen::Quaterniond(Eigen::AngleAxisd(kPi, axis));
   }
   return Eigen::Quaterniond::FromTwoVectors(a, b);
 }

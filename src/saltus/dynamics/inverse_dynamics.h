@@ -8,16 +8,12 @@
 
 #include <vector>
 
+#include "saltus/base/constants.h"
 #include "saltus/body/body_model.h"
 #include "saltus/dynamics/body_state.h"
 #include "saltus/dynamics/spatial.h"
 
 namespace saltus {
-
-/// Standard gravity, world frame (y up), m/s².
-inline Eigen::Vector3d gravity() {
-  return Eigen::Vector3d(0.0, -9.81, 0.0);
-}
 
 /// Workspace for inverse dynamics; sized once per model, reused for every sample (no allocation
 /// in the sample loop).

@@ -16,6 +16,7 @@ template <typename Scalar>
 using Vec6 = Eigen::Matrix<Scalar, 6, 1>;
 template <typename Scalar>
 using Mat6 = Eigen::Matrix<Scalar, 6, 6>;
+using Vector6d = Vec6<double>;
 
 template <typename Scalar>
 Mat3<Scalar> skew(const Vec3<Scalar>& v) {

@@ -10,7 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "saltus/io/input_error.h"
+#include "saltus/base/input_error.h"
 
 namespace saltus {
 

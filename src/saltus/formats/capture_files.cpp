@@ -7,15 +7,17 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "saltus/base/constants.h"
+#include "saltus/base/input_error.h"
+#include "saltus/base/resources.h"
 #include "saltus/capture/model_clip.h"
-#include "saltus/dynamics/inverse_dynamics.h"
 #include "saltus/formats/bvh_file.h"
 #include "saltus/formats/capture_mapping_file.h"
-#include "saltus/io/input_error.h"
-#include "saltus/io/output_folder.h"
-#include "saltus/io/resources.h"
-#include "saltus/io/result_files.h"
-#include "saltus/io/trajectory_csv.h"
+#include "saltus/formats/model_file.h"
+#include "saltus/formats/motion_file.h"
+#include "saltus/formats/output_folder.h"
+#include "saltus/formats/result_json.h"
+#include "saltus/formats/trajectory_csv.h"
 #include "saltus/motion/interpolate.h"
 
 namespace saltus {

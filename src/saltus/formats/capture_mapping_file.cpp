@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
-#include "saltus/io/json_reader.h"
+#include "saltus/base/json_reader.h"
 
 namespace saltus {
 

@@ -10,6 +10,7 @@
 #include <Eigen/Geometry>
 #include <string>
 
+#include "saltus/base/constants.h"
 #include "saltus/math/scalar.h"
 
 namespace saltus {
@@ -59,8 +60,6 @@ Vec3<Scalar> quat_log(const Quat<Scalar>& q) {
   }
   return factor * u;
 }
-
-inline constexpr double kDegreesPerRadian = 180.0 / 3.14159265358979323846;
 
 /// Rotation angle in radians between two orientations (sign of the quaternions ignored).
 template <typename Scalar>

@@ -1,11 +1,10 @@
 #pragma once
 /// @file
-/// Keyframed motions and their "saltus-motion/1" files (DESIGN §4).
+/// Keyframed motions (DESIGN §4). Their files are read and written in formats/motion_file.h.
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <map>
-#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -63,22 +62,5 @@ struct MotionFile {
   Motion motion;
   BodyModel model;
 };
-
-/// Parses and validates a "saltus-motion/1" document against `model` (every keyframe must give
-/// every joint of the model, no unknown joints). `file` is used in messages. Normalises
-/// quaternions off by at most 1e-3 in norm; rejects worse. Throws InputError naming file and
-/// JSON path.
-Motion parse_motion(const nlohmann::json& document, const std::string& file,
-                    const BodyModel& model);
-
-/// Reads a motion file and the model it names (resolved by resolve_model_path). If
-/// `model_override` is not empty it is used instead of the file's "model" field.
-MotionFile load_motion_file(const std::string& path, const std::string& model_override = "");
-
-/// Serialises to "saltus-motion/1" (rotations as [w, x, y, z]; "spline" included when present).
-nlohmann::json motion_to_json(const Motion& motion, const BodyModel& model);
-
-/// The "model" field of a motion file, read without validating the rest (to find the model).
-std::string read_motion_model_field(const nlohmann::json& document, const std::string& file);
 
 }  // namespace saltus

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "saltus/analysis/evaluation.h"
+#include "saltus/evaluation/sampling.h"
 #include "saltus/motion/interpolate.h"
 
 namespace saltus {

@@ -27,8 +27,8 @@
 #include <memory>
 #include <vector>
 
-#include "saltus/analysis/evaluation.h"
 #include "saltus/body/body_model.h"
+#include "saltus/evaluation/sampling.h"
 #include "saltus/motion/motion.h"
 #include "saltus/optim/adaptive_damping.h"
 #include "saltus/optim/joint_turn_penalty.h"

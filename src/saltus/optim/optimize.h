@@ -5,7 +5,7 @@
 
 #include <atomic>
 
-#include "saltus/analysis/motion_analysis.h"
+#include "saltus/evaluation/evaluate.h"
 #include "saltus/optim/ipopt_solver.h"
 #include "saltus/optim/motion_nlp.h"
 

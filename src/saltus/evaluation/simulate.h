@@ -1,0 +1,30 @@
+#pragma once
+/// @file
+/// `simulate_motion`: the free flight the motion's joint movements would really produce (DESIGN
+/// §5), the one call behind `saltus simulate`.
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "saltus/evaluation/evaluate.h"
+
+namespace saltus {
+
+/// A free flight with the motion's joint movements (DESIGN §5).
+struct SimulationResult {
+  std::vector<SampleRecord> samples;
+  ForceMetrics metrics;  ///< of the simulated flight: ≈ 0 up to integration error
+  Eigen::Vector3d angular_momentum = Eigen::Vector3d::Zero();  ///< take-off L used
+  bool angular_momentum_from_file = false;  ///< else implied by the keyframes at t = 0
+  /// Landing pose versus the last keyframe: per joint (name -> degrees) the angle between the
+  /// simulated and the keyframe rotation; the root's is the whole body's orientation error.
+  std::map<std::string, double> landing_joint_error_deg;
+  double landing_root_error_deg = 0.0;
+  double landing_com_error_m = 0.0;  ///< simulated CoM vs the ballistic parabola at T
+};
+
+SimulationResult simulate_motion(const Motion& motion, const BodyModel& model,
+                                 const EvaluateOptions& options = {});
+
+}  // namespace saltus

@@ -1,0 +1,219 @@
+#include "saltus/formats/model_file.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <nlohmann/json.hpp>
+#include <unordered_map>
+
+#include "saltus/base/input_error.h"
+#include "saltus/base/json_reader.h"
+#include "saltus/base/text_format.h"
+
+namespace saltus {
+
+namespace {
+
+constexpr const char* kModelFormat = "saltus-model/1";
+constexpr const char* kRootJoint = "root";
+
+std::string in_quotes(const std::string& text) {
+  return "\"" + text + "\"";
+}
+
+/// Segment names, by position, read leniently before validation proper, so that a parent named
+/// later in the list can be reported as an ordering error instead of an unknown name.
+std::vector<std::string> peek_segment_names(const nlohmann::json& segments) {
+  std::vector<std::string> names;
+  for (const auto& s : segments) {
+    const bool has_name = s.is_object() && s.contains("name") && s["name"].is_string();
+    names.push_back(has_name ? s["name"].get<std::string>() : std::string());
+  }
+  return names;
+}
+
+/// Inertia about the CoM in segment axes. Three values are principal moments along the segment
+/// axes; six are the matrix entries [Ixx, Iyy, Izz, Ixy, Ixz, Iyz] (I(0,1) = Ixy, i.e. the
+/// tensor's off-diagonal entries themselves, not the negated products of inertia).
+Eigen::Matrix3d parse_inertia(const JsonNode& node) {
+  node.require_array();
+  const std::size_t n = node.size();
+  if (n == 3) {
+    Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
+    for (std::size_t k = 0; k < 3; ++k) {
+      const JsonNode element = node.at(k);
+      const double moment = element.as_double();
+      if (!(moment > 0.0))
+        element.fail("principal moment of inertia must be positive, found " +
+                     message_number(moment));
+      inertia(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k)) = moment;
+    }
+    return inertia;
+  }
+  if (n == 6) {
+    const std::vector<double> v = node.as_doubles(6);
+    Eigen::Matrix3d inertia;
+    inertia << v[0], v[3], v[4],  //
+        v[3], v[1], v[5],         //
+        v[4], v[5], v[2];
+    // LLT fails on indefinite and semi-definite matrices alike; the smallest eigenvalue tells
+    // the user how far off the numbers are.
+    const Eigen::LLT<Eigen::Matrix3d> llt(inertia);
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(inertia, Eigen::EigenvaluesOnly);
+    const double smallest = eigen.eigenvalues()(0);
+    if (llt.info() != Eigen::Success || !(smallest > 0.0))
+      node.fail("inertia is not positive definite (smallest eigenvalue " +
+                message_number(smallest) + ")");
+    return inertia;
+  }
+  node.fail("inertia must have 3 principal moments or 6 values [Ixx, Iyy, Izz, Ixy, Ixz, Iyz], " +
+            std::string("found ") + std::to_string(n) + " values");
+}
+
+SegmentShape parse_shape(const JsonNode& node) {
+  node.require_object();
+  SegmentShape shape;
+  const JsonNode type = node.at("type");
+  shape.type = type.as_string();
+  if (shape.type != "capsule" && shape.type != "ellipsoid" && shape.type != "box")
+    type.fail("shape type must be \"capsule\", \"ellipsoid\" or \"box\", found " +
+              in_quotes(shape.type));
+  shape.length = node.at("length").as_double();
+  const JsonNode radius = node.at("radius");
+  shape.radius = radius.as_double();
+  if (shape.radius < 0.0)
+    radius.fail("shape radius must not be negative, found " + message_number(shape.radius));
+  return shape;
+}
+
+/// Resolves and checks the "parent" field of segment `index`; returns the parent's index.
+int parse_parent(const JsonNode& node, std::size_t index, const std::string& name,
+                 const std::vector<std::string>& all_names) {
+  if (index == 0) {
+    if (!node.is_null()) {
+      const std::string found = node.value().is_string()
+                                    ? in_quotes(node.value().get<std::string>())
+                                    : node.value().type_name();
+      node.fail("the first segment must be the root: its parent must be null, found " + found);
+    }
+    return -1;
+  }
+  if (node.is_null())
+    node.fail("only the first segment may be the root (parent null); segment " + in_quotes(name) +
+              " needs a parent listed before it");
+  const std::string parent = node.as_string();
+  if (parent == name) node.fail("segment " + in_quotes(name) + " cannot be its own parent");
+  for (std::size_t j = 0; j < index; ++j)
+    if (all_names[j] == parent) return static_cast<int>(j);
+  for (std::size_t j = index + 1; j < all_names.size(); ++j)
+    if (all_names[j] == parent)
+      node.fail(
+          "parent " + in_quotes(parent) + " is listed after segment " + in_quotes(name) +
+          " (at /segments/" + std::to_string(j) +
+          "): segments must be in topological order, parent first, which also rules out cycles");
+  node.fail("unknown parent " + in_quotes(parent) + ": no segment has this name");
+}
+
+}  // namespace
+
+BodyModel parse_body_model(const nlohmann::json& document, const std::string& file) {
+  const JsonNode root(document, file);
+  root.require_object();
+
+  const JsonNode format = root.at("format");
+  if (format.as_string() != kModelFormat)
+    format.fail("unsupported format " + in_quotes(format.as_string()) + ", expected " +
+                in_quotes(kModelFormat));
+
+  BodyModel model;
+  model.name = root.at("name").as_string();
+  if (const auto source = root.find("source")) model.source = source->as_string();
+
+  const JsonNode segments = root.at("segments");
+  segments.require_array();
+  if (segments.size() == 0) segments.fail("segments must be a non-empty array");
+
+  const std::vector<std::string> all_names = peek_segment_names(segments.value());
+  std::unordered_map<std::string, std::size_t> segment_of_name;
+  std::unordered_map<std::string, std::size_t> segment_of_joint;
+
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const JsonNode node = segments.at(i);
+    node.require_object();
+    Segment segment;
+
+    const JsonNode name = node.at("name");
+    segment.name = name.as_string();
+    if (segment.name.empty()) name.fail("segment name must not be empty");
+    if (const auto it = segment_of_name.find(segment.name); it != segment_of_name.end())
+      name.fail("duplicate segment name " + in_quotes(segment.name) + " (also segment " +
+                std::to_string(it->second) + ")");
+    segment_of_name.emplace(segment.name, i);
+
+    segment.parent = parse_parent(node.at("parent"), i, segment.name, all_names);
+
+    const JsonNode joint = node.at("joint");
+    segment.joint = joint.as_string();
+    if (segment.joint.empty()) joint.fail("joint name must not be empty");
+    if (i == 0 && segment.joint != kRootJoint)
+      joint.fail("the root segment's joint must be named \"root\", found " +
+                 in_quotes(segment.joint));
+    if (i > 0 && segment.joint == kRootJoint)
+      joint.fail("joint name \"root\" is reserved for the root segment (the first)");
+    if (const auto it = segment_of_joint.find(segment.joint); it != segment_of_joint.end())
+      joint.fail("duplicate joint name " + in_quotes(segment.joint) + " (also segment " +
+                 std::to_string(it->second) + ")");
+    segment_of_joint.emplace(segment.joint, i);
+
+    // The root's placement is a motion variable, so its joint_position may be left out.
+    if (i == 0) {
+      if (const auto position = node.find("joint_position"))
+        segment.joint_position = position->as_vector3();
+    } else {
+      segment.joint_position = node.at("joint_position").as_vector3();
+    }
+
+    const JsonNode mass = node.at("mass");
+    segment.mass = mass.as_double();
+    if (!(segment.mass > 0.0))
+      mass.fail("mass must be positive, found " + message_number(segment.mass));
+
+    segment.com = node.at("com").as_vector3();
+    segment.inertia = parse_inertia(node.at("inertia"));
+    if (const auto shape = node.find("shape")) segment.shape = parse_shape(*shape);
+
+    model.segments.push_back(std::move(segment));
+  }
+  return model;
+}
+
+BodyModel load_body_model(const std::string& path) {
+  return parse_body_model(read_json_file(path), path);
+}
+
+nlohmann::json body_model_to_json(const BodyModel& model) {
+  auto vector3 = [](const Eigen::Vector3d& v) {
+    return nlohmann::json::array({v.x(), v.y(), v.z()});
+  };
+  nlohmann::json segments = nlohmann::json::array();
+  for (const Segment& s : model.segments) {
+    nlohmann::json parent = nullptr;
+    if (s.parent >= 0) parent = model.segments.at(static_cast<std::size_t>(s.parent)).name;
+    const Eigen::Matrix3d& I = s.inertia;
+    segments.push_back({
+        {"name", s.name},
+        {"parent", parent},
+        {"joint", s.joint},
+        {"joint_position", vector3(s.joint_position)},
+        {"mass", s.mass},
+        {"com", vector3(s.com)},
+        {"inertia", {I(0, 0), I(1, 1), I(2, 2), I(0, 1), I(0, 2), I(1, 2)}},
+        {"shape", {{"type", s.shape.type}, {"length", s.shape.length}, {"radius", s.shape.radius}}},
+    });
+  }
+  return {{"format", kModelFormat},
+          {"name", model.name},
+          {"source", model.source},
+          {"segments", std::move(segments)}};
+}
+
+}  // namespace saltus

@@ -1,0 +1,81 @@
+#pragma once
+/// @file
+/// The convergence study (§3.4, the paper's central claim) as library calls: relaxed versus
+/// strict models under mass-parameter error and keyframe-timing error. Behind
+/// `saltus study convergence` and the reproduction report; its files are
+/// formats/convergence_files.h.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "saltus/motion/motion.h"
+#include "saltus/optim/optimize.h"
+
+namespace saltus {
+
+/// A motion file's contents with a short label for tables ("M1", "dive-5m", ...).
+struct LabelledMotion {
+  std::string label;
+  MotionFile file;
+};
+
+/// One optimisation of the convergence study.
+struct StudyCase {
+  std::string motion;  ///< LabelledMotion::label
+  Formulation formulation = Formulation::kRelaxed;
+  double epsilon = 0.0;         ///< strict model's bound, N or N·m; 0 for relaxed
+  std::string mass_segment;     ///< "all" or a segment name
+  double mass_error = 0.0;      ///< relative: −0.2 = masses and inertias 20 % too small
+  double timing_error_s = 0.0;  ///< amplitude of the keyframe-time disturbance
+};
+
+struct StudyOutcome {
+  StudyCase study_case;
+  std::string status;  ///< SolveReport::status
+  bool solved = false;
+  int iterations = 0;
+  double seconds = 0.0;
+  int variables = 0;
+  int constraints = 0;
+  double avg_force_before = 0.0;  ///< sqrt(J/6) of the interpolation, N
+  double avg_force_after = 0.0;
+  double max_force_after = 0.0;       ///< N
+  double max_quaternion_error = 0.0;  ///< of the result, vs the (disturbed) keyframes
+  int knots_per_interval = 1;  ///< K used (raised when the interpolation missed the keyframes)
+  int restarts = 0;            ///< solver restarts from its best feasible iterate
+};
+
+struct ConvergenceStudyOptions {
+  std::vector<double> epsilons{10, 50, 100, 500};  ///< strict runs; the relaxed run is always made
+  std::vector<double> mass_errors{-0.2, -0.1, 0.0, 0.1, 0.2};
+  std::vector<std::string> mass_segments{"all"};  ///< "all" or segment names
+  std::vector<double> timing_errors{0.0, 0.05, 0.1};
+  unsigned seed = 1;         ///< of the keyframe-time disturbance (same seed, same study)
+  OptimizeOptions optimize;  ///< everything else (samples, iterations, K, ...)
+};
+
+/// The motion with each interior keyframe time moved by +amplitude or −amplitude (signs drawn
+/// from `seed`), then pushed apart where needed so consecutive times stay >= `min_gap_s` apart
+/// and inside (0, T). The poses stay where they are: only their times are wrong.
+Motion disturb_keyframe_times(const Motion& motion, double amplitude, unsigned seed,
+                              double min_gap_s = 0.05);
+
+/// Every case of the factorial design, motion by motion (formulations × mass segments × mass
+/// errors × timing errors; the 0 mass error is run once, not once per segment).
+std::vector<StudyCase> convergence_study_cases(const std::vector<LabelledMotion>& motions,
+                                               const ConvergenceStudyOptions& options);
+
+/// Runs one case: the motion with its times disturbed, the model with its masses scaled.
+StudyOutcome run_study_case(const LabelledMotion& motion, const StudyCase& study_case,
+                            const ConvergenceStudyOptions& options);
+
+/// Runs every case in order; `progress(done, total, outcome)` after each.
+std::vector<StudyOutcome> run_convergence_study(
+    const std::vector<LabelledMotion>& motions, const ConvergenceStudyOptions& options,
+    const std::function<void(int, int, const StudyOutcome&)>& progress = {});
+
+/// "relaxed" or "strict ε=50".
+std::string formulation_label(const StudyCase& study_case);
+
+}  // namespace saltus
