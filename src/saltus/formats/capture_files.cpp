@@ -165,7 +165,7 @@ nlohmann::json capture_result_json(const CaptureFile& capture) {
     } else {
       entry["rest"] = "upright (the source's rest pose)";
     }
-    segments[model.segments[s].joint] = entry;
+    segments[model.segments[s].name] = entry;
   }
   nlohmann::json unused = nlohmann::json::array();
   for (const auto& [name, reason] : rt.unused_joints)
@@ -176,7 +176,7 @@ nlohmann::json capture_result_json(const CaptureFile& capture) {
                                                     : nlohmann::json(capture.mapping_path)},
       {"pelvis", capture.clip.joints[rt.pelvis_joint].name},
       {"thorax", capture.clip.joints[rt.thorax_joint].name},
-      {"joints", segments},
+      {"segments", segments},
       {"unused_joints", unused}};
   r["heading"] = {{"yaw_deg", im.heading_yaw_deg}, {"rule", im.heading_rule}};
 
