@@ -10,6 +10,7 @@
 
 #include "saltus/capture/model_clip.h"
 #include "saltus/dynamics/free_flight.h"
+#include "saltus/evaluation/sampling.h"
 #include "saltus/formats/bvh_file.h"
 #include "saltus/formats/capture_files.h"
 #include "saltus/formats/motion_file.h"
@@ -107,6 +108,18 @@ TEST(CaptureImport, AnExactFreeFlightImportsExactly) {
   EXPECT_LT(im.metrics.avg_root_force, 5.0);
   EXPECT_GT(im.pick.frames.size(), 3u);
   EXPECT_LE(im.pick.max_quaternion_error, im.captured.tolerances.quaternion);
+
+  // The clip's poses for drawing: on the motions' clock, the model's CoM where the fit says.
+  const CaptureClipPoses poses = capture_clip_poses(im);
+  ASSERT_EQ(poses.states.size(), flight.states.size());
+  const std::vector<SampleRecord> drawn = evaluate_states(flight.model, poses.times, poses.states);
+  for (std::size_t f = 0; f < drawn.size(); ++f) {
+    EXPECT_NEAR(poses.times[f], flight.times[f], 1e-12);
+    const double t = poses.times[f];
+    const Eigen::Vector3d parabola = im.takeoff_fit.position + im.takeoff_fit.velocity * t +
+                                     0.5 * im.takeoff_fit.acceleration * t * t;
+    EXPECT_LT((drawn[f].com - parabola).norm(), 1e-6) << f;
+  }
 }
 
 TEST(CaptureImport, AnExactFreeFlightsKeyframesOptimiseToNearZero) {

@@ -139,6 +139,20 @@ Trajectory<double> captured_trajectory(const Motion& captured, const BodyModel& 
   return trajectory;
 }
 
+CaptureClipPoses capture_clip_poses(const CaptureImport& capture) {
+  CaptureClipPoses out;
+  for (std::size_t f = 0; f < capture.frames.size(); ++f) {
+    const RetargetedFrame& frame = capture.frames[f];
+    BodyState<double> state(static_cast<int>(frame.joint_rotation.size()));
+    state.root_position = frame.root_position;
+    for (std::size_t s = 0; s < frame.joint_rotation.size(); ++s)
+      state.joints[s].q = frame.joint_rotation[s];
+    out.times.push_back((static_cast<double>(f) - capture.flight.first_frame) * capture.frame_time);
+    out.states.push_back(std::move(state));
+  }
+  return out;
+}
+
 std::vector<double> somersault_angles(const std::vector<Eigen::Quaterniond>& world_rotations) {
   std::vector<double> out;
   for (const Eigen::Quaterniond& r : world_rotations) {

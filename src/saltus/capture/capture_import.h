@@ -101,6 +101,16 @@ CaptureImport import_capture(const MocapClip& clip, const BodyModel& model,
                              const SkeletonMapping& mapping,
                              const CaptureImportOptions& options = {});
 
+/// Every clip frame as a body state on the model (joint rotations and root position; rates
+/// zero), for drawing the whole capture, ground phases included, as a ghost beside a motion:
+/// times are on the motions' clock, t = 0 at the flight's first frame (negative before it).
+/// evaluate_states() gives the segment poses.
+struct CaptureClipPoses {
+  std::vector<double> times;
+  std::vector<BodyState<double>> states;
+};
+CaptureClipPoses capture_clip_poses(const CaptureImport& capture);
+
 /// The capture's own trajectory: quaternion splines through every keyframe and the root
 /// translation through the keyframes' root positions (all must have one), knots at the
 /// keyframe times. Two extrapolated frames continue it past each end (positions on the
