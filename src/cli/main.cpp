@@ -11,11 +11,13 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "capture_verbs.h"
 #include "saltus/base/constants.h"
 #include "saltus/base/input_error.h"
 #include "saltus/evaluation/evaluate.h"
 #include "saltus/evaluation/force_metrics.h"
 #include "saltus/evaluation/simulate.h"
+#include "saltus/formats/capture_files.h"
 #include "saltus/formats/convergence_files.h"
 #include "saltus/formats/mass_files.h"
 #include "saltus/formats/motion_file.h"
@@ -41,7 +43,8 @@ struct CommonArgs {
 };
 
 void add_common(CLI::App* cmd, CommonArgs& args) {
-  cmd->add_option("MOTION", args.motion_path, "motion file (*.motion.json)")->required();
+  cmd->add_option("MOTION", args.motion_path, "motion file (*.motion.json) or capture (*.bvh)")
+      ->required();
   cmd->add_option("--out", args.out_dir, "output folder (replaced if it holds an earlier result)")
       ->required();
   cmd->add_option("--samples", args.samples, "time samples on [0, T], ends included")
@@ -88,7 +91,8 @@ void print_outputs(const std::string& out_dir, double seconds) {
 
 int run_evaluate(const CommonArgs& args) {
   const auto start = std::chrono::steady_clock::now();
-  const saltus::MotionFile file = saltus::load_motion_file(args.motion_path, args.model_override);
+  const saltus::MotionFile file =
+      saltus::load_motion_or_capture(args.motion_path, args.model_override);
   const saltus::EvaluateOptions options = options_from(args);
   const saltus::MotionEvaluation e = saltus::evaluate_motion(file.motion, file.model, options);
   saltus::write_evaluation_outputs(args.out_dir, file, e, options);
@@ -107,7 +111,8 @@ int run_evaluate(const CommonArgs& args) {
 
 int run_simulate(const CommonArgs& args) {
   const auto start = std::chrono::steady_clock::now();
-  const saltus::MotionFile file = saltus::load_motion_file(args.motion_path, args.model_override);
+  const saltus::MotionFile file =
+      saltus::load_motion_or_capture(args.motion_path, args.model_override);
   const saltus::EvaluateOptions options = options_from(args);
   const saltus::SimulationResult s = saltus::simulate_motion(file.motion, file.model, options);
   saltus::write_simulation_outputs(args.out_dir, file, s, options);
@@ -189,7 +194,7 @@ void add_optimize(CLI::App* cmd, OptimizeArgs& args) {
 int run_optimize(const OptimizeArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   const saltus::MotionFile file =
-      saltus::load_motion_file(args.common.motion_path, args.common.model_override);
+      saltus::load_motion_or_capture(args.common.motion_path, args.common.model_override);
   saltus::OptimizeOptions options;
   options.nlp.formulation =
       args.formulation == "strict" ? saltus::Formulation::kStrict : saltus::Formulation::kRelaxed;
@@ -500,6 +505,9 @@ int main(int argc, char** argv) {
       "mass and convergence studies, all in report.md");
   add_paper(paper, paper_args);
 
+  saltus_cli::CaptureVerbs capture_verbs;
+  saltus_cli::add_capture_verbs(app, capture_verbs);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -520,6 +528,7 @@ int main(int argc, char** argv) {
     if (convergence->parsed()) return run_convergence(convergence_args);
     if (mass->parsed()) return run_mass(mass_args);
     if (paper->parsed()) return run_paper(paper_args);
+    if (auto status = saltus_cli::run_capture_verbs(capture_verbs)) return *status;
   } catch (const saltus::InputError& e) {
     std::fprintf(stderr, "saltus: error: %s\n", e.what());
     return kExitBadInput;
