@@ -12,6 +12,7 @@
 
 #include "saltus/base/input_error.h"
 #include "saltus/base/text_format.h"
+#include "saltus/formats/capture_files.h"
 #include "saltus/formats/convergence_files.h"
 #include "saltus/formats/mass_files.h"
 #include "saltus/formats/motion_file.h"
@@ -237,7 +238,9 @@ StudyVerbs::StudyVerbs(CLI::App& app, int argc, char** argv) : state_(std::make_
       "convergence",
       "Relaxed vs strict model (several ε) under mass-parameter and keyframe-timing errors: "
       "success rate, iterations, time and residual; writes convergence.csv and convergence.md");
-  s.convergence->add_option("MOTIONS", c.motions, "motion files (*.motion.json)")->required();
+  s.convergence
+      ->add_option("MOTIONS", c.motions, "motion files (*.motion.json) or captures (*.bvh)")
+      ->required();
   add_study_common(s.convergence, c.common);
   s.convergence->add_option("--epsilons", c.epsilons, "strict model's bounds to try, N or N·m")
       ->delimiter(',')
@@ -269,7 +272,8 @@ StudyVerbs::StudyVerbs(CLI::App& app, int argc, char** argv) : state_(std::make_
       "mass",
       "The motion optimised with the model's mass parameters and with some segments scaled "
       "(default: thighs +50 %); joint loads over time in mass.csv, a summary in mass.md");
-  s.mass->add_option("MOTION", m.motion, "motion file (*.motion.json)")->required();
+  s.mass->add_option("MOTION", m.motion, "motion file (*.motion.json) or capture (*.bvh)")
+      ->required();
   add_study_common(s.mass, m.common);
   s.mass->add_option("--scale", m.scaled_segments, "segments whose mass and inertia are scaled")
       ->delimiter(',')
@@ -394,7 +398,7 @@ int StudyVerbs::State::run_convergence() const {
   const Convergence& a = convergence_args;
   std::vector<LabelledMotion> motions;
   for (const std::string& path : a.motions)
-    motions.push_back({motion_label(path), load_motion_file(path)});
+    motions.push_back({motion_label(path), load_motion_or_capture(path)});
   ConvergenceStudyOptions options;
   options.optimize = study_optimize_options(a.common);
   options.epsilons = a.epsilons;
@@ -425,7 +429,7 @@ int StudyVerbs::State::run_convergence() const {
 
 int StudyVerbs::State::run_mass() const {
   const Mass& a = mass_args;
-  const MotionFile file = load_motion_file(a.motion);
+  const MotionFile file = load_motion_or_capture(a.motion);
   MassStudyOptions options;
   options.optimize = study_optimize_options(a.common);
   options.scaled_segments = a.scaled_segments;
