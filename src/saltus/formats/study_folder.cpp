@@ -383,6 +383,15 @@ nlohmann::json checkpoints_json(const std::vector<FeasibilityCheckpoint>& checkp
   return list;
 }
 
+// A study's definition must hold every setting that decides its results, or shards and resumed
+// runs with different settings would merge silently. A new option changes these sizes (on the
+// build machine, x86-64): add it to optimize_options_json below, then update the size.
+#if defined(__x86_64__) && defined(__GLIBCXX__)
+static_assert(sizeof(MotionNlpOptions) == 152, "new MotionNlpOptions field: add it below");
+static_assert(sizeof(SolverOptions) == 112, "new SolverOptions field: add it below");
+static_assert(sizeof(OptimizeOptions) == 272, "new OptimizeOptions field: add it below");
+#endif
+
 nlohmann::json optimize_options_json(const OptimizeOptions& o) {
   const MotionNlpOptions& n = o.nlp;
   const SolverOptions& s = o.solver;
@@ -392,6 +401,8 @@ nlohmann::json optimize_options_json(const OptimizeOptions& o) {
             {"optimize_timing", n.optimize_timing},
             {"knots_per_interval", n.knots_per_interval},
             {"samples", n.samples},
+            {"quadrature_nodes", n.quadrature_nodes},
+            {"quadrature_spacing", n.quadrature_spacing},
             {"min_time_gap", n.min_time_gap},
             {"max_time_shift", n.max_time_shift},
             {"damping",
