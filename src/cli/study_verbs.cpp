@@ -54,6 +54,8 @@ void add_study_common(CLI::App* cmd, StudyArgs& args) {
 
 OptimizeOptions study_optimize_options(const StudyArgs& args) {
   OptimizeOptions o;
+  // The studies reproduce the paper's protocol at its resolution (knots at the keyframes).
+  o.automatic_resolution = false;
   o.nlp.samples = args.samples;
   o.solver.max_iterations = args.max_iterations;
   return o;

@@ -66,6 +66,26 @@ TEST(CliStudy, ConvergenceWritesOneRowPerCaseAndTheRelaxedModelSolves) {
   EXPECT_TRUE(std::filesystem::exists(dir / "c/study.json"));
   EXPECT_TRUE(std::filesystem::exists(dir / "c/cases/0007.json"));
   EXPECT_FALSE(std::filesystem::exists(dir / "c.partial"));
+  // The paper's protocol: knots at the keyframes (M1: 5 keyframes, 7 control points of 42
+  // coordinates + 3 times), not `saltus optimize`'s automatic resolution.
+  const auto study = nlohmann::json::parse(test::read_text(dir / "c/study.json"));
+  EXPECT_EQ(study["definition"]["optimize"]["automatic_resolution"], false);
+  std::istringstream lines(csv);
+  std::string line;
+  std::getline(lines, line);
+  ASSERT_EQ(line,
+            "motion,formulation,epsilon,mass_segment,mass_error,timing_error_s,status,solved,"
+            "iterations,seconds,variables,constraints,avg_force_before_N,avg_force_after_N,"
+            "max_force_after_N,max_quaternion_error,knots_per_interval,restarts");
+  while (std::getline(lines, line)) {
+    std::vector<std::string> cells;
+    std::istringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');)
+      cells.push_back(cell);
+    ASSERT_EQ(cells.size(), 18u) << line;
+    EXPECT_EQ(cells[10], "297") << line;
+    EXPECT_EQ(cells[16], "1") << line;
+  }
 }
 
 TEST(CliStudy, SameFilesWhateverTheJobsAndTheShards) {

@@ -41,11 +41,8 @@ StudyJob synthetic_job(int cases, const std::string& log, std::set<int> crash = 
   options.epsilons = {epsilon};
   StudyJob job;
   job.study = "convergence";
-  job.definition = {{"motions", nlohmann::json::array()},
-                    {"epsilons", options.epsilons},
-                    {"cases", cases},
-                    {"seed", 1},
-                    {"optimize", optimize_options_json(options.optimize)}};
+  job.definition = convergence_definition({}, options);
+  job.definition["cases"] = cases;
   for (const StudyCase& c : list)
     job.case_names.push_back(study_case_label(c) + " #" + std::to_string(&c - list.data()));
   job.run_case = [list, log, crash, interrupt_at](int i, const std::string&) {

@@ -284,7 +284,8 @@ nlohmann::json write_convergence_files(const std::string& dir,
   result["samples"] = settings.samples;
   result["knots_per_interval"] = settings.knots_per_interval;
   result["max_iterations"] = settings.max_iterations;
-  result["strict_checkpoints"] = definition.at("strict_checkpoints");
+  result["strict_checkpoints"] =
+      JsonNode(definition, "study.json", "/definition").at("strict_checkpoints").value();
   int failed = 0;
   result["cases"] = nlohmann::json::array();
   for (const StudyOutcome& o : outcomes) {

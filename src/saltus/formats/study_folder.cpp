@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <type_traits>
+#include <utility>
 
 #include "saltus/base/input_error.h"
 #include "saltus/base/json_reader.h"
@@ -383,14 +385,39 @@ nlohmann::json checkpoints_json(const std::vector<FeasibilityCheckpoint>& checkp
   return list;
 }
 
+namespace {
+
+/// Converts to any member type: T{AnyField{}, ...} compiles for at most T's member count.
+struct AnyField {
+  template <class T>
+  operator T() const;
+};
+
+template <class T, class Indices, class = void>
+struct BraceInitializable : std::false_type {};
+template <class T, std::size_t... I>
+struct BraceInitializable<T, std::index_sequence<I...>,
+                          std::void_t<decltype(T{(void(I), AnyField{})...})>> : std::true_type {};
+
+/// The number of members of the aggregate T.
+template <class T, std::size_t N = 0>
+constexpr std::size_t member_count() {
+  if constexpr (BraceInitializable<T, std::make_index_sequence<N + 1>>::value)
+    return member_count<T, N + 1>();
+  else
+    return N;
+}
+
 // A study's definition must hold every setting that decides its results, or shards and resumed
-// runs with different settings would merge silently. A new option changes these sizes (on the
-// build machine, x86-64): add it to optimize_options_json below, then update the size.
-#if defined(__x86_64__) && defined(__GLIBCXX__)
-static_assert(sizeof(MotionNlpOptions) == 152, "new MotionNlpOptions field: add it below");
-static_assert(sizeof(SolverOptions) == 112, "new SolverOptions field: add it below");
-static_assert(sizeof(OptimizeOptions) == 272, "new OptimizeOptions field: add it below");
-#endif
+// runs with different settings would merge silently. A new option changes these counts: add it
+// to optimize_options_json below (unless, like verbose and derivative_test_file, it only
+// decides what is logged), then update the count.
+static_assert(member_count<MotionNlpOptions>() == 17, "new MotionNlpOptions member: add it below");
+static_assert(member_count<DampingRule>() == 7, "new DampingRule member: add it below");
+static_assert(member_count<SolverOptions>() == 11, "new SolverOptions member: add it below");
+static_assert(member_count<OptimizeOptions>() == 4, "new OptimizeOptions member: add it below");
+
+}  // namespace
 
 nlohmann::json optimize_options_json(const OptimizeOptions& o) {
   const MotionNlpOptions& n = o.nlp;
@@ -400,11 +427,13 @@ nlohmann::json optimize_options_json(const OptimizeOptions& o) {
             {"epsilon", n.epsilon},
             {"optimize_timing", n.optimize_timing},
             {"knots_per_interval", n.knots_per_interval},
+            {"subdivisions", n.subdivisions},
             {"samples", n.samples},
             {"quadrature_nodes", n.quadrature_nodes},
             {"quadrature_spacing", n.quadrature_spacing},
             {"min_time_gap", n.min_time_gap},
             {"max_time_shift", n.max_time_shift},
+            {"given_keyframe_times", n.given_keyframe_times},
             {"damping",
              {{"initial", n.damping.initial},
               {"minimum", n.damping.minimum},
@@ -426,8 +455,10 @@ nlohmann::json optimize_options_json(const OptimizeOptions& o) {
             {"acceptable_constraint_violation", s.acceptable_constraint_violation},
             {"stall_iterations", s.stall_iterations},
             {"max_restarts", s.max_restarts},
-            {"feasibility_checkpoints", checkpoints_json(s.feasibility_checkpoints)}}},
-          {"refine_when_keyframes_missed", o.refine_when_keyframes_missed}};
+            {"feasibility_checkpoints", checkpoints_json(s.feasibility_checkpoints)},
+            {"warm_start", s.warm_start}}},
+          {"refine_when_keyframes_missed", o.refine_when_keyframes_missed},
+          {"automatic_resolution", o.automatic_resolution}};
 }
 
 }  // namespace saltus

@@ -53,6 +53,9 @@ struct SolverOptions {
   /// checkpoints are set from measured runs (studies/convergence_study.h,
   /// kStrictStudyCheckpoints). Empty (the default): runs go on to max_iterations.
   std::vector<FeasibilityCheckpoint> feasibility_checkpoints;
+  /// Start near an optimum (a finer resolution of a solved motion): a small initial barrier
+  /// parameter and bound push, so the interior-point method does not first walk away from it.
+  bool warm_start = false;
   bool verbose = false;  ///< Ipopt's own iteration log on stdout
   /// Run Ipopt's first-order derivative checker at the starting point and write its report
   /// (and the iteration log) to this file; empty: off.
