@@ -19,9 +19,9 @@ TEST(ClusterParallel, ShardsRunByGnuParallelMergeToTheLocalRun) {
   ASSERT_EQ(local.status, 0) << local.output;
   // `:` is parallel's name for this machine; on a cluster: --sshlogin 2/node1,2/node2.
   const auto run = test::run_command(
-      "cd " + dir.path().string() + " && parallel --will-cite --halt now,fail=1 --sshlogin 2/: " +
-      "--workdir . " + SALTUS_CLI_PATH + " " + test::cluster_study("shards/{}") +
-      " --shard {}/4 --resume --jobs 1 ::: 1 2 3 4");
+      "cd " + dir.path().string() + " && " + test::bounded("parallel") +
+      " --will-cite --halt now,fail=1 --sshlogin 2/: " + "--workdir . " + SALTUS_CLI_PATH + " " +
+      test::cluster_study("shards/{}") + " --shard {}/4 --resume --jobs 1 ::: 1 2 3 4");
   ASSERT_EQ(run.status, 0) << run.output;
   const auto merged =
       test::run_cli("study merge " + (dir / "shards/1") + " " + (dir / "shards/2") + " " +
@@ -31,6 +31,10 @@ TEST(ClusterParallel, ShardsRunByGnuParallelMergeToTheLocalRun) {
   for (const std::string& d : test::study_folder_differences(dir / "local", dir / "merged"))
     differences += d + "\n";
   EXPECT_EQ(differences, "");
+  std::string left;
+  for (const std::string& p : test::processes_in(dir.path().string()))
+    left += p + "\n";
+  EXPECT_EQ(left, "");
 }
 
 }  // namespace

@@ -24,10 +24,17 @@ TEST(ClusterSlurm, AJobArrayOfShardsMergesToTheLocalRun) {
   test::LocalSlurm slurm(dir / "slurm", 2);
   ASSERT_TRUE(slurm.started()) << slurm.output();
   const std::string script = dir / "study.sbatch";
-  const auto emitted = test::run_cli(test::cluster_study(dir / "array") + " --emit-slurm " +
-                                     script + " --shards 3 --jobs 1");
+  // Emitted and submitted from the test's folder: the tasks run there and Slurm writes their
+  // logs (slurm-<job>_<task>.out) there.
+  const std::string in_dir = "cd " + dir.path().string() + " && ";
+  const auto emitted =
+      test::run_command(in_dir + SALTUS_CLI_PATH + " " + test::cluster_study(dir / "array") +
+                        " --emit-slurm " + script + " --shards 3 --jobs 1");
   ASSERT_EQ(emitted.status, 0) << emitted.output;
-  const auto submitted = test::run_command(slurm.env() + "sbatch --wait " + script);
+  EXPECT_NE(test::read_text(script).find("#SBATCH --chdir=" + dir.path().string() + "\n"),
+            std::string::npos);
+  const auto submitted =
+      test::run_command(in_dir + slurm.env() + test::bounded("sbatch --wait ") + script);
   ASSERT_EQ(submitted.status, 0) << submitted.output;
   for (int shard = 1; shard <= 3; ++shard)
     EXPECT_TRUE(
@@ -43,9 +50,25 @@ TEST(ClusterSlurm, AJobArrayOfShardsMergesToTheLocalRun) {
   EXPECT_EQ(differences, "");
 
   // A rerun of the array (a requeue) finds every shard complete and runs nothing.
-  const auto again = test::run_command(slurm.env() + "sbatch --wait " + script);
+  std::vector<std::filesystem::file_time_type> written;
+  for (int shard = 1; shard <= 3; ++shard)
+    written.push_back(std::filesystem::last_write_time(
+        dir / ("array.shards/" + std::to_string(shard) + "/result.json")));
+  const auto again =
+      test::run_command(in_dir + slurm.env() + test::bounded("sbatch --wait ") + script);
   EXPECT_EQ(again.status, 0) << again.output;
+  for (int shard = 1; shard <= 3; ++shard)
+    EXPECT_EQ(std::filesystem::last_write_time(
+                  dir / ("array.shards/" + std::to_string(shard) + "/result.json")),
+              written[shard - 1])
+        << "shard " << shard << " ran again";
+
+  // Nothing is left running: daemons, job steps, the watcher.
   EXPECT_TRUE(slurm.stop()) << "a Slurm daemon is still running";
+  std::string left;
+  for (const std::string& p : test::processes_in(dir.path().string()))
+    left += p + "\n";
+  EXPECT_EQ(left, "");
 }
 
 }  // namespace
