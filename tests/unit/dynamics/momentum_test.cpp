@@ -55,7 +55,7 @@ TEST(WholeBodyMomentum, MatchesFiniteDifferencesOfTheSegmentPoses) {
       angular += r * s.inertia * r.transpose() * omega +
                  s.mass * (com_of(tuck.data) - tuck.data.com).cross(velocity);
     }
-    EXPECT_GT(angular.norm(), 5.0) << "the somersault turns";
+    EXPECT_GT(angular.norm(), 1.0) << "the body turns";
     EXPECT_LT((m.linear - linear).norm(), 1e-6 * linear.norm()) << "t=" << t;
     EXPECT_LT((m.angular_about_com - angular).norm(), 1e-6 * angular.norm()) << "t=" << t;
     EXPECT_LT((m.com_velocity - linear / tuck.model.total_mass()).norm(), 1e-6) << "t=" << t;
