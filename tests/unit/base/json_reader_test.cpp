@@ -12,6 +12,8 @@
 #include <limits>
 #include <string>
 
+#include "support/temp_path.h"
+
 namespace saltus {
 namespace {
 
@@ -88,7 +90,7 @@ TEST(JsonNode, ReadsValuesAndOptionalMembers) {
 }
 
 TEST(ReadJsonFile, NamesTheFileAndWhereTheSyntaxBreaks) {
-  const std::string path = ::testing::TempDir() + "/saltus-json-reader-test.json";
+  const std::string path = test::temp_path("json-reader-test.json").string();
   std::ofstream(path) << "{\n  \"a\": 1,\n  \"b\": [1, 2,, 3]\n}\n";
   const InputError syntax = input_error([&] { read_json_file(path); });
   EXPECT_EQ(syntax.file(), path);

@@ -10,6 +10,8 @@
 #include <fstream>
 #include <string>
 
+#include "support/temp_path.h"
+
 namespace saltus {
 namespace {
 
@@ -18,7 +20,7 @@ namespace fs = std::filesystem;
 /// A fresh folder for one test, removed afterwards.
 struct Folder {
   fs::path path;
-  explicit Folder(const std::string& name) : path(fs::path(::testing::TempDir()) / name) {
+  explicit Folder(const std::string& name) : path(test::temp_path(name)) {
     fs::remove_all(path);
     fs::create_directories(path);
   }

@@ -14,13 +14,14 @@
 
 #include "saltus/base/input_error.h"
 #include "saltus/motion/interpolate.h"
+#include "support/temp_path.h"
 #include "support/test_motions.h"
 
 namespace saltus {
 namespace {
 
 std::string temp_file(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + "/saltus-" + name;
+  const std::string path = test::temp_path(name).string();
   std::ofstream(path) << text;
   return path;
 }

@@ -10,7 +10,6 @@
 #include "saltus/optim/ipopt_solver.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <Eigen/Core>
 #include <algorithm>
@@ -22,6 +21,8 @@
 #include <limits>
 #include <string>
 #include <vector>
+
+#include "support/temp_path.h"
 
 namespace saltus {
 namespace {
@@ -737,8 +738,7 @@ TEST(IpoptSolver, CancelOnAStallIterationCancelsInsteadOfRestarting) {
 
 TEST(IpoptSolver, IgnoresAnIpoptOptionsFileInTheWorkingFolder) {
   // Ipopt reads ./ipopt.opt unless told otherwise; one here would stop it after one iteration.
-  const std::filesystem::path folder =
-      std::filesystem::path(::testing::TempDir()) / "saltus-ipopt-opt";
+  const std::filesystem::path folder = test::temp_path("ipopt-opt");
   std::filesystem::create_directories(folder);
   std::ofstream(folder / "ipopt.opt") << "max_iter 1\n";
   const std::filesystem::path previous = std::filesystem::current_path();
@@ -760,7 +760,7 @@ class Hs71WrongGradient : public Hs71 {
 };
 
 std::string derivative_check(DenseNlp& nlp, const std::string& name) {
-  const std::string file = ::testing::TempDir() + "/saltus-" + name + ".txt";
+  const std::string file = test::temp_path(name + ".txt").string();
   SolverOptions options;
   options.max_iterations = 0;
   options.derivative_test_file = file;
