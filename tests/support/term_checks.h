@@ -1,15 +1,21 @@
-// Every objective term and constraint block of the optimiser (src/saltus/optim/terms/) against
-// central finite differences, each through its own interface: a term's value is the sum of its
-// squared residuals, its gradient the derivative of its value, its curvature 2·JᵀJ with J the
-// residuals' derivative; a block's Jacobian is the derivative of its rows and zero off its
-// declared sparsity. One test per term and block, at a random point where every kind of variable
-// (root translation controls, joint tangents, keyframe times) has moved.
+#pragma once
+// Checks shared by the tests of the optimiser's objective terms and constraint blocks
+// (tests/unit/optim/terms/, one test file per term or block): each against central finite
+// differences through its own interface. A term's value is the sum of its squared residuals, its
+// gradient the derivative of its value, its curvature 2·JᵀJ with J the residuals' derivative; a
+// block's Jacobian is the derivative of its rows and zero off its declared sparsity. The point is
+// random, with every kind of variable (root translation controls, joint tangents, keyframe times)
+// moved.
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <random>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "saltus/motion/interpolate.h"
 #include "saltus/optim/motion_nlp.h"
@@ -17,12 +23,11 @@
 #include "saltus/optim/terms/objective_term.h"
 #include "support/test_motions.h"
 
-namespace saltus {
-namespace {
+namespace saltus::test {
 
 struct RandomPoint {
-  BodyModel model = test::bundled_model();
-  Motion motion = test::tuck_motion(model);
+  BodyModel model = bundled_model();
+  Motion motion = tuck_motion(model);
   std::unique_ptr<MotionNlp> nlp;
   std::vector<double> start, x;
 
@@ -70,20 +75,20 @@ struct RandomPoint {
   }
 };
 
-std::vector<double> moved(std::vector<double> x, int variable, double step) {
+inline std::vector<double> moved(std::vector<double> x, int variable, double step) {
   x[variable] += step;
   return x;
 }
 
-std::vector<double> along(std::vector<double> x, const Eigen::VectorXd& v, double step) {
+inline std::vector<double> along(std::vector<double> x, const Eigen::VectorXd& v, double step) {
   for (std::size_t i = 0; i < x.size(); ++i)
     x[i] += step * v[static_cast<Eigen::Index>(i)];
   return x;
 }
 
 /// value = Σ r², gradient = d value, curvature = 2·JᵀJ (+ the damping `extra`·‖v‖² along v).
-void check_term(RandomPoint& p, ObjectiveTerm& term, const std::vector<double>& x,
-                double damping = 0.0) {
+inline void check_term(RandomPoint& p, ObjectiveTerm& term, const std::vector<double>& x,
+                       double damping = 0.0) {
   NlpEvaluations& at = p.nlp->evaluations();
   const int n = p.nlp->variable_count();
   auto value_at = [&](const std::vector<double>& y) {
@@ -133,7 +138,7 @@ void check_term(RandomPoint& p, ObjectiveTerm& term, const std::vector<double>& 
 }
 
 /// Jacobian entries against differences of the rows; rows do not move off their sparsity.
-void check_block(RandomPoint& p, ConstraintBlock& block, const std::vector<double>& x) {
+inline void check_block(RandomPoint& p, ConstraintBlock& block, const std::vector<double>& x) {
   NlpEvaluations& at = p.nlp->evaluations();
   const int rows = block.rows();
   auto rows_at = [&](const std::vector<double>& y) {
@@ -167,139 +172,4 @@ void check_block(RandomPoint& p, ConstraintBlock& block, const std::vector<doubl
   }
 }
 
-TEST(RootWrenchTerm, ValueGradientAndDampedGaussNewtonMatchFiniteDifferences) {
-  RandomPoint p(Formulation::kRelaxed);
-  check_term(p, p.term("root wrench"), p.x, p.nlp->damping_factor());
-}
-
-TEST(ProximityTerm, ValueGradientAndCurvatureMatchFiniteDifferences) {
-  RandomPoint p(Formulation::kRelaxed);
-  check_term(p, p.term("proximity"), p.x);
-}
-
-TEST(KeyframeDistanceTerm, ValueGradientAndGaussNewtonMatchFiniteDifferences) {
-  RandomPoint p(Formulation::kStrict);
-  check_term(p, p.term("keyframe distance"), p.x);
-}
-
-TEST(JointTurnTerm, ValueGradientAndGaussNewtonMatchFiniteDifferencesPastTheLimit) {
-  RandomPoint p(Formulation::kRelaxed);
-  // Turn one foot control a further 1.2 rad about the axis it already turns about, past π.
-  const TrajectoryLayout& layout = p.nlp->layout();
-  const int segment = layout.segment_count - 1, control = 3;
-  const auto& c = p.nlp->reference().joint_control[segment];
-  const Eigen::Quaterniond d = c[control - 1].conjugate() * c[control];
-  const Eigen::Vector3d axis =
-      d.vec().norm() > 1e-6 ? Eigen::Vector3d(d.vec().normalized()) : Eigen::Vector3d::UnitX();
-  const double turn = 2.0 * std::acos(std::clamp(d.w(), -1.0, 1.0));
-  std::vector<double> x = p.x;
-  for (int i = 0; i < 3; ++i)
-    x[layout.control_variable(segment + 1, control, i)] =
-        0.5 * (std::max(M_PI, turn) + 0.3 - turn) * axis[i];
-  // The probes must include the pushed control, so that the penalty's derivative is checked.
-  check_term(p, p.term("joint turn"), x);
-  NlpEvaluations& at = p.nlp->evaluations();
-  at.load(x.data());
-  std::vector<double> gradient(p.nlp->variable_count(), 0.0);
-  p.term("joint turn").add_gradient(at, gradient.data());
-  const double h = 1e-6;
-  for (int i = 0; i < 3; ++i) {
-    const int v = layout.control_variable(segment + 1, control, i);
-    auto value_at = [&](const std::vector<double>& y) {
-      at.load(y.data());
-      return p.term("joint turn").value(at);
-    };
-    const double numeric = (value_at(moved(x, v, h)) - value_at(moved(x, v, -h))) / (2 * h);
-    EXPECT_NEAR(gradient[v], numeric, 1e-6 * std::max(1.0, std::abs(numeric)));
-  }
-}
-
-TEST(KeyframeTranslationBlock, JacobianMatchesFiniteDifferencesAndItsSparsity) {
-  RandomPoint p(Formulation::kRelaxed);
-  check_block(p, p.block("keyframe translation"), p.x);
-}
-
-TEST(KeyframeRotationBlock, JacobianMatchesFiniteDifferencesAndItsSparsity) {
-  RandomPoint p(Formulation::kRelaxed);
-  check_block(p, p.block("keyframe rotation"), p.x);
-}
-
-TEST(KeyframeRotationBlock, CurvatureIsGaussNewtonWhereTheKeyframesAreMet) {
-  // At the interpolation the keyframe rotations are met to rounding, so there ∇²g equals its
-  // Gauss–Newton part: compare λᵀ∇²g along v with differences of the rows' Jacobian.
-  RandomPoint p(Formulation::kRelaxed);
-  ConstraintBlock& block = p.block("keyframe rotation");
-  NlpEvaluations& at = p.nlp->evaluations();
-  const int n = p.nlp->variable_count(), rows = block.rows();
-  std::vector<double> multipliers(rows);
-  for (int r = 0; r < rows; ++r)
-    multipliers[r] = 0.5 + 0.01 * r;
-  const HessianBand band(p.nlp->layout());
-  std::vector<double> values(band.nonzeros(), 0.0);
-  at.load(p.start.data());
-  block.add_curvature(at, multipliers.data(), band, values.data());
-  std::mt19937 rng(9);
-  std::normal_distribution<double> g;
-  Eigen::VectorXd v(n);
-  for (int i = 0; i < n; ++i)
-    v[i] = g(rng);
-  const std::vector<double> hv = band.product(values, v.data());
-  // d/dε of λᵀ J(x + εv) v, J v by differences of the rows along v.
-  auto weighted_rows = [&](const std::vector<double>& y) {
-    at.load(y.data());
-    std::vector<double> r(rows);
-    block.values(at, r.data());
-    double sum = 0.0;
-    for (int i = 0; i < rows; ++i)
-      sum += multipliers[i] * r[i];
-    return sum;
-  };
-  const double h = 1e-4;
-  const double second = (weighted_rows(along(p.start, v, h)) - 2.0 * weighted_rows(p.start) +
-                         weighted_rows(along(p.start, v, -h))) /
-                        (h * h);
-  const double actual = v.dot(Eigen::Map<const Eigen::VectorXd>(hv.data(), n));
-  EXPECT_NEAR(actual, second, 1e-3 * std::abs(second));
-  EXPECT_GT(actual, 0.0);
-}
-
-TEST(TimeOrderBlock, JacobianMatchesFiniteDifferencesAndItsSparsity) {
-  RandomPoint p(Formulation::kRelaxed);
-  check_block(p, p.block("time order"), p.x);
-}
-
-TEST(ForceBoundBlock, JacobianMatchesFiniteDifferencesAndItsSparsity) {
-  RandomPoint p(Formulation::kStrict);
-  check_block(p, p.block("force bounds"), p.x);
-}
-
-TEST(MotionNlp, AssemblesEachFormulationFromItsTermsAndBlocks) {
-  auto names = [](const auto& parts) {
-    std::vector<std::string> out;
-    for (const auto* part : parts)
-      out.push_back(part->name());
-    return out;
-  };
-  RandomPoint relaxed(Formulation::kRelaxed), strict(Formulation::kStrict);
-  EXPECT_EQ(names(relaxed.nlp->objective_terms()),
-            (std::vector<std::string>{"root wrench", "proximity", "joint turn"}));
-  EXPECT_EQ(names(strict.nlp->objective_terms()),
-            (std::vector<std::string>{"keyframe distance", "proximity", "joint turn"}));
-  EXPECT_EQ(names(relaxed.nlp->constraint_blocks()),
-            (std::vector<std::string>{"keyframe translation", "keyframe rotation", "time order"}));
-  EXPECT_EQ(names(strict.nlp->constraint_blocks()),
-            (std::vector<std::string>{"keyframe translation", "keyframe rotation", "time order",
-                                      "force bounds"}));
-  // The NLP's objective is the sum of its terms' values.
-  for (RandomPoint* p : {&relaxed, &strict}) {
-    double sum = 0.0;
-    for (ObjectiveTerm* term : p->nlp->objective_terms()) {
-      p->nlp->evaluations().load(p->x.data());
-      sum += term->value(p->nlp->evaluations());
-    }
-    EXPECT_NEAR(p->nlp->objective(p->x.data()), sum, 1e-12 * sum);
-  }
-}
-
-}  // namespace
-}  // namespace saltus
+}  // namespace saltus::test
