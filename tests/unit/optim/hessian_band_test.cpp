@@ -16,7 +16,7 @@ TrajectoryLayout small_layout() {
   TrajectoryLayout layout;
   layout.segment_count = 2;
   layout.keyframe_count = 4;
-  layout.knots_per_interval = 2;
+  layout.set_subdivisions({2, 1, 3});
   return layout;
 }
 

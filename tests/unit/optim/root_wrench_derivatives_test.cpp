@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <vector>
 
 #include "saltus/motion/interpolate.h"
 #include "support/test_motions.h"
@@ -29,7 +30,7 @@ struct Point {
     const Trajectory<double> curve = interpolate_keyframes(motion, model, options);
     layout.segment_count = model.size();
     layout.keyframe_count = static_cast<int>(motion.keyframes.size());
-    layout.knots_per_interval = k;
+    layout.set_subdivisions(std::vector<int>(layout.keyframe_count - 1, k));
     for (const auto& r : curve.rotations)
       reference.joint_control.push_back(r.control());
     for (const Keyframe& key : motion.keyframes)

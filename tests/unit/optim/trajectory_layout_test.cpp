@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <numeric>
+#include <stdexcept>
+#include <vector>
 
 #include "saltus/motion/interpolate.h"
 #include "support/test_motions.h"
@@ -15,13 +17,18 @@
 namespace saltus {
 namespace {
 
-TrajectoryLayout layout_for(int segments, int keyframes, int k, bool timing) {
+TrajectoryLayout layout_for(int segments, const std::vector<int>& subdivisions, bool timing) {
   TrajectoryLayout layout;
   layout.segment_count = segments;
-  layout.keyframe_count = keyframes;
-  layout.knots_per_interval = k;
+  layout.keyframe_count = static_cast<int>(subdivisions.size()) + 1;
+  layout.set_subdivisions(subdivisions);
   layout.optimize_timing = timing;
   return layout;
+}
+
+/// K knot spans in each of the keyframes − 1 intervals.
+TrajectoryLayout layout_for(int segments, int keyframes, int k, bool timing) {
+  return layout_for(segments, std::vector<int>(keyframes - 1, k), timing);
 }
 
 TEST(TrajectoryLayout, GivesEveryVariableOneIndex) {
@@ -68,29 +75,50 @@ TEST(TrajectoryLayout, TheFourControlsOfASpanAreOneContiguousBlock) {
 }
 
 TEST(TrajectoryLayout, KnotsAndKeyframeSpansFollowTheBsplineLayout) {
+  // Uniform K and uneven spans per interval: each knot is the blend of its two keyframe times
+  // that refine_breakpoints makes, and each keyframe sits on its span and at its knot.
   const std::vector<double> times = {0.0, 0.31, 0.9, 1.2, 1.75, 2.04};
-  for (int k : {1, 2, 3}) {
-    const TrajectoryLayout layout = layout_for(2, 6, k, true);
-    const std::vector<double> knots = clamped_cubic_knots(refine_breakpoints(times, k));
+  for (const std::vector<int>& subdivisions : std::vector<std::vector<int>>{
+           {1, 1, 1, 1, 1}, {2, 2, 2, 2, 2}, {3, 3, 3, 3, 3}, {1, 3, 2, 1, 4}, {4, 1, 1, 2, 1}}) {
+    const TrajectoryLayout layout = layout_for(2, subdivisions, true);
+    EXPECT_EQ(layout.subdivisions(), subdivisions);
+    const std::vector<double> knots = clamped_cubic_knots(refine_breakpoints(times, subdivisions));
     ASSERT_EQ(static_cast<int>(knots.size()), layout.control_count() + 4);
+    EXPECT_EQ(layout.control_count(),
+              std::accumulate(subdivisions.begin(), subdivisions.end(), 0) + 3);
     for (int m = 0; m < static_cast<int>(knots.size()); ++m) {
       const TrajectoryLayout::KnotDependence d = layout.knot_dependence(m);
       EXPECT_NEAR((1 - d.weight) * times[d.left] + d.weight * times[d.left + 1], knots[m], 1e-15)
-          << "K=" << k << " knot " << m;
+          << "subdivisions[1]=" << subdivisions[1] << " knot " << m;
     }
-    for (int i = 0; i < 6; ++i)
-      EXPECT_EQ(layout.keyframe_span(i), find_span(knots, times[i])) << "K=" << k << " " << i;
+    for (int i = 0; i < 6; ++i) {
+      EXPECT_EQ(layout.keyframe_span(i), find_span(knots, times[i])) << i;
+      EXPECT_EQ(knots[layout.keyframe_knot(i)], times[i]) << i;
+    }
   }
+}
+
+TEST(TrajectoryLayout, RejectsSubdivisionsThatDoNotFitTheKeyframes) {
+  TrajectoryLayout layout;
+  layout.segment_count = 2;
+  layout.keyframe_count = 4;
+  EXPECT_THROW(layout.set_subdivisions({1, 2}), std::invalid_argument);
+  EXPECT_THROW(layout.set_subdivisions({1, 2, 1, 1}), std::invalid_argument);
+  EXPECT_THROW(layout.set_subdivisions({1, 0, 1}), std::invalid_argument);
+  layout.set_subdivisions({2, 1, 3});
+  EXPECT_EQ(layout.keyframe_breakpoint, (std::vector<int>{0, 2, 3, 6}));
 }
 
 TEST(TrajectoryLayout, VariablesEncodeTheTrajectoryExactly) {
   const BodyModel model = test::bundled_model();
   const Motion motion = test::tuck_motion(model);
-  for (int k : {1, 2}) {
+  for (const std::vector<int>& subdivisions :
+       std::vector<std::vector<int>>{{1, 1, 1, 1}, {2, 2, 2, 2}, {1, 3, 2, 1}}) {
     InterpolationOptions options;
-    options.knots_per_interval = k;
+    options.subdivisions = subdivisions;
     const Trajectory<double> curve = interpolate_keyframes(motion, model, options);
-    const TrajectoryLayout layout = layout_for(model.size(), 5, k, true);
+    const TrajectoryLayout layout = layout_for(model.size(), subdivisions, true);
+    ASSERT_EQ(static_cast<int>(curve.rotations[0].control().size()), layout.control_count());
     // The reference controls sit away from the curve's (δ ≠ 0), one of them with its sign
     // flipped: the encoding must reproduce the curve's own controls, signs included.
     TrajectoryReference reference;
@@ -116,7 +144,7 @@ TEST(TrajectoryLayout, VariablesEncodeTheTrajectoryExactly) {
             (back.rotations[s].evaluate(t).q.coeffs() - curve.rotations[s].evaluate(t).q.coeffs())
                 .norm(),
             1e-12)
-            << "K=" << k << " segment " << s << " t=" << t;
+            << "subdivisions[1]=" << subdivisions[1] << " segment " << s << " t=" << t;
     }
   }
 }
