@@ -51,6 +51,21 @@ TEST(BsplineBasis, KnotLayoutAndRefinement) {
   EXPECT_THROW(clamped_cubic_knots(std::vector<double>{1.0}), std::invalid_argument);
 }
 
+TEST(BsplineBasis, RefinementPerInterval) {
+  // Interval i split into K_i equal parts; the keyframe times themselves stay breakpoints.
+  const std::vector<double> times = {0.0, 1.0, 3.0, 3.5};
+  const std::vector<double> b = refine_breakpoints(times, std::vector<int>{1, 4, 2});
+  const std::vector<double> expected = {0.0, 1.0, 1.5, 2.0, 2.5, 3.0, 3.25, 3.5};
+  ASSERT_EQ(b.size(), expected.size());
+  for (std::size_t i = 0; i < b.size(); ++i)
+    EXPECT_NEAR(b[i], expected[i], 1e-15) << i;
+  EXPECT_EQ(b[1], 1.0);
+  EXPECT_EQ(b[5], 3.0);
+  EXPECT_EQ(refine_breakpoints(times, std::vector<int>{3, 3, 3}), refine_breakpoints(times, 3));
+  EXPECT_THROW(refine_breakpoints(times, std::vector<int>{1, 1}), std::invalid_argument);
+  EXPECT_THROW(refine_breakpoints(times, std::vector<int>{1, 0, 1}), std::invalid_argument);
+}
+
 TEST(BsplineBasis, FindSpanConventions) {
   const std::vector<double> k = knots_for(kNonUniformTimes, 1);  // n = 7, spans 3..6
   EXPECT_EQ(find_span(k, 0.0), 3);
