@@ -1,13 +1,16 @@
 // Keyframe interpolation (motion/interpolate.h, paper §5): the ballistic CoM of eq. 9, the root
 // targets of eq. 10 checked through the body's own CoM, and the interpolated motion: through the
-// keyframes, with its CoM on the parabola (computed by inverse dynamics, not by eq. 10's code).
+// keyframes, with its CoM on the parabola (computed by inverse dynamics, not by eq. 10's code);
+// per-interval knot spans, and a trajectory refitted onto finer knots.
 
 #include "saltus/motion/interpolate.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <limits>
 #include <stdexcept>
+#include <vector>
 
 #include "saltus/base/constants.h"
 #include "saltus/dynamics/inverse_dynamics.h"
@@ -139,6 +142,84 @@ TEST(InterpolateKeyframes, RootCurveIsTheLeastSquaresFitThatPutsTheComOnTheParab
       const double off = com_off_parabola(model, motion, t);
       EXPECT_LT(off, previous);
       previous = off;
+    }
+  }
+}
+
+TEST(InterpolateKeyframes, SpansPerIntervalSplitEachKeyframeIntervalEvenly) {
+  // subdivisions = {K_i}: interval i holds K_i equal knot spans, the curve still passes through
+  // every keyframe, and all-equal subdivisions are exactly the uniform knots_per_interval.
+  const BodyModel model = test::bundled_model();
+  const Motion motion = test::tuck_motion(model);
+  const std::vector<int> subdivisions = {1, 3, 2, 4};
+  InterpolationOptions options;
+  options.knots_per_interval = 2;  // ignored: the subdivisions replace it
+  options.subdivisions = subdivisions;
+  const Trajectory<double> t = interpolate_keyframes(motion, model, options);
+  ASSERT_EQ(control_count(t.knots), 1 + 3 + 2 + 4 + 3);
+  std::size_t knot = 3;  // the first breakpoint of the clamped cubic knots
+  for (std::size_t i = 0; i < subdivisions.size(); ++i) {
+    const double start = motion.keyframes[i].time, end = motion.keyframes[i + 1].time;
+    for (int j = 0; j < subdivisions[i]; ++j, ++knot) {
+      EXPECT_NEAR(t.knots[knot], start + (end - start) * j / subdivisions[i], 1e-15);
+      EXPECT_NEAR(t.knots[knot + 1] - t.knots[knot], (end - start) / subdivisions[i], 1e-14);
+    }
+  }
+  EXPECT_EQ(t.knots[knot], motion.flight_time());
+  for (const Keyframe& key : motion.keyframes)
+    for (int s = 0; s < model.size(); ++s)
+      EXPECT_LT(rotation_angle_between(t.rotations[s].evaluate(key.time).q, key.rotations[s]), 1e-6)
+          << "t=" << key.time << " segment " << s;
+
+  InterpolationOptions uniform, listed;
+  uniform.knots_per_interval = 3;
+  listed.subdivisions.assign(motion.keyframes.size() - 1, 3);
+  const Trajectory<double> a = interpolate_keyframes(motion, model, uniform);
+  const Trajectory<double> b = interpolate_keyframes(motion, model, listed);
+  EXPECT_EQ(a.knots, b.knots);
+  EXPECT_EQ(a.root_translation.control(), b.root_translation.control());
+  for (int s = 0; s < model.size(); ++s)
+    for (std::size_t j = 0; j < a.rotations[s].control().size(); ++j)
+      EXPECT_EQ(a.rotations[s].control()[j].coeffs(), b.rotations[s].control()[j].coeffs());
+
+  options.subdivisions = {1, 2, 1};  // one short
+  EXPECT_THROW(interpolate_keyframes(motion, model, options), std::invalid_argument);
+  options.subdivisions = {1, 0, 1, 1};
+  EXPECT_THROW(interpolate_keyframes(motion, model, options), std::invalid_argument);
+}
+
+TEST(RefitTrajectory, KeepsTheCurveOnItsOwnOrRefinedKnots) {
+  // The cubic root translation lies in the space of its own knots and of any refinement of them,
+  // so the least-squares refit gives it back up to the fit's 1e-9 smoothness term. A rotation
+  // curve (cumulative quaternion form) is refitted in its own nonlinear form: on its own knots it
+  // comes back to a thousandth of a degree; halved spans do not contain it exactly, yet stay
+  // within a degree of it (the body turns by hundreds).
+  const BodyModel model = test::bundled_model();
+  for (const Motion& motion : {test::tuck_motion(model), test::twist_motion(model)}) {
+    const Trajectory<double> coarse = interpolate_keyframes(motion, model);
+    std::vector<double> times;
+    for (const Keyframe& key : motion.keyframes)
+      times.push_back(key.time);
+    const std::vector<double> halved = clamped_cubic_knots(refine_breakpoints(times, 2));
+    for (bool refined : {false, true}) {
+      const std::vector<double>& knots = refined ? halved : coarse.knots;
+      const Trajectory<double> fitted = refit_trajectory(coarse, knots);
+      EXPECT_EQ(fitted.knots, knots);
+      ASSERT_EQ(fitted.segment_count(), coarse.segment_count());
+      double worst_root = 0.0, worst_angle = 0.0;
+      for (int i = 0; i <= 500; ++i) {
+        const double t = motion.flight_time() * i / 500;
+        worst_root = std::max(worst_root, (fitted.root_translation.evaluate(t).position -
+                                           coarse.root_translation.evaluate(t).position)
+                                              .norm());
+        for (int s = 0; s < model.size(); ++s)
+          worst_angle =
+              std::max(worst_angle, rotation_angle_between(fitted.rotations[s].evaluate(t).q,
+                                                           coarse.rotations[s].evaluate(t).q));
+      }
+      SCOPED_TRACE(motion.name + (refined ? " on halved spans" : " on its own knots"));
+      EXPECT_LT(worst_root, 1e-8);
+      EXPECT_LT(worst_angle * kDegreesPerRadian, refined ? 1.0 : 1e-3);
     }
   }
 }
