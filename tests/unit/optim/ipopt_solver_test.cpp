@@ -198,7 +198,8 @@ class Hs71 : public DenseNlp {
 /// lower bound (1.3), x3 free, the sum constraint active; f* = ½(1 + 1 + 0.09 + 4) = 3.045.
 class BoundedQp : public DenseNlp {
  public:
-  BoundedQp() : DenseNlp({0, 0, 0, 0}, {1, 1, 1, 1}, {-kUnbounded}, {2.5}, {0.5, 0.5, 0.5, 0.5}) {}
+  explicit BoundedQp(std::vector<double> start = {0.5, 0.5, 0.5, 0.5})
+      : DenseNlp({0, 0, 0, 0}, {1, 1, 1, 1}, {-kUnbounded}, {2.5}, {std::move(start)}) {}
   double f(const double* x) const override {
     double sum = 0.0;
     for (int i = 0; i < 4; ++i)
@@ -394,6 +395,55 @@ TEST(IpoptSolver, SolvesABoundedQpOnItsKnownActiveSet) {
   for (double v : s.report.x) {
     EXPECT_GE(v, 0.0);
     EXPECT_LE(v, 1.0);
+  }
+}
+
+/// Hock–Schittkowski 71 from a given point.
+class Hs71From : public Hs71 {
+ public:
+  explicit Hs71From(std::vector<double> start) : start_(std::move(start)) {}
+  void initial_point(double* x) const override { std::copy(start_.begin(), start_.end(), x); }
+
+ private:
+  std::vector<double> start_;
+};
+
+TEST(IpoptSolver, AWarmStartBeginsWhereItIsTold) {
+  // From 1e-5 or less inside active bounds (the QP's x1, x2, x4; HS71's x1 = 1): a cold start
+  // pushes x at least 1e-2 off its bounds before the first iterate (Ipopt's bound_push) and
+  // walks back; a warm start (SolverOptions::warm_start) begins at the given point. Both reach
+  // the known optimum. (Iteration counts are not compared: on these small problems they are
+  // within one of each other either way.)
+  for (bool warm : {false, true}) {
+    SCOPED_TRACE(warm ? "warm" : "cold");
+    SolverOptions options;
+    options.objective_change_tolerance = 0;
+    options.warm_start = warm;
+
+    const std::vector<double> near = {1 - 1e-5, 1e-5, 0.5, 1 - 1e-5};
+    BoundedQp qp(near);
+    const Solve q = solve(qp, options);
+    ASSERT_TRUE(q.report.solved) << q.report.status;
+    double moved = 0.0;
+    for (int i = 0; i < 4; ++i) {
+      EXPECT_NEAR(q.report.x[i], BoundedQp::kOptimum[i], 1e-6) << i;
+      moved = std::max(moved, std::abs(qp.iterates.front().x[i] - near[i]));
+    }
+    if (warm) {
+      EXPECT_LT(moved, 1e-5);
+    } else {
+      EXPECT_GT(moved, 5e-3);
+    }
+
+    Hs71From hs71({1 + 1e-6, 4.743, 3.821, 1.3794});
+    const Solve h = solve(hs71, options);
+    ASSERT_TRUE(h.report.solved) << h.report.status;
+    EXPECT_NEAR(h.report.objective, Hs71::kObjective, 1e-6);
+    if (warm) {
+      EXPECT_LT(hs71.iterates.front().x[0] - 1.0, 1e-5);
+    } else {
+      EXPECT_GT(hs71.iterates.front().x[0] - 1.0, 5e-3);
+    }
   }
 }
 
