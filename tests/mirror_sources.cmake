@@ -10,9 +10,6 @@ set(covered_elsewhere
     "optim/nlp=the interface, whose implementations are tested (unit/optim/ipopt_solver_test.cpp solves analytic ones)"
     "optim/terms/objective_term=the terms' interface, exercised by every unit/optim/terms/*_term_test.cpp"
     "optim/terms/constraint_block=the blocks' interface, exercised by every unit/optim/terms/*_block_test.cpp"
-    "capture/capture_import=whole imports: integration/capture_import_test.cpp, integration/real_captures_test.cpp"
-    "capture/model_clip=motion to clip and back: integration/capture_import_test.cpp, unit/capture/retarget_test.cpp"
-    "formats/capture_files=import folders and BVH export: integration/capture_import_test.cpp, cli/capture_cli_test.cpp"
     "studies/paper_report=runs every paper experiment: tests/paper/paper_report_test.cpp (label paper)")
 
 set(problems "")
