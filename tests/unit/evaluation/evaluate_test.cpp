@@ -34,9 +34,14 @@ TEST(EvaluateMotion, SamplesTheInterpolationUniformlyAndSummarisesTheSamples) {
   EXPECT_EQ(e.samples.size(), 41u);
   EXPECT_EQ(e.samples.back().time, motion.flight_time());
   EXPECT_EQ(e.trajectory.knots, interpolate_keyframes(motion, model, options.interpolation).knots);
-  const ForceMetrics m = force_metrics(e.samples);
-  EXPECT_EQ(e.metrics.objective, m.objective);
-  EXPECT_EQ(e.metrics.max_force_N, m.max_force_N);
+  // The figures are the dense check's on the evaluated trajectory (force_metrics_test checks
+  // the dense check itself), not the coarser samples'.
+  const DenseCheck check = dense_check(model, e.trajectory, 41);
+  EXPECT_EQ(e.check.points, check.points);
+  EXPECT_EQ(e.metrics.objective, check.metrics.objective);
+  EXPECT_EQ(e.metrics.max_force_N, check.metrics.max_force_N);
+  EXPECT_EQ(e.check.metrics.objective, e.metrics.objective);
+  EXPECT_NEAR(e.metrics.objective, force_metrics(e.samples).objective, 0.05 * e.metrics.objective);
   ASSERT_EQ(e.keyframe_times.size(), motion.keyframes.size());
   for (std::size_t i = 0; i < motion.keyframes.size(); ++i)
     EXPECT_EQ(e.keyframe_times[i], motion.keyframes[i].time);

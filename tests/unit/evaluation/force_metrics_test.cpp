@@ -1,14 +1,19 @@
 // The root-force figures (evaluation/force_metrics.h) on wrenches whose integrals are known in
 // closed form: constant wrenches, and squared forces linear in time, which the trapezoidal rule
-// integrates exactly on any grid.
+// integrates exactly on any grid. The dense check against the trapezoidal rule on a grid a
+// hundred times finer, on interpolated motions with uneven knot spans.
 
 #include "saltus/evaluation/force_metrics.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numeric>
 #include <random>
 #include <vector>
+
+#include "saltus/motion/interpolate.h"
+#include "support/test_motions.h"
 
 namespace saltus {
 namespace {
@@ -69,6 +74,45 @@ TEST(ForceMetrics, FewerThanTwoSamplesSpanNoTime) {
     EXPECT_EQ(m.objective, 0.0);
     EXPECT_EQ(m.avg_root_force, 0.0);
     EXPECT_EQ(m.max_force_N, 0.0);
+  }
+}
+
+TEST(DenseCheck, IsTheIntegralOfTheRootWrenchSpanBySpan) {
+  const BodyModel model = test::bundled_model();
+  for (const Motion& motion : {test::pike_motion(model), test::tuck_motion(model)}) {
+    SCOPED_TRACE(motion.name);
+    InterpolationOptions options;
+    options.subdivisions.assign(motion.keyframes.size() - 1, 1);
+    options.subdivisions[1] = 3;
+    const Trajectory<double> trajectory = interpolate_keyframes(motion, model, options);
+    const DenseCheck check = dense_check(model, trajectory, 200);
+    const ForceMetrics fine = force_metrics(
+        evaluate_trajectory(model, trajectory, uniform_times(trajectory.duration(), 20001)));
+    // Simpson per span against a fine trapezoid (error ~h²·|F²''|, here well below 1e-6).
+    EXPECT_NEAR(check.metrics.objective, fine.objective, 1e-6 * fine.objective);
+    EXPECT_NEAR(check.metrics.rms_force_N, fine.rms_force_N, 1e-6 * fine.rms_force_N);
+    EXPECT_NEAR(check.metrics.rms_moment_Nm, fine.rms_moment_Nm, 1e-6 * fine.rms_moment_Nm);
+    EXPECT_NEAR(check.metrics.avg_root_force, std::sqrt(check.metrics.objective / 6), 1e-12);
+    // Peaks over points at most kCheckMaxSpacing apart: within a hair of the fine grid's.
+    EXPECT_LE(check.metrics.max_force_N, fine.max_force_N * (1 + 1e-9));
+    EXPECT_GT(check.metrics.max_force_N, fine.max_force_N * (1 - 1e-3));
+    // One entry per knot span, the spans tile the flight, and their integrals make up J·T.
+    const int spans = static_cast<int>(trajectory.knots.size()) - 7;
+    ASSERT_EQ(static_cast<int>(check.span_integral.size()), spans);
+    EXPECT_EQ(check.span_start.front(), 0.0);
+    EXPECT_EQ(check.span_end.back(), trajectory.duration());
+    for (int s = 0; s < spans; ++s) {
+      EXPECT_EQ(check.span_start[s], trajectory.knots[3 + s]);
+      EXPECT_EQ(check.span_end[s], trajectory.knots[4 + s]);
+      EXPECT_GT(check.span_integral[s], 0.0);
+    }
+    const double total =
+        std::accumulate(check.span_integral.begin(), check.span_integral.end(), 0.0);
+    EXPECT_NEAR(total / trajectory.duration(), check.metrics.objective,
+                1e-12 * check.metrics.objective);
+    EXPECT_GE(check.points, 200);
+    EXPECT_GE(check.points, spans * (kCheckPointsPerSpan + 1));
+    EXPECT_GE(check.points, static_cast<int>(trajectory.duration() / kCheckMaxSpacing));
   }
 }
 

@@ -1,6 +1,7 @@
-// Result folders (formats/result_json.h): result.json's figures agree with the trajectory.csv
-// written beside it — J, RMS and peak root force recomputed here from the CSV's root wrench columns
-// by the trapezoidal rule — and the simulation's result names its momentum and landing.
+// Result folders (formats/result_json.h): result.json's figures are the evaluation's and agree
+// with the trajectory.csv written beside it — J, RMS and peak root force recomputed here from the
+// CSV's root wrench columns by the trapezoidal rule, to the coarser grid's accuracy — and the
+// simulation's result names its momentum and landing.
 
 #include "saltus/formats/result_json.h"
 
@@ -56,10 +57,16 @@ TEST(ResultJson, EvaluationFiguresAgreeWithTheTrajectoryCsv) {
   }
   const double duration = csv.rows.back()[t];
   const nlohmann::json& before = result["before"];
+  // The figures are the evaluation's dense check, written to the last digit; the CSV's 57
+  // samples integrate the same wrench more coarsely, so agree to a few per cent.
+  EXPECT_EQ(before["objective"].get<double>(), evaluation.metrics.objective);
+  EXPECT_EQ(before["rms_force_N"].get<double>(), evaluation.metrics.rms_force_N);
+  EXPECT_EQ(before["max_force_N"].get<double>(), evaluation.metrics.max_force_N);
   EXPECT_NEAR(before["objective"].get<double>(), (force + moment) / duration,
-              1e-12 * (force + moment) / duration);
-  EXPECT_NEAR(before["rms_force_N"].get<double>(), std::sqrt(force / duration), 1e-9);
-  EXPECT_NEAR(before["max_force_N"].get<double>(), peak, 1e-9);
+              0.03 * (force + moment) / duration);
+  EXPECT_NEAR(before["rms_force_N"].get<double>(), std::sqrt(force / duration),
+              0.03 * std::sqrt(force / duration));
+  EXPECT_NEAR(before["max_force_N"].get<double>(), peak, 0.03 * peak);
   EXPECT_NEAR(before["avg_root_force"].get<double>(),
               std::sqrt(before["objective"].get<double>() / 6), 1e-12);
   std::vector<double> times;
