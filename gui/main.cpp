@@ -11,6 +11,7 @@
 
 #include "app/batch.h"
 #include "app/main_window.h"
+#include "app/run_controller.h"
 #include "core/command_line.h"
 
 int main(int argc, char** argv) {
@@ -48,10 +49,10 @@ int main(int argc, char** argv) {
     if (command_line.stage) window.set_stage(*command_line.stage);
     if (command_line.time) window.seek(*command_line.time);
     if (command_line.optimize && window.document().loaded()) {
-      saltus::gui::OptimizeSettings settings = window.optimize_settings();
+      saltus::gui::OptimizeSettings settings = window.runs().settings();
       if (command_line.max_iterations) settings.max_iterations = *command_line.max_iterations;
       if (command_line.samples) settings.samples = *command_line.samples;
-      window.start_optimization(settings);
+      window.runs().start(settings);
     }
   }
   return app.exec();

@@ -8,7 +8,10 @@
 #include <exception>
 #include <filesystem>
 
+#include "app/file_controller.h"
 #include "app/main_window.h"
+#include "app/run_controller.h"
+#include "core/figures.h"
 #include "core/result_folder.h"
 #include "saltus/base/input_error.h"
 #include "scene/chart_view.h"
@@ -41,13 +44,13 @@ int export_figures(const CommandLine& c) {
   }
   try {
     std::filesystem::create_directories(c.export_figures);
-    for (const Figure& figure : paper_figures(folders)) {
+    for (const Figure& figure : result_figures(folders)) {
       const std::string path =
           (std::filesystem::path(c.export_figures) / figure.file_name).string();
       write_chart_png(figure.chart, path, kFigureWidth, kFigureHeight, 15);
       std::printf("wrote %s\n", path.c_str());
     }
-    for (const FigureGrid& figure : mass_study_figures(mass_folders)) {
+    for (const FigureGrid& figure : mass_study_load_figures(mass_folders)) {
       const std::string path =
           (std::filesystem::path(c.export_figures) / figure.file_name).string();
       write_chart_grid_png(figure.panels, figure.columns, path, kPanelWidth, kPanelHeight, 14);
@@ -85,15 +88,20 @@ int show_motion(const CommandLine& c) {
     OptimizeSettings settings;
     if (c.max_iterations) settings.max_iterations = *c.max_iterations;
     if (c.samples) settings.samples = *c.samples;
-    if (!window.start_optimization(settings, &error)) {
+    if (!window.runs().start(settings, &error)) {
       std::fprintf(stderr, "saltus-gui: error: %s\n", qPrintable(error));
       return kExitBadInput;
     }
-    window.wait_for_optimization(kOptimizationTimeoutMs);
-    if (!window.document().has_optimization()) {
-      std::fprintf(stderr, "saltus-gui: error: the optimisation failed\n");
+    window.runs().wait(kOptimizationTimeoutMs);
+    const RunList& runs = window.workspace().runs();
+    if (runs.empty() || !runs.showable(runs.size() - 1)) {
+      std::fprintf(stderr, "saltus-gui: error: the optimisation failed%s%s\n",
+                   runs.empty() ? "" : ": ", runs.empty() ? "" : runs.at(0).error.c_str());
       return kExitFailure;
     }
+    // The one run batch mode asked for is shown whatever its status (interactively a run that
+    // did not solve is shown only when nothing better exists).
+    window.runs().show_run(runs.size() - 1);
     const OptimizationResult& r = window.document().optimization();
     std::printf("optimised: %s after %d iterations, average root force %.4g N -> %.4g N\n",
                 r.solve.status.c_str(), r.solve.iterations, r.before.metrics.avg_root_force,
@@ -104,21 +112,21 @@ int show_motion(const CommandLine& c) {
   QApplication::processEvents();
 
   if (!c.save_result.empty()) {
-    if (!window.save_result(QString::fromStdString(c.save_result), &error)) {
+    if (!window.files().save_result(QString::fromStdString(c.save_result), &error)) {
       std::fprintf(stderr, "saltus-gui: error: %s\n", qPrintable(error));
       return kExitBadInput;
     }
     std::printf("wrote %s\n", c.save_result.c_str());
   }
   if (!c.screenshot_view.empty()) {
-    if (!window.export_view_png(QString::fromStdString(c.screenshot_view), &error)) {
+    if (!window.files().export_view_png(QString::fromStdString(c.screenshot_view), &error)) {
       std::fprintf(stderr, "saltus-gui: error: %s\n", qPrintable(error));
       return kExitFailure;
     }
     std::printf("wrote %s\n", c.screenshot_view.c_str());
   }
   if (!c.screenshot.empty()) {
-    if (!window.export_window_png(QString::fromStdString(c.screenshot), &error)) {
+    if (!window.files().export_window_png(QString::fromStdString(c.screenshot), &error)) {
       std::fprintf(stderr, "saltus-gui: error: %s\n", qPrintable(error));
       return kExitFailure;
     }
