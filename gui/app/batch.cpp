@@ -8,6 +8,8 @@
 #include <exception>
 #include <filesystem>
 
+#include "app/compare_controller.h"
+#include "app/compare_window.h"
 #include "app/file_controller.h"
 #include "app/main_window.h"
 #include "app/run_controller.h"
@@ -141,6 +143,41 @@ int show_motion(const CommandLine& c) {
 }
 
 }  // namespace
+
+int write_compare_screenshot(MainWindow& window, const QString& other, double time,
+                             const QSize& size, const QString& png) {
+  QString error;
+  if (!window.compare().compare_with(other, &error)) {
+    std::fprintf(stderr, "saltus-gui: error: %s\n", qPrintable(error));
+    return kExitBadInput;
+  }
+  // A model comparison optimises its second run in the background first.
+  window.compare().wait(kOptimizationTimeoutMs);
+  CompareWindow* compare = window.compare().window();
+  compare->setAttribute(Qt::WA_DontShowOnScreen);
+  compare->resize(size);
+  compare->show();
+  compare->seek(time);
+  QApplication::processEvents();
+  if (!compare->grab_window().save(png, "PNG")) {
+    std::fprintf(stderr, "saltus-gui: error: %s: cannot write the image\n", qPrintable(png));
+    return kExitFailure;
+  }
+  std::printf("wrote %s\n", qPrintable(png));
+  return 0;
+}
+
+int write_video(MainWindow& window, const QString& path, const VideoOptions& options) {
+  QString error;
+  VideoPlan plan;
+  if (!window.video().export_video(path, options, &error, &plan)) {
+    std::fprintf(stderr, "saltus-gui: error: %s\n", qPrintable(error));
+    return video_format_for(path.toStdString()) ? kExitFailure : kExitBadInput;
+  }
+  std::printf("wrote %s (%d frames, %.2f s at %g frames per second)\n", qPrintable(path),
+              plan.frames(), plan.video_seconds(), plan.fps);
+  return 0;
+}
 
 int run_batch(const CommandLine& c) {
   if (!c.export_figures.empty()) {

@@ -132,7 +132,12 @@ EditController::EditController(AppContext& context, RunController& runs, QObject
   undo_ = stack_->createUndoAction(this, tr("&Undo"));
   redo_ = stack_->createRedoAction(this, tr("&Redo"));
   undo_->setShortcut(QKeySequence::Undo);
-  redo_->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence::Redo});
+  // Ctrl+Shift+Z everywhere, and the platform's own (Ctrl+Y on some); each sequence once, or
+  // Qt finds the shortcut ambiguous and triggers nothing.
+  QList<QKeySequence> redo_keys = {QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z)};
+  for (const QKeySequence& key : QKeySequence::keyBindings(QKeySequence::Redo))
+    if (!redo_keys.contains(key)) redo_keys.append(key);
+  redo_->setShortcuts(redo_keys);
 
   keyframe_panel_ = new KeyframePanel(context_.window());
   model_panel_ = new ModelPanel(context_.window());

@@ -63,6 +63,8 @@ class MainWindow : public QMainWindow {
   void set_camera(CameraPreset preset);
   void set_scene_options(const SceneOptions& options);
 
+  /// The 3D view itself (focus, key presses in tests).
+  SceneWidget* view_widget() const { return scene_; }
   /// The 3D view's current picture.
   QImage grab_view();
   /// Pins the 3D view to a size in pixels (pictures comparable across layouts); an empty size

@@ -49,6 +49,14 @@ OptimizePanel::OptimizePanel(QWidget* parent) : QWidget(parent) {
       tr("Soft limit on how far a joint turns relative to its parent between two spline control\n"
          "points (or the interpolation's own turn where larger). Without it, light limbs can\n"
          "spin between keyframes at little cost in root force."));
+  // Named for tests and style sheets.
+  formulation_->setObjectName("formulation");
+  epsilon_->setObjectName("epsilon");
+  timing_->setObjectName("timing");
+  knots_->setObjectName("knots_per_interval");
+  samples_->setObjectName("samples");
+  iterations_->setObjectName("max_iterations");
+  joint_turn_->setObjectName("max_joint_turn");
   // A typed value counts when it is complete (Enter or leaving the box): one undo step each.
   for (QAbstractSpinBox* box : std::initializer_list<QAbstractSpinBox*>{epsilon_, knots_, samples_,
                                                                         iterations_, joint_turn_})
@@ -186,6 +194,10 @@ void OptimizePanel::show_progress(const ProgressInfo& progress) {
 void OptimizePanel::show_message(const QString& message) {
   status_->setText(message);
   if (!running_) bar_->setFormat(message.section(':', 0, 0));
+}
+
+QString OptimizePanel::message() const {
+  return status_->text();
 }
 
 void OptimizePanel::show_runs(const std::vector<std::string>& labels, int shown) {

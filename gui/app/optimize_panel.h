@@ -38,6 +38,8 @@ class OptimizePanel : public QWidget {
   void show_progress(const ProgressInfo& progress);
   /// Ends the progress display with a message (finished, cancelled, failed).
   void show_message(const QString& message);
+  /// The message shown under the progress bar.
+  QString message() const;
   void show_result(const std::vector<ResultRow>& rows);
   void clear_result();
   /// The run list: one line per run, `shown` highlighted (-1: none, the interpolation).

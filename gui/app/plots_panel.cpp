@@ -49,7 +49,7 @@ PlotsPanel::PlotsPanel(AppContext& context, QWidget* parent)
     axes_[static_cast<std::size_t>(a)]->setChecked(true);
     switches->addWidget(axes_[static_cast<std::size_t>(a)]);
   }
-  log_scale_ = new QCheckBox(tr("Log scale"), root_tab);
+  log_scale_ = new QCheckBox(tr("Log scale for before/after"), root_tab);
   log_scale_->setChecked(true);
   log_scale_->setToolTip(
       tr("A logarithmic axis for |F| and |M|, so that the small residual "

@@ -69,8 +69,8 @@ TeachingPanel::TeachingPanel(AppContext& context, QWidget* parent)
           [this] { refresh_chart(); });
   connect(chart_, &ChartWidget::seek_requested, this, &TeachingPanel::seek_requested);
 
-  layout->addWidget(scroll, 2);
-  layout->addWidget(right, 3);
+  layout->addWidget(scroll, 1);
+  layout->addWidget(right, 1);
   refresh();
 }
 
@@ -98,16 +98,12 @@ void TeachingPanel::refresh() {
                              : (drop > 0 ? tr("ends %1 m lower").arg(num(drop, 2))
                                          : tr("ends %1 m higher").arg(num(-drop, 2)));
   checks_->setText(
-      tr("<b>Is it a real flight?</b> In the air only gravity acts, so:"
-         "<ul>"
-         "<li>the <b>centre of mass</b> stays on the parabola of its take-off: this motion's is "
-         "at most %1 mm off it;</li>"
-         "<li>the <b>angular momentum</b> stays what it was at take-off: it changes by up to "
-         "%2 %;</li>"
-         "<li>the <b>time in the air</b> follows from the take-off: %3 m/s upwards, and the "
-         "centre of mass %4, give %5 s; this motion lasts %6 s.</li>"
-         "</ul>"
-         "The optimiser makes a motion pass these checks (View &gt; After).")
+      tr("<b>Is it a real flight?</b> Only gravity acts in the air, so:"
+         "<br>• the centre of mass stays on its take-off parabola: at most %1 mm off;"
+         "<br>• L stays as at take-off: it changes by up to %2 %;"
+         "<br>• the time in the air follows from the take-off (%3 m/s up; it %4): %5 s, "
+         "this motion %6 s."
+         "<br>The optimiser makes a motion pass these checks (View &gt; After).")
           .arg(num(1000.0 * c.max_com_off_parabola_m, 1))
           .arg(num(c.max_angular_momentum_drift_percent, 1))
           .arg(num(takeoff.com_velocity.y(), 2), ending)
@@ -147,15 +143,13 @@ void TeachingPanel::set_time(double t) {
   const Eigen::Vector3d& l = r.angular_momentum;
   explanation_->setText(
       tr("<b>Why it spins</b> &nbsp; t = %1 s"
-         "<p>Nothing in the air can turn the body, so its <b>angular momentum</b> about the "
-         "centre of mass stays as it was at take-off: <b>L</b> = (%2, %3, %4) kg·m²/s "
-         "(%5 % changed since take-off).</p>"
-         "<p>The <b>moment of inertia</b> about the somersault axis depends on the shape: "
-         "<b>I</b> = %6 kg·m² now; it ranges from %7 (most compact) to %8 (most stretched) in "
-         "this flight.</p>"
-         "<p>So the body turns at <b>ω = I⁻¹·L</b>: a somersault rate of %9 rad/s, %10 turns "
-         "per second. Halving I (a tuck) doubles the spin.</p>"
-         "<p>So far: <b>%11 somersaults %12</b>, %13 twists.</p>")
+         "<br>• <b>L</b>, the angular momentum about the centre of mass, cannot change in the "
+         "air: (%2, %3, %4) kg·m²/s, %5 % off its take-off value."
+         "<br>• <b>I</b>, the moment of inertia about the somersault axis, changes with the "
+         "shape: %6 kg·m² now, %7 to %8 in this flight."
+         "<br>• So the body turns at <b>ω = I⁻¹·L</b>: %9 rad/s, %10 turns a second. Half the "
+         "inertia (a tuck), twice the spin."
+         "<br>• So far: <b>%11 somersaults %12</b>, %13 twists.")
           .arg(num(t, 3))
           .arg(num(l.x(), 1), num(l.y(), 1), num(l.z(), 1))
           .arg(num(drift_now, 1))

@@ -27,6 +27,10 @@ AxisRange y_range(const ChartSpec& chart, bool right_axis) {
   return {lo - pad, hi + pad};
 }
 
+namespace {
+constexpr double kMaxLogDecades = 4.0;
+}  // namespace
+
 AxisRange log_y_range(const ChartSpec& chart) {
   double lo = std::numeric_limits<double>::infinity();
   double hi = 0.0;
@@ -39,6 +43,9 @@ AxisRange log_y_range(const ChartSpec& chart) {
     }
   }
   if (!(hi > 0)) return {1.0, 10.0};
+  // At most kMaxDecades below the largest value: a curve that touches zero must not spend the
+  // axis on its dips.
+  lo = std::max(lo, hi * std::pow(10.0, -kMaxLogDecades));
   // A little room above the largest value and below the smallest, in log space (5 %), and at
   // least one decade so that a flat curve still gets an axis with a label.
   double log_lo = std::log10(lo), log_hi = std::log10(hi);

@@ -59,8 +59,9 @@ struct AxisRange {
   double min = 0.0, max = 1.0;
 };
 AxisRange y_range(const ChartSpec& chart, bool right_axis);
-/// The left axis for a logarithmic scale: the positive values' range widened to whole powers of
-/// ten where it is close to one (at least one decade); {1, 10} when nothing is positive.
+/// The left axis for a logarithmic scale: the positive values' range, at most four decades
+/// below the largest value and at least one decade wide, padded 5 % in log space; {1, 10} when
+/// nothing is positive.
 AxisRange log_y_range(const ChartSpec& chart);
 /// Smallest and largest x over all lines and markers (unpadded); {0, 1} when empty.
 AxisRange x_range(const ChartSpec& chart);

@@ -8,12 +8,17 @@
 #include "core/run_list.h"
 #include "saltus/base/json_reader.h"
 #include "saltus/body/segment_names.h"
+#include "saltus/evaluation/evaluate.h"
 #include "saltus/evaluation/residual_measures.h"
 #include "saltus/formats/model_file.h"
+#include "saltus/formats/motion_file.h"
 
 namespace saltus::gui {
 
 namespace {
+
+/// Samples of the curves in a figure (as the app's plots, Document's kPlotSamples).
+constexpr int kFigureSamples = 601;
 
 std::string number(const char* format, double value) {
   char buffer[64];
@@ -50,6 +55,41 @@ double folder_body_weight(const ResultFolder& f) {
   }
 }
 
+/// The series of a motion file evaluated on the dense plot grid with the folder's model.
+WrenchSeries dense_series(const std::string& motion, const std::string& model, int knots) {
+  const MotionFile file = load_motion_file(motion, model);
+  EvaluateOptions options;
+  options.samples = kFigureSamples;
+  options.interpolation.knots_per_interval = knots;
+  return root_wrench_series(evaluate_motion(file.motion, file.model, options).samples);
+}
+
+/// Smooth curves where the motions can be evaluated again exactly: "after" from
+/// optimized.motion.json (its stored spline is the optimised motion), "before" from the motion
+/// file result.json names (as `saltus optimize` interpolated it, with its knots). Where a file
+/// cannot be read, the CSV's samples stay (true values, only coarser).
+void densify(ResultFolder& f) {
+  namespace fs = std::filesystem;
+  const fs::path folder(f.path);
+  const std::string model = (folder / "model.json").string();
+  try {
+    f.after = dense_series((folder / "optimized.motion.json").string(), model, 1);
+  } catch (const std::exception&) {
+  }
+  try {
+    const nlohmann::json result = read_json_file((folder / "result.json").string());
+    const fs::path motion = result.at("motion_file").get<std::string>();
+    const int knots = result.value("knots_per_interval", 1);
+    // Relative to where `saltus optimize` ran: try the current folder, then the folder's parent.
+    for (const fs::path& candidate : {motion, folder.parent_path() / motion}) {
+      if (!fs::exists(candidate)) continue;
+      f.before = dense_series(candidate.string(), model, knots);
+      break;
+    }
+  } catch (const std::exception&) {
+  }
+}
+
 /// "M1" from "M1-straight-back-somersault" or "M1 straight back somersault".
 std::string first_word(const std::string& name) {
   const std::size_t end = name.find_first_of(" -_");
@@ -82,7 +122,11 @@ std::string figure_stem(const std::string& name) {
 }
 
 ChartSpec titled_figure(ChartSpec chart, const std::string& motion, const std::string& settings) {
-  chart.title += "\n" + motion + (settings.empty() ? "" : " · " + settings);
+  // One line for the motion and the settings when it fits a figure's width, else two.
+  constexpr std::size_t kLineLength = 90;
+  const bool one_line = motion.size() + settings.size() + 3 <= kLineLength;
+  chart.title += "\n" + motion;
+  if (!settings.empty()) chart.title += (one_line ? " · " : "\n") + settings;
   return chart;
 }
 
@@ -95,7 +139,10 @@ std::string folder_settings(const ResultFolder& f) {
   return out;
 }
 
-std::vector<Figure> result_figures(const std::vector<ResultFolder>& folders) {
+std::vector<Figure> result_figures(const std::vector<ResultFolder>& read) {
+  std::vector<ResultFolder> folders = read;
+  for (ResultFolder& f : folders)
+    densify(f);
   std::vector<Figure> out;
   StemSet stems;
   for (const ResultFolder& f : folders) {

@@ -19,14 +19,17 @@ namespace saltus::gui {
 /// A file-safe stem of a name ("M1 straight back somersault" -> "M1_straight_back_somersault").
 std::string figure_stem(const std::string& name);
 
-/// The chart with its title on the first line and "<motion> · <settings>" on a second one
-/// (`settings` may be empty).
+/// The chart with its title on the first line and "<motion> · <settings>" on a second one, or
+/// the motion and the settings on a line each when that is too long (`settings` may be
+/// empty).
 ChartSpec titled_figure(ChartSpec chart, const std::string& motion, const std::string& settings);
 
 /// One line of a result folder's settings: "relaxed, K = 1, 101 samples · solved in 25
 /// iterations".
 std::string folder_settings(const ResultFolder& folder);
 
+/// Curves are drawn from a dense grid where the folder's motions can be evaluated again (its
+/// optimized.motion.json, and the motion file result.json names), else from its CSVs.
 /// For each folder <name>_root_force.png (|F|, log axis, % of body weight when the folder's
 /// model.json reads), <name>_root_moment.png (|M|), <name>_root_force_components.png,
 /// <name>_root_moment_components.png and <name>_keyframe_times.png; then

@@ -165,6 +165,9 @@ ChartSpec root_chart(const RootChartStyle& style, const WrenchSeries& before,
                      const std::vector<double>& keyframes_after) {
   ChartSpec chart = root_chart_frame(style);
   const bool comparing = after != nullptr;
+  // The log axis is there to show "after" beside a far larger "before"; a lone curve reads
+  // better on a linear one (its dips to zero would fill the log axis with spikes).
+  chart.log_y = chart.log_y && comparing;
   const int first = style.moment ? 3 : 0;
   for (int stage = 0; stage < 2; ++stage) {
     const WrenchSeries* series = stage == 0 ? &before : after;

@@ -68,7 +68,8 @@ struct RootChartStyle {
   bool components = false;  ///< x, y, z components instead of the resultant
   std::array<bool, 3> axes{true, true, true};  ///< components shown (with `components`)
   /// The resultant on a logarithmic axis, so that an "after" curve 100 times smaller than
-  /// "before" still shows its shape (ignored with `components`, which change sign).
+  /// "before" still shows its shape (only with an "after"; ignored with `components`, which
+  /// change sign).
   bool log_scale = false;
   /// > 0: a right-hand axis in % of this body weight (N), for force charts.
   double body_weight_N = 0.0;

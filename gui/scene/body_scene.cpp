@@ -160,12 +160,21 @@ struct BodyScene::Impl {
                       has_doc && video, inset_shown);
   }
 
+  /// "1 m = 50 N" kept on one line when the legend wraps (no-break spaces).
+  static std::string unbroken(std::string text) {
+    std::string out;
+    for (char c : text)
+      out += c == ' ' ? std::string("\u00a0") : std::string(1, c);
+    return out;
+  }
+
   std::string legend_text() const {
-    std::string arrows = "Arrows at the yellow CoM: force " + glyphs.force_scale().legend("N") +
-                         ", moment (two heads) " + glyphs.moment_scale().legend("N·m") +
+    std::string arrows = "Arrows at the yellow CoM: force " +
+                         unbroken(glyphs.force_scale().legend("N")) + ", moment (two heads) " +
+                         unbroken(glyphs.moment_scale().legend("N·m")) +
                          "; green small, red full scale.";
     if (options.joint_arrows)
-      arrows += " At the joints: joint forces, " + glyphs.joint_scale().legend("N") + ".";
+      arrows += " At the joints: joint forces, " + unbroken(glyphs.joint_scale().legend("N")) + ".";
     // As many characters a line as the view's width holds at the legend's text size.
     const int* size = renderer->GetSize();
     const std::size_t width =

@@ -147,7 +147,7 @@ struct ChartView::Impl {
       vtkPlot* plot = chart->AddPlot(vtkChart::LINE);
       plot->SetInputData(table, 0, 1);
       plot->SetColor(marker.colour.r, marker.colour.g, marker.colour.b);
-      plot->SetWidth(marker.dashed ? 1.0f : 1.5f);
+      plot->SetWidth(1.0f);
       if (marker.dashed) plot->GetPen()->SetLineType(vtkPen::DOT_LINE);
       plot->SetLabel(marker.label);
       plot->SetLegendVisibility(!marker.label.empty());

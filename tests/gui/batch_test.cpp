@@ -62,6 +62,7 @@ TEST(GuiBatch, ExportsPaperFiguresFromCliOutputFolders) {
   ASSERT_EQ(run.status, 0) << run.output;
   for (const char* file :
        {"relaxed_root_force.png", "relaxed_root_moment.png", "relaxed_keyframe_times.png",
+        "relaxed_root_force_components.png", "relaxed_root_moment_components.png",
         "fixed-times_root_force.png", "fixed-times_root_moment.png",
         "fixed-times_keyframe_times.png", "average_root_force.png"})
     expect_sane_png((dir.path() / "figures" / file).string(), 1200, 600);
@@ -88,6 +89,17 @@ TEST(GuiBatch, ExportsTheMassStudyLoadsFigureNextToOptimizeFigures) {
        {"relaxed_root_force.png", "relaxed_root_moment.png", "average_root_force.png"})
     expect_sane_png((dir.path() / "figures" / file).string(), 1200, 600);
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "figures" / "mass-M1_root_force.png"));
+}
+
+TEST(GuiBatch, WithoutADisplayItSaysToUseXvfbRunAndDoesNotAbort) {
+  // No DISPLAY at all, and a DISPLAY with no X server behind it (Qt would abort, status 134).
+  for (const std::string& env : {std::string("env -u DISPLAY -u WAYLAND_DISPLAY "),
+                                 std::string("env -u WAYLAND_DISPLAY DISPLAY=:97 ")}) {
+    const saltus::test::CliRun run = saltus::test::run_command(env + SALTUS_GUI_PATH + " '" +
+                                                               test::gui_test_motion_path() + "'");
+    EXPECT_EQ(run.status, 1) << env << run.output;
+    EXPECT_NE(run.output.find("xvfb-run -a saltus-gui"), std::string::npos) << run.output;
+  }
 }
 
 TEST(GuiBatch, BadInputAndUsageExitWithStatus2) {

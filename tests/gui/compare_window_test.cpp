@@ -11,6 +11,7 @@
 #include <fstream>
 
 #include <nlohmann/json.hpp>
+#include "app/batch.h"
 #include "app/compare_controller.h"
 #include "app/compare_window.h"
 #include "app/edit_controller.h"
@@ -159,6 +160,24 @@ TEST_F(CompareWindowTest, ResultFolderAndBadInputShowTheLibrarysMessage) {
   // The window opened before is still there and unchanged.
   ASSERT_NE(window_->compare().window(), nullptr);
   EXPECT_EQ(window_->compare().window()->run(1).label, "relaxed (optimised)");
+}
+
+TEST_F(CompareWindowTest, BatchWritesTheCompareWindowAgainstAResultFolder) {
+  const saltus::test::CliRun cli = saltus::test::run_cli(
+      "optimize '" + test::gui_test_motion_path() + "' --max-iter 3 --samples 21 --quiet --out '" +
+      (dir_ / "M1-opt") + "'");
+  ASSERT_TRUE(cli.status == 0 || cli.status == 3) << cli.output;
+  const QString png = QString::fromStdString(dir_ / "compare.png");
+  EXPECT_EQ(write_compare_screenshot(*window_, QString::fromStdString(dir_ / "M1-opt"), 0.8,
+                                     QSize(1400, 900), png),
+            0);
+  const QImage picture(png);
+  ASSERT_EQ(picture.size(), QSize(1400, 900));
+  EXPECT_GT(test::blank_check(picture).distinct_colours, 30);
+  // Bad input: the library's message and status 2.
+  EXPECT_EQ(write_compare_screenshot(*window_, QString::fromStdString(dir_ / "absent"), 0.8,
+                                     QSize(1400, 900), png),
+            2);
 }
 
 }  // namespace

@@ -45,5 +45,11 @@ TEST(ChartSpec, LogRangeIgnoresZerosAndKeepsAtLeastADecade) {
   EXPECT_EQ(empty.max, 10.0);
 }
 
+TEST(ChartSpec, LogRangeStopsFourDecadesBelowTheLargestValue) {
+  const AxisRange r = log_y_range(chart_of({1000.0, 1e-6, 50.0}));
+  EXPECT_GT(r.min, 0.05);  // 1000 × 1e-4 = 0.1, padded
+  EXPECT_LT(r.min, 0.1);
+}
+
 }  // namespace
 }  // namespace saltus::gui

@@ -79,6 +79,11 @@ TEST(Figures, TitlesGoOnTwoLinesAndStemsAreFileSafe) {
   c.title = "Root force |F|";
   EXPECT_EQ(titled_figure(c, "M1", "relaxed").title, "Root force |F|\nM1 · relaxed");
   EXPECT_EQ(titled_figure(c, "M1", "").title, "Root force |F|\nM1");
+  // Too long for one line of a figure (the dive's name and its settings): a line each.
+  const std::string dive = "5 m platform dive: forward 1 1/2 somersaults with 1 1/2 twists";
+  const std::string settings =
+      "relaxed · solved in 54 iterations · average root force 118 → 11.2 N";
+  EXPECT_EQ(titled_figure(c, dive, settings).title, "Root force |F|\n" + dive + "\n" + settings);
   EXPECT_EQ(figure_stem("M1 straight/back"), "M1_straight_back");
 }
 

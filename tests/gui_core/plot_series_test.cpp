@@ -53,6 +53,7 @@ TEST_F(PlotSeriesTest, RootChartShowsTheResultantByDefaultAsThePaperDoes) {
   EXPECT_EQ(alone.x_title, "time (s)");
   // The right axis is the left one in % of body weight.
   EXPECT_EQ(alone.y2_title, "% of body weight");
+  EXPECT_FALSE(alone.log_y);
   EXPECT_DOUBLE_EQ(alone.y2_per_y, 100.0 / 650.0);
   // Optimised times only with an "after"; the first of each kind of marker is in the legend.
   ASSERT_EQ(alone.markers.size(), 2u);
