@@ -175,12 +175,14 @@ void CompareWindow::set_runs(Run first, Run second, bool keep_time) {
         r.description.isEmpty()
             ? (r.stage == Stage::kAfter ? tr("optimised") : tr("interpolated keyframes"))
             : r.description;
+    // The model only when the label does not already name it ("model thighs x1.5").
+    const QString model = QString::fromStdString(r.document->file().model.name);
+    const QString model_part =
+        r.label.contains(model) ? QString() : tr(" · model %1").arg(model.toHtmlEscaped());
     titles_[i]->setText(
-        tr("<span style='color:%1'><b>%2</b></span> — %3 · model %4 · %5 · average root force "
-           "<b>%6 N</b>")
+        tr("<span style='color:%1'><b>%2</b></span> — %3%4 · %5 · average root force <b>%6 N</b>")
             .arg(kTitleColours[i], r.label.toHtmlEscaped(),
-                 QString::fromStdString(r.document->file().motion.name).toHtmlEscaped(),
-                 QString::fromStdString(r.document->file().model.name).toHtmlEscaped(),
+                 QString::fromStdString(r.document->file().motion.name).toHtmlEscaped(), model_part,
                  description.toHtmlEscaped())
             .arg(e.metrics.avg_root_force, 0, 'g', 3));
     duration = compare_duration(duration, r.document->duration());
@@ -301,13 +303,13 @@ double CompareWindow::time() const {
 
 QImage CompareWindow::grab_view(int index) {
   SceneWidget* s = scenes_.at(static_cast<std::size_t>(index));
-  s->render_now();
+  s->render_refined();
   return s->picture();
 }
 
 QImage CompareWindow::grab_window() {
   for (SceneWidget* s : scenes_)
-    s->render_now();
+    s->render_refined();
   return grab().toImage();
 }
 

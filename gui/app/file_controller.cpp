@@ -346,7 +346,7 @@ bool FileController::save_motion(const QString& path, QString* error) {
 }
 
 bool FileController::export_view_png(const QString& path, QString* error) {
-  view_.scene()->render_now();
+  view_.scene()->render_refined();
   const QImage image = view_.scene()->picture();
   if (image.isNull() || !image.save(path, "PNG"))
     return context_.fail(tr("Cannot export"), tr("%1: cannot write the image").arg(path), error);
@@ -355,7 +355,7 @@ bool FileController::export_view_png(const QString& path, QString* error) {
 }
 
 bool FileController::export_window_png(const QString& path, QString* error) {
-  view_.scene()->render_now();
+  view_.scene()->render_refined();
   const QImage image = context_.window()->grab().toImage();
   if (image.isNull() || !image.save(path, "PNG"))
     return context_.fail(tr("Cannot export"), tr("%1: cannot write the image").arg(path), error);

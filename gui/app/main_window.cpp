@@ -232,7 +232,7 @@ void MainWindow::set_scene_options(const SceneOptions& options) {
 }
 
 QImage MainWindow::grab_view() {
-  scene_->render_now();
+  scene_->render_refined();
   return scene_->picture();
 }
 
@@ -247,7 +247,7 @@ void MainWindow::fix_view_size(const QSize& size) {
 }
 
 QImage MainWindow::grab_window() {
-  scene_->render_now();
+  scene_->render_refined();
   return grab().toImage();
 }
 

@@ -26,6 +26,7 @@ AnimationRenderer::AnimationRenderer(int width, int height)
   impl_->window->SetMultiSamples(0);
   impl_->scene.attach(impl_->window);
   impl_->scene.set_video_overlay(true);
+  impl_->scene.set_antialiasing(true);  // a video frame is a still picture: worth the pass
   impl_->frame.resize(static_cast<std::size_t>(width) * height * 3);
 }
 

@@ -81,9 +81,6 @@ struct BodyScene::Impl {
     renderer->GradientBackgroundOn();
     renderer->SetBackground(0.10, 0.12, 0.16);
     renderer->SetBackground2(0.30, 0.36, 0.46);
-    // Anti-aliased edges at the cost of one cheap post-processing pass (multisampling would
-    // cost most of the frame rate in software OpenGL).
-    renderer->UseFXAAOn();
     inset->SetViewport(kInsetViewport[0], kInsetViewport[1], kInsetViewport[2], kInsetViewport[3]);
     inset->SetBackground(0.07, 0.08, 0.11);
     inset->InteractiveOff();
@@ -309,6 +306,14 @@ void BodyScene::set_glyph_typicals(std::optional<GlyphTypicals> typicals) {
   if (!d.document) return;
   d.glyphs.set_scales(typicals ? *typicals : d.document->glyph_typicals(d.stage));
   d.update_time();
+}
+
+void BodyScene::set_antialiasing(bool on) {
+  impl_->renderer->SetUseFXAA(on);
+}
+
+bool BodyScene::antialiasing() const {
+  return impl_->renderer->GetUseFXAA();
 }
 
 void BodyScene::set_video_overlay(bool on) {

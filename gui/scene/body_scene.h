@@ -51,6 +51,11 @@ class BodyScene {
   /// Arrow scales from these typical sizes (compare: both views share the larger run's), or,
   /// with nullopt, from the stage shown (the default).
   void set_glyph_typicals(std::optional<GlyphTypicals> typicals);
+  /// Anti-aliased edges (FXAA, a post-processing pass). Off by default: in software OpenGL the
+  /// pass costs several frames' worth of time, so the app draws moving pictures without it and
+  /// a still picture, an export or a video frame with it.
+  void set_antialiasing(bool on);
+  bool antialiasing() const;
   /// For videos: the time and the residual in a line at the top right instead of the numbers
   /// and the legend.
   void set_video_overlay(bool on);

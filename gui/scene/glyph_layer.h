@@ -20,8 +20,8 @@ namespace saltus::gui::scene {
 class GlyphLayer {
  public:
   /// Full-scale arrow lengths, m.
-  static constexpr double kResidualArrowLength = 1.0;
-  static constexpr double kJointArrowLength = 0.5;
+  static constexpr double kResidualArrowLength = 0.6;
+  static constexpr double kJointArrowLength = 0.4;
 
   GlyphLayer(vtkRenderer* renderer, vtkRenderer* overlay);
 
