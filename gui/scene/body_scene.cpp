@@ -212,9 +212,9 @@ struct BodyScene::Impl {
                                             : "interpolated keyframes (before optimisation)") +
                     printf_string("\nt = %.3f s of %.3f s", time, document->duration()));
     if (video) {
-      texts.set_banner(
-          printf_string("t = %.2f s\nresidual |F| %.1f N (%.1f %% of body weight)\n|M| %.1f N·m",
-                        time, force, percent, moment));
+      // The time is in the title; the residual here, short enough for a small video.
+      texts.set_banner(printf_string("residual |F| %.1f N\n(%.1f %% of body weight)\n|M| %.1f N·m",
+                                     force, percent, moment));
       return;
     }
     const RotationSample r = document->rotation_at(stage, time);

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <QDir>
 #include <QImage>
 #include <QProcess>
 #include <QStandardPaths>
@@ -68,7 +69,7 @@ TEST_F(VideoExportTest, Mp4HasThePlannedFramesAndDuration) {
   VideoOptions options;
   options.fps = 25;
   options.speed = 2.0;  // twice real time: a short file
-  options.size = QSize(320, 240);
+  options.size = QSize(640, 360);
   VideoPlan plan;
   QString error;
   const std::string path = dir_ / "m1.mp4";
@@ -77,8 +78,8 @@ TEST_F(VideoExportTest, Mp4HasThePlannedFramesAndDuration) {
   // 2.04 s at twice real time, 25 frames per second: 26 intervals, the landing included.
   EXPECT_EQ(plan.frames(), 27);
   const Probe p = probe(path);
-  EXPECT_EQ(p.width, 320);
-  EXPECT_EQ(p.height, 240);
+  EXPECT_EQ(p.width, 640);
+  EXPECT_EQ(p.height, 360);
   EXPECT_EQ(p.frames, plan.frames());
   EXPECT_NEAR(p.duration, plan.frames() / 25.0, 1.0 / 25.0 + 1e-3);
 
@@ -88,6 +89,9 @@ TEST_F(VideoExportTest, Mp4HasThePlannedFramesAndDuration) {
   ASSERT_FALSE(last.isNull());
   EXPECT_GT(test::blank_check(first).distinct_colours, 20);
   EXPECT_FALSE(test::compare_images(first, last, 0.03)) << "the body did not move";
+  // Left for a person to look at: a frame from the middle, with the time and residual written.
+  QDir().mkpath(SALTUS_GUI_CANDIDATE_DIR);
+  frame(path, plan.frames() / 2, std::string(SALTUS_GUI_CANDIDATE_DIR) + "/video_frame.png");
 }
 
 TEST_F(VideoExportTest, GifLoopsWithItsOwnFrameRate) {
