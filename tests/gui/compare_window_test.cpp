@@ -109,6 +109,35 @@ TEST_F(CompareWindowTest, SameMotionWithAScaledModelSideBySide) {
   EXPECT_EQ(window_->compare().window(), nullptr);
 }
 
+TEST_F(CompareWindowTest, AnotherModelIsOptimisedLikeTheRunShown) {
+  // The paper's Fig. 8 explored: the optimised motion with the given masses against the
+  // optimised motion with heavier thighs, the joint loads of both.
+  OptimizeSettings s;
+  s.max_iterations = 4;
+  s.samples = 31;
+  QString error;
+  ASSERT_TRUE(window_->runs().start(s, &error)) << error.toStdString();
+  ASSERT_TRUE(window_->runs().wait(300000));
+  ASSERT_TRUE(window_->runs().show_run(0, &error)) << error.toStdString();
+  ASSERT_TRUE(
+      window_->compare().compare_with_model(QString::fromStdString(scaled_model_file()), &error))
+      << error.toStdString();
+  EXPECT_TRUE(window_->compare().optimising());
+  ASSERT_TRUE(window_->compare().wait(300000));
+  CompareWindow* compare = window_->compare().window();
+  ASSERT_NE(compare, nullptr);
+  EXPECT_EQ(compare->run(0).stage, Stage::kAfter);
+  EXPECT_EQ(compare->run(1).stage, Stage::kAfter);
+  ASSERT_TRUE(compare->run(1).document->has_optimization());
+  // With the same settings as the run shown.
+  EXPECT_EQ(compare->run(1).document->optimization_options().nlp.samples, 31);
+  EXPECT_NE(compare->run(1).description.indexOf("optimised"), -1);
+  EXPECT_EQ(compare->run(1).document->file().model.name, "thighs x1.5");
+  compare->show_joint(window_->document().file().model.joint_index("hip_r"));
+  ASSERT_EQ(compare->joint_force_chart().lines.size(), 2u);
+  EXPECT_NE(compare->joint_force_chart().lines[0].y, compare->joint_force_chart().lines[1].y);
+}
+
 TEST_F(CompareWindowTest, BeforeAndAfterOfAnOptimisation) {
   QString error;
   EXPECT_FALSE(window_->compare().compare_before_after(&error));  // nothing optimised yet
