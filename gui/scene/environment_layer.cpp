@@ -52,6 +52,10 @@ vtkSmartPointer<vtkActor> box(const Eigen::Vector3d& centre, const Eigen::Vector
   auto actor = actor_for(mapper_for(cube->GetOutputPort()));
   set_colour(actor, colour);
   set_matrix(actor, pose);
+  // Some light of its own: the camera's light grazes a platform seen from the side, which would
+  // otherwise turn it into a black band.
+  actor->GetProperty()->SetAmbient(0.35);
+  actor->GetProperty()->SetDiffuse(0.7);
   actor->PickableOff();
   return actor;
 }
@@ -135,6 +139,7 @@ void EnvironmentLayer::build(const Apparatus& a, const Eigen::AlignedBox3d& flig
         true);
     const Eigen::Vector3d water_centre(a.takeoff_point.x(), a.landing_height, a.takeoff_point.z());
     auto water = plane(water_centre, kWaterSize, 1, kWaterColour, false);
+    water->GetProperty()->SetAmbient(0.35);
     water->GetProperty()->SetSpecular(0.4);
     water->GetProperty()->SetSpecularPower(40.0);
     add(water, true);
