@@ -40,7 +40,8 @@ class AppContext {
   void status(const QString& message, int milliseconds = 6000) const;
 
   /// Widgets inside which the view's single-key shortcuts (Space, arrows, digits, B/A, R, Esc)
-  /// act: the 3D view, the timeline and the plots. Never an input field, which needs the keys.
+  /// act: the 3D view, the timeline and the charts. Never an input field, a list or a check box,
+  /// which need the keys.
   void add_shortcut_scope(QWidget* widget) { scopes_.push_back(widget); }
   /// Makes `action`'s shortcut act only while the focus is inside one of the scope widgets.
   void scope_shortcut(QAction* action) const;

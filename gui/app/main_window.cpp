@@ -15,6 +15,7 @@
 #include <QUndoView>
 #include <QVBoxLayout>
 
+#include "app/chart_widget.h"
 #include "app/compare_controller.h"
 #include "app/edit_controller.h"
 #include "app/file_controller.h"
@@ -47,7 +48,9 @@ MainWindow::MainWindow(bool interactive, QWidget* parent) : QMainWindow(parent) 
   context_->add_shortcut_scope(scene_);
   context_->add_shortcut_scope(timeline_);
   plots_ = new PlotsPanel(*context_, this);
-  context_->add_shortcut_scope(plots_);
+  // The charts, not the whole plots panel: its check boxes and lists keep their own keys.
+  for (ChartWidget* chart : plots_->charts())
+    context_->add_shortcut_scope(chart);
 
   view_ = new ViewController(*context_, scene_, this);
   playback_ = new PlaybackController(*context_, timeline_, this);

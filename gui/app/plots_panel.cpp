@@ -175,15 +175,17 @@ void PlotsPanel::refresh_joint_chart() {
 }
 
 void PlotsPanel::set_time(double t, bool playing) {
-  for (ChartWidget* chart : {force_chart_, moment_chart_, joint_chart_})
-    chart->set_cursor(t);
+  time_ = t;
+  update_cursors();
   // The words change with the numbers: while playing, only on the tab shown.
   if (!playing || currentWidget() == teaching_) teaching_->set_time(t);
 }
 
 void PlotsPanel::update_cursors() {
-  const Workspace& ws = context_.workspace();
-  (void)ws;
+  // Cheap: the cursors are Qt widgets over the charts, no chart is redrawn.
+  const double t = context_.workspace().loaded() ? time_ : std::nan("");
+  for (ChartWidget* chart : {force_chart_, moment_chart_, joint_chart_})
+    chart->set_cursor(t);
 }
 
 void PlotsPanel::show_joint(int segment) {

@@ -71,6 +71,7 @@ class PlotsPanel : public QTabWidget, public RemembersSettings {
   std::array<QCheckBox*, 3> axes_{};
   QCheckBox* log_scale_ = nullptr;
   QComboBox* joint_combo_ = nullptr;
+  double time_ = 0.0;  ///< where the cursors are, s
 };
 
 }  // namespace saltus::gui

@@ -5,13 +5,16 @@
 #include <gtest/gtest.h>
 
 #include <QApplication>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QSpinBox>
 #include <QTest>
 
+#include "app/chart_widget.h"
 #include "app/main_window.h"
 #include "app/optimize_panel.h"
 #include "app/playback_controller.h"
+#include "app/plots_panel.h"
 #include "app/run_controller.h"
 #include "app/scene_widget.h"
 #include "app/timeline_widget.h"
@@ -66,6 +69,14 @@ TEST_F(ShortcutScopeTest, KeysInTheSamplesBoxStayInTheBox) {
   press(epsilon, Qt::Key_B);
   press(epsilon, Qt::Key_R);
   EXPECT_EQ(window_->view().camera(), CameraPreset::kFollow);
+  // The joint list in the plots: Down picks the next joint, playback stays as it was.
+  window_->plots().setCurrentIndex(1);
+  auto* joints = window_->plots().widget(1)->findChild<QComboBox*>();
+  ASSERT_NE(joints, nullptr);
+  const int joint = joints->currentIndex();
+  press(joints, Qt::Key_Down);
+  EXPECT_EQ(joints->currentIndex(), joint + 1);
+  EXPECT_DOUBLE_EQ(speed(), speed_before);
 }
 
 TEST_F(ShortcutScopeTest, TheSameKeysDrivePlaybackAndCameraInTheView) {
@@ -88,6 +99,10 @@ TEST_F(ShortcutScopeTest, TheSameKeysDrivePlaybackAndCameraInTheView) {
   EXPECT_DOUBLE_EQ(window_->time(), window_->document().duration());
   press(timeline, Qt::Key_Home);
   EXPECT_DOUBLE_EQ(window_->time(), 0.0);
+  // And in a plot.
+  ChartWidget* chart = window_->plots().force_chart();
+  press(chart, Qt::Key_Right);
+  EXPECT_GT(window_->time(), 0.0);
 }
 
 }  // namespace
