@@ -54,8 +54,7 @@ TEST(Apparatus, TheTrampolineSkillLandsWhereItTookOff) {
   // along the small drift of the take-off velocity (0.15, 10, 0.15).
   const Eigen::Vector3d facing =
       e.samples.front().segment_rotation.front() * Eigen::Vector3d::UnitZ();
-  EXPECT_NEAR(a.direction.dot(Eigen::Vector3d(facing.x(), 0, facing.z()).normalized()), 1.0,
-              1e-12);
+  EXPECT_NEAR(a.direction.dot(Eigen::Vector3d(facing.x(), 0, facing.z()).normalized()), 1.0, 1e-12);
   EXPECT_EQ(a.direction.y(), 0.0);
 }
 

@@ -32,7 +32,8 @@ Apparatus apparatus_for(const BodyModel& model, const Takeoff& takeoff,
   out.takeoff_point =
       Eigen::Vector3d(takeoff.com_position.x(), out.takeoff_height, takeoff.com_position.z());
   Eigen::Vector3d horizontal(takeoff.com_velocity.x(), 0.0, takeoff.com_velocity.z());
-  if (horizontal.norm() < 1e-6 && !first.segment_rotation.empty())
+  if ((out.kind == ApparatusKind::kTrampoline || horizontal.norm() < 1e-6) &&
+      !first.segment_rotation.empty())
     horizontal = first.segment_rotation.front() * Eigen::Vector3d::UnitZ();
   horizontal.y() = 0.0;
   if (horizontal.norm() > 1e-9) out.direction = horizontal.normalized();

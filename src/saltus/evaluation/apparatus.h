@@ -25,8 +25,10 @@ struct Apparatus {
   double landing_height = 0.0;
   /// On the take-off surface, under the take-off CoM, m.
   Eigen::Vector3d takeoff_point = Eigen::Vector3d::Zero();
-  /// Horizontal unit vector the athlete leaves along (the take-off velocity's horizontal part;
-  /// the way the body faces at take-off when it goes straight up). The platform lies behind.
+  /// Horizontal unit vector along which the apparatus lies. A dive: the way the athlete leaves
+  /// (the take-off velocity's horizontal part; the platform lies behind it). A trampoline: the
+  /// way the body faces at take-off (athletes face along the bed's long side; their small drift
+  /// says nothing about the bed).
   Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();
 };
 
