@@ -19,8 +19,8 @@ Document::Dense Document::dense_of(const MotionFile& file, const MotionEvaluatio
   Dense out;
   const double duration =
       evaluation.samples.empty() ? file.motion.flight_time() : evaluation.samples.back().time;
-  out.samples =
-      evaluate_trajectory(file.model, evaluation.trajectory, uniform_times(duration, kPlotSamples));
+  out.samples = evaluate_trajectory(file.model, evaluation.trajectory,
+                                    uniform_times(duration, plot_samples_for(duration)));
   out.rotation = rotation_metrics(file.model, out.samples);
   out.checks = saltus::flight_checks(file.motion.takeoff, out.samples);
   return out;

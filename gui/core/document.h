@@ -11,6 +11,7 @@
 
 #include "core/glyph_scale.h"
 #include "core/parabola.h"
+#include "core/plot_series.h"
 #include "saltus/evaluation/evaluate.h"
 #include "saltus/evaluation/flight_checks.h"
 #include "saltus/evaluation/rotation_metrics.h"
@@ -20,10 +21,6 @@ namespace saltus::gui {
 
 /// Which version of the motion: the keyframe interpolation, or the optimised one.
 enum class Stage { kBefore, kAfter };
-
-/// Samples of the dense grid that plots and the teaching view draw from (the evaluation's own
-/// grid, 101 samples by default, is what the optimiser saw; curves drawn from it look jagged).
-inline constexpr int kPlotSamples = 601;
 
 /// Typical sizes of what the arrows show, for their scales (GlyphScale): the 90th percentile
 /// over the samples of a stage (one spike at an end of the flight must not shrink every other

@@ -17,9 +17,6 @@ namespace saltus::gui {
 
 namespace {
 
-/// Samples of the curves in a figure (as the app's plots, Document's kPlotSamples).
-constexpr int kFigureSamples = 601;
-
 std::string number(const char* format, double value) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, format, value);
@@ -59,7 +56,7 @@ double folder_body_weight(const ResultFolder& f) {
 WrenchSeries dense_series(const std::string& motion, const std::string& model, int knots) {
   const MotionFile file = load_motion_file(motion, model);
   EvaluateOptions options;
-  options.samples = kFigureSamples;
+  options.samples = plot_samples_for(file.motion.flight_time());
   options.interpolation.knots_per_interval = knots;
   return root_wrench_series(evaluate_motion(file.motion, file.model, options).samples);
 }

@@ -1,10 +1,12 @@
 #include "core/plot_series.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include "saltus/base/input_error.h"
 #include "saltus/body/segment_names.h"
+#include "saltus/evaluation/force_metrics.h"
 #include "saltus/evaluation/residual_measures.h"
 
 namespace saltus::gui {
@@ -56,6 +58,11 @@ void fill_magnitudes(WrenchSeries& series) {
 }
 
 }  // namespace
+
+int plot_samples_for(double duration) {
+  const int check = static_cast<int>(std::ceil(duration / kCheckMaxSpacing)) + 1;
+  return std::max(kPlotSamples, check);
+}
 
 WrenchSeries root_wrench_series(const std::vector<SampleRecord>& samples) {
   WrenchSeries out;

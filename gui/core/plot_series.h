@@ -22,6 +22,14 @@
 
 namespace saltus::gui {
 
+/// Samples of the dense grid that plots, exported figures and the teaching view draw from, at
+/// least (the written trajectory's grid, 101 samples by default, makes jagged curves).
+inline constexpr int kPlotSamples = 601;
+/// The plot grid's size for a flight of `duration` seconds: kPlotSamples, or more so that it is
+/// never coarser than the library's dense residual check (kCheckMaxSpacing) and a plot shows what
+/// the reported figures integrate.
+int plot_samples_for(double duration);
+
 /// The paper's F1..F6 over time: root force (N) then moment (N·m), root frame, root origin, and
 /// their resultants.
 struct WrenchSeries {

@@ -9,6 +9,7 @@
 #include "core/plot_series.h"
 #include "gui_core/test_motion.h"
 #include "saltus/base/input_error.h"
+#include "saltus/evaluation/force_metrics.h"
 #include "support/temp_path.h"
 
 namespace saltus::gui {
@@ -22,6 +23,17 @@ class PlotSeriesTest : public ::testing::Test {
   }
   Document document_;
 };
+
+TEST(PlotSamples, NeverCoarserThanTheDenseResidualCheck) {
+  EXPECT_EQ(plot_samples_for(0.5), kPlotSamples);
+  EXPECT_EQ(plot_samples_for(2.0), kPlotSamples);
+  EXPECT_EQ(plot_samples_for(10.0), 1001);
+  for (double duration : {0.3, 1.7, 6.01, 12.345, 30.0}) {
+    const int n = plot_samples_for(duration);
+    EXPECT_LE(duration / (n - 1), kCheckMaxSpacing * (1 + 1e-12)) << duration;
+    EXPECT_GE(n, kPlotSamples);
+  }
+}
 
 TEST_F(PlotSeriesTest, RootWrenchSeriesCarriesF1ToF6) {
   const WrenchSeries w = root_wrench_series(samples());
