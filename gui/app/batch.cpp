@@ -127,12 +127,24 @@ int show_motion(const CommandLine& c) {
     }
     std::printf("wrote %s\n", c.screenshot_view.c_str());
   }
-  if (!c.screenshot.empty()) {
+  if (!c.compare.empty()) {
+    const int status =
+        write_compare_screenshot(window, QString::fromStdString(c.compare), window.time(),
+                                 QSize(c.width, c.height), QString::fromStdString(c.screenshot));
+    if (status != 0) return status;
+  } else if (!c.screenshot.empty()) {
     if (!window.files().export_window_png(QString::fromStdString(c.screenshot), &error)) {
       std::fprintf(stderr, "saltus-gui: error: %s\n", qPrintable(error));
       return kExitFailure;
     }
     std::printf("wrote %s\n", c.screenshot.c_str());
+  }
+  if (!c.export_video.empty()) {
+    VideoOptions video;
+    video.fps = c.video_fps;
+    video.speed = c.video_speed;
+    const int status = write_video(window, QString::fromStdString(c.export_video), video);
+    if (status != 0) return status;
   }
   if (c.benchmark) {
     const double fps = window.benchmark_playback(c.benchmark_seconds);

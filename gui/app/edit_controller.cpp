@@ -9,10 +9,12 @@
 #include <QUndoView>
 #include <exception>
 
+#include "app/capture_panel.h"
 #include "app/keyframe_panel.h"
 #include "app/model_panel.h"
 #include "app/optimize_panel.h"
 #include "app/run_controller.h"
+#include "core/capture_keyframes.h"
 #include "core/model_edit.h"
 #include "core/motion_edit.h"
 #include "saltus/base/input_error.h"
@@ -141,6 +143,11 @@ EditController::EditController(AppContext& context, RunController& runs, QObject
 
   keyframe_panel_ = new KeyframePanel(context_.window());
   model_panel_ = new ModelPanel(context_.window());
+  capture_panel_ = new CapturePanel(context_.window());
+  connect(capture_panel_, &CapturePanel::frame_toggled, this,
+          [this](int f) { toggle_capture_frame(f); });
+  connect(capture_panel_, &CapturePanel::automatic_requested, this,
+          [this](bool every) { pick_capture_frames(every); });
   connect(keyframe_panel_, &KeyframePanel::keyframe_selected, this, [this](int k) {
     const Workspace& ws = context_.workspace();
     if (ws.loaded() && k < static_cast<int>(ws.document().file().motion.keyframes.size()))
@@ -182,8 +189,10 @@ void EditController::on_workspace(WorkspaceChange change) {
     stack_->clear();
     keyframe_panel_->show_problem(QString());
     model_panel_->show_problem(QString());
+    capture_panel_->show_problem(QString());
   }
   if (change == WorkspaceChange::kOpened || change == WorkspaceChange::kEdited) {
+    capture_panel_->set_document(ws.loaded() ? &ws.document() : nullptr);
     keyframe_panel_->set_motion(ws.loaded() ? &ws.document().file().motion : nullptr,
                                 ws.loaded() ? &ws.document().file().model : nullptr);
     model_panel_->set_model(ws.loaded() ? &ws.document().loaded_model() : nullptr,
@@ -191,7 +200,7 @@ void EditController::on_workspace(WorkspaceChange change) {
   }
 }
 
-bool EditController::apply(const QString& text, const QString& merge_key, bool motion,
+bool EditController::apply(const QString& text, const QString& merge_key, Source source,
                            const std::function<void(Workspace&)>& edit, QString* error) {
   Workspace& ws = context_.workspace();
   if (!ws.loaded()) return context_.fail(tr("Nothing to edit"), tr("Open a motion first."), error);
@@ -210,18 +219,25 @@ bool EditController::apply(const QString& text, const QString& merge_key, bool m
   if (!problem.isEmpty()) {
     // No dialog: edits come from sliders and spin boxes; the panel says what is wrong and shows
     // the values in force again.
-    if (motion) {
-      keyframe_panel_->set_motion(&ws.document().file().motion, &ws.document().file().model);
-      keyframe_panel_->show_problem(problem);
-    } else {
-      model_panel_->set_model(&ws.document().loaded_model(), &ws.document().file().model);
-      model_panel_->show_problem(problem);
+    switch (source) {
+      case Source::kKeyframes:
+        keyframe_panel_->set_motion(&ws.document().file().motion, &ws.document().file().model);
+        keyframe_panel_->show_problem(problem);
+        break;
+      case Source::kModel:
+        model_panel_->set_model(&ws.document().loaded_model(), &ws.document().file().model);
+        model_panel_->show_problem(problem);
+        break;
+      case Source::kCapture:
+        capture_panel_->show_problem(problem);
+        break;
     }
     if (error) *error = problem;
     return false;
   }
   keyframe_panel_->show_problem(QString());
   model_panel_->show_problem(QString());
+  capture_panel_->show_problem(QString());
   return true;
 }
 
@@ -234,7 +250,7 @@ bool EditController::set_keyframe_angles(int keyframe, int segment, double x_deg
         joint_label(ws.document().file().model.segments[static_cast<std::size_t>(segment)].joint));
   return apply(
       tr("%1 at keyframe %2").arg(joint).arg(keyframe + 1),
-      QString("angles %1 %2").arg(keyframe).arg(segment), true,
+      QString("angles %1 %2").arg(keyframe).arg(segment), Source::kKeyframes,
       [&](Workspace& w) {
         const MotionFile& f = w.document().file();
         w.set_motion(with_joint_angles(f.motion, f.model, keyframe, segment,
@@ -245,7 +261,8 @@ bool EditController::set_keyframe_angles(int keyframe, int segment, double x_deg
 
 bool EditController::set_keyframe_time(int keyframe, double t, QString* error) {
   return apply(
-      tr("time of keyframe %1").arg(keyframe + 1), QString("time %1").arg(keyframe), true,
+      tr("time of keyframe %1").arg(keyframe + 1), QString("time %1").arg(keyframe),
+      Source::kKeyframes,
       [&](Workspace& w) {
         const MotionFile& f = w.document().file();
         w.set_motion(with_keyframe_time(f.motion, f.model, keyframe, t));
@@ -255,7 +272,7 @@ bool EditController::set_keyframe_time(int keyframe, double t, QString* error) {
 
 bool EditController::add_keyframe(double t, QString* error) {
   const bool ok = apply(
-      tr("new keyframe at %1 s").arg(t, 0, 'f', 3), QString(), true,
+      tr("new keyframe at %1 s").arg(t, 0, 'f', 3), QString(), Source::kKeyframes,
       [&](Workspace& w) {
         const Document& d = w.document();
         // The pose of the motion as shown (interpolated or optimised) at t.
@@ -273,7 +290,7 @@ bool EditController::add_keyframe(double t, QString* error) {
 
 bool EditController::delete_keyframe(int keyframe, QString* error) {
   return apply(
-      tr("deleted keyframe %1").arg(keyframe + 1), QString(), true,
+      tr("deleted keyframe %1").arg(keyframe + 1), QString(), Source::kKeyframes,
       [&](Workspace& w) {
         const MotionFile& f = w.document().file();
         w.set_motion(with_keyframe_deleted(f.motion, f.model, keyframe));
@@ -298,9 +315,43 @@ bool EditController::set_mass_factors(const std::vector<double>& factors, QStrin
     }
   }
   return apply(
-      what, key, false,
+      what, key, Source::kModel,
       [&](Workspace& w) {
         w.set_model(model_with_mass_factors(w.document().loaded_model(), factors));
+      },
+      error);
+}
+
+bool EditController::toggle_capture_frame(int frame, QString* error) {
+  const Workspace& ws = context_.workspace();
+  if (!ws.loaded() || !ws.document().capture())
+    return context_.fail(tr("No capture"), tr("Import a motion capture first."), error);
+  const CaptureFile& capture = *ws.document().capture();
+  const std::vector<int> picked = capture_frames_in(ws.document().file().motion, capture);
+  const bool adding = std::find(picked.begin(), picked.end(), frame) == picked.end();
+  return apply(
+      adding ? tr("captured frame %1 added as a keyframe").arg(frame + 1)
+             : tr("captured frame %1 no longer a keyframe").arg(frame + 1),
+      QString(), Source::kCapture,
+      [&](Workspace& w) {
+        const MotionFile& f = w.document().file();
+        w.set_motion(with_capture_frame_toggled(f.motion, f.model, capture, frame));
+      },
+      error);
+}
+
+bool EditController::pick_capture_frames(bool every_frame, QString* error) {
+  const Workspace& ws = context_.workspace();
+  if (!ws.loaded() || !ws.document().capture())
+    return context_.fail(tr("No capture"), tr("Import a motion capture first."), error);
+  const CaptureFile& capture = *ws.document().capture();
+  return apply(
+      every_frame ? tr("every captured frame a keyframe") : tr("keyframes picked automatically"),
+      QString(), Source::kCapture,
+      [&](Workspace& w) {
+        const MotionFile& f = w.document().file();
+        w.set_motion(with_capture_frames(f.motion, f.model, capture,
+                                         automatic_capture_frames(capture, every_frame)));
       },
       error);
 }

@@ -22,6 +22,7 @@ class QUndoView;
 
 namespace saltus::gui {
 
+class CapturePanel;
 class KeyframePanel;
 class ModelPanel;
 class RunController;
@@ -36,6 +37,7 @@ class EditController : public QObject {
   QUndoStack* undo_stack() const { return stack_; }
   KeyframePanel* keyframe_panel() const { return keyframe_panel_; }
   ModelPanel* model_panel() const { return model_panel_; }
+  CapturePanel* capture_panel() const { return capture_panel_; }
   /// The Edit history (a list of the undo stack's steps) for a dock.
   QUndoView* make_history_view(QWidget* parent);
 
@@ -50,6 +52,11 @@ class EditController : public QObject {
   bool delete_keyframe(int keyframe, QString* error = nullptr);
   /// Mass factors per segment relative to the model as loaded (the Model panel).
   bool set_mass_factors(const std::vector<double>& factors, QString* error = nullptr);
+  /// A motion imported from a capture (the Capture panel): flight frame `frame` (0-based) added
+  /// as a keyframe with its captured pose, or removed when it is one.
+  bool toggle_capture_frame(int frame, QString* error = nullptr);
+  /// The keyframes replaced by the library's automatic pick, or by every captured frame.
+  bool pick_capture_frames(bool every_frame, QString* error = nullptr);
 
   bool can_undo() const;
   bool can_redo() const;
@@ -61,9 +68,11 @@ class EditController : public QObject {
   void keyframe_chosen(double time);
 
  private:
-  /// Applies an edit of the motion (`motion` true) or the model as one undoable step.
+  /// The panel an edit comes from: it shows the edit's problem.
+  enum class Source { kKeyframes, kModel, kCapture };
+  /// Applies an edit of the motion or the model as one undoable step.
   /// `merge_key`: consecutive edits with the same non-empty key within a moment merge.
-  bool apply(const QString& text, const QString& merge_key, bool motion,
+  bool apply(const QString& text, const QString& merge_key, Source source,
              const std::function<void(Workspace&)>& edit, QString* error);
   void on_workspace(WorkspaceChange change);
 
@@ -72,6 +81,7 @@ class EditController : public QObject {
   QUndoStack* stack_ = nullptr;
   KeyframePanel* keyframe_panel_ = nullptr;
   ModelPanel* model_panel_ = nullptr;
+  CapturePanel* capture_panel_ = nullptr;
   QAction* undo_ = nullptr;
   QAction* redo_ = nullptr;
 };

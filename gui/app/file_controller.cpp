@@ -27,6 +27,7 @@
 #include "saltus/base/input_error.h"
 #include "saltus/base/json_reader.h"
 #include "saltus/evaluation/residual_measures.h"
+#include "saltus/formats/capture_files.h"
 #include "saltus/formats/model_file.h"
 #include "saltus/formats/motion_file.h"
 
@@ -65,7 +66,19 @@ FileController::FileController(AppContext& context, ViewController& view,
       new QAction(w->style()->standardIcon(QStyle::SP_DialogOpenButton), tr("&Open motion…"), this);
   open_->setShortcut(QKeySequence::Open);
   connect(open_, &QAction::triggered, this, [this] {
-    const QString path = ask_open_file(tr("Open motion"), tr("Motions (*.motion.json *.json)"));
+    const QString path = ask_open_file(
+        tr("Open motion"),
+        tr("Motions (*.motion.json *.json);;Motion captures (*.bvh *.BVH);;All files (*)"));
+    if (!path.isEmpty()) open_motion(path);
+  });
+  import_capture_ = new QAction(tr("&Import motion capture…"), this);
+  import_capture_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_I));
+  import_capture_->setToolTip(
+      tr("A BVH file onto the body model (as `saltus import`): its flight, take-off state and "
+         "picked keyframes; the capture is drawn beside the motion"));
+  connect(import_capture_, &QAction::triggered, this, [this] {
+    const QString path =
+        ask_open_file(tr("Import motion capture"), tr("Motion captures (*.bvh *.BVH)"));
     if (!path.isEmpty()) open_motion(path);
   });
   save_result_ = new QAction(w->style()->standardIcon(QStyle::SP_DialogSaveButton),
@@ -98,6 +111,7 @@ FileController::FileController(AppContext& context, ViewController& view,
 void FileController::fill_menu(QMenu* file, const std::vector<QAction*>& more_exports) {
   QMainWindow* w = context_.window();
   file->addAction(open_);
+  file->addAction(import_capture_);
   file->addAction(tr("Open &model…"), this, [this] {
     const QString path = ask_open_file(tr("Open body model"), tr("Body models (*.json)"));
     if (!path.isEmpty()) open_model(path);
@@ -152,7 +166,8 @@ void FileController::on_workspace(WorkspaceChange change) {
   if (change == WorkspaceChange::kStage) return;
   if (!ws.loaded()) {
     context_.window()->setWindowTitle(tr("Saltus"));
-    status_line_->setText(tr("Open a motion: File > Open, or drop a *.motion.json here."));
+    status_line_->setText(
+        tr("Open a motion: File > Open, or drop a *.motion.json (or a .bvh capture) here."));
     return;
   }
   const MotionFile& f = ws.document().file();
@@ -391,7 +406,8 @@ void FileController::rebuild_recent_menu() {
 void FileController::drag_enter(QDragEnterEvent* event) {
   if (!event->mimeData()->hasUrls()) return;
   for (const QUrl& url : event->mimeData()->urls()) {
-    if (url.isLocalFile() && url.toLocalFile().endsWith(".json", Qt::CaseInsensitive)) {
+    const QString path = url.isLocalFile() ? url.toLocalFile() : QString();
+    if (path.endsWith(".json", Qt::CaseInsensitive) || is_capture_path(path.toStdString())) {
       event->acceptProposedAction();
       return;
     }

@@ -39,8 +39,9 @@ class FileController : public QObject, public RemembersSettings {
 
   // Each returns false on failure; with `error` null the message goes to a dialog (or stderr
   // without a user), else it is stored there.
-  /// Opens a motion file (with the model it names, or the model opened before). Asks first
-  /// when unsaved work would be dropped; false if the user keeps it.
+  /// Opens a motion file (with the model it names, or the model opened before), or imports a
+  /// motion capture (.bvh) onto that model. Asks first when unsaved work would be dropped;
+  /// false if the user keeps it.
   bool open_motion(const QString& path, QString* error = nullptr);
   /// Uses this model file for the open motion (reloading it) and for motions opened later.
   bool open_model(const QString& path, QString* error = nullptr);
@@ -92,6 +93,7 @@ class FileController : public QObject, public RemembersSettings {
   QLabel* status_line_ = nullptr;
   QMenu* recent_menu_ = nullptr;
   QAction* open_ = nullptr;
+  QAction* import_capture_ = nullptr;
   QAction* save_result_ = nullptr;
   QAction* save_motion_ = nullptr;
   QAction* save_model_ = nullptr;

@@ -15,6 +15,7 @@
 #include <QUndoView>
 #include <QVBoxLayout>
 
+#include "app/capture_panel.h"
 #include "app/chart_widget.h"
 #include "app/compare_controller.h"
 #include "app/edit_controller.h"
@@ -66,7 +67,9 @@ MainWindow::MainWindow(bool interactive, QWidget* parent) : QMainWindow(parent) 
   connect(playback_, &PlaybackController::time_changed, this, [this](double t, bool playing) {
     view_->set_time(t, playing);
     plots_->set_time(t, playing);
+    edits_->capture_panel()->set_time(t);
   });
+  connect(edits_->capture_panel(), &CapturePanel::seek_requested, this, &MainWindow::seek);
   connect(plots_, &PlotsPanel::seek_requested, this, &MainWindow::seek);
   connect(edits_, &EditController::keyframe_chosen, this, &MainWindow::seek);
   connect(edits_->keyframe_panel(), &KeyframePanel::add_requested, this,
@@ -132,12 +135,13 @@ void MainWindow::build_menus() {
            "Home / End  start / end;  Up / Down  faster / slower\n"
            "B / A  show before / after optimisation\n"
            "1 2 3 4  side, front, top, follow camera;  R  reset camera;  Esc  cancel a run\n\n"
-           "Anywhere: Ctrl+O open, Ctrl+S save result, Ctrl+R run optimisation,\n"
+           "Anywhere: Ctrl+O open, Ctrl+I import a motion capture, Ctrl+S save result,\n"
+           "Ctrl+R run optimisation, "
            "Ctrl+Z undo, Ctrl+Shift+Z redo\n\n"
            "3D view: left-drag turns, middle-drag pans, the wheel zooms towards the body;\n"
            "a click on a body segment plots the loads at its joint (a click beside the body\n"
            "unmarks it). Plots: click or drag to move the time cursor.\n"
-           "Drop a *.motion.json (or a body model) on the window to open it."));
+           "Drop a *.motion.json, a .bvh capture or a body model on the window to open it."));
   });
   help->addAction(tr("&About Saltus"), this, [this] {
     QMessageBox::about(
@@ -183,13 +187,19 @@ void MainWindow::build_docks(QMenu* view_menu) {
   QDockWidget* optimise = dock(tr("Optimise"), "optimise_dock", runs_->panel());
   QDockWidget* keyframes = dock(tr("Keyframes"), "keyframe_dock", edits_->keyframe_panel());
   QDockWidget* model = dock(tr("Model"), "model_dock", edits_->model_panel());
+  QDockWidget* capture = dock(tr("Capture"), "capture_dock", edits_->capture_panel());
   QDockWidget* history = dock(tr("Edit history"), "history_dock", edits_->make_history_view(this));
   tabifyDockWidget(optimise, keyframes);
-  tabifyDockWidget(keyframes, model);
+  tabifyDockWidget(keyframes, capture);
+  tabifyDockWidget(capture, model);
   tabifyDockWidget(model, history);
   optimise->raise();
+  // An imported capture brings its panel to the front (its keyframes are picked there).
+  connect(files_, &FileController::motion_opened, this, [this, capture] {
+    if (document().capture()) capture->raise();
+  });
   view_menu->addSeparator();
-  for (QDockWidget* d : {display, optimise, keyframes, model, history})
+  for (QDockWidget* d : {display, optimise, keyframes, capture, model, history})
     view_menu->addAction(d->toggleViewAction());
   resizeDocks({display, optimise}, {400, 400}, Qt::Horizontal);
 }

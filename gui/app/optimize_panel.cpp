@@ -32,8 +32,11 @@ OptimizePanel::OptimizePanel(QWidget* parent) : QWidget(parent) {
   epsilon_->setToolTip(tr("Strict model: bound on each |F_i| at every sample"));
   timing_ = new QCheckBox(tr("optimise keyframe times"), this);
   knots_ = new QSpinBox(this);
-  knots_->setRange(1, kMaxKnotsPerInterval);
-  knots_->setToolTip(tr("Spline knot sub-intervals per keyframe interval (1 = the paper's)"));
+  knots_->setRange(0, kMaxKnotsPerInterval);
+  knots_->setSpecialValueText(tr("auto"));
+  knots_->setToolTip(
+      tr("Spline knot spans per keyframe interval: auto (chosen from how far the body turns, "
+         "then refined where the residual is; the default) or a number (1 = the paper's)"));
   samples_ = new QSpinBox(this);
   samples_->setRange(kMinSamples, 5000);
   samples_->setToolTip(tr("Time samples of the objective on [0, T] (fewer = faster)"));

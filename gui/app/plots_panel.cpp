@@ -150,11 +150,15 @@ void PlotsPanel::refresh_root_charts() {
     style.axes[a] = axes_[a]->isChecked();
   style.log_scale = log_scale_->isChecked();
   style.body_weight_N = body_weight(d.file().model);
+  // A motion imported from a capture: the capture's own residual beside it.
+  WrenchSeries capture;
+  if (d.capture()) capture = root_wrench_series(d.capture_plot_samples());
+  const WrenchSeries* captured = d.capture() ? &capture : nullptr;
   force_chart_->set_chart(
-      root_chart(style, before, optimised ? &after : nullptr, times_before, times_after));
+      root_chart(style, before, optimised ? &after : nullptr, times_before, times_after, captured));
   style.moment = true;
   moment_chart_->set_chart(
-      root_chart(style, before, optimised ? &after : nullptr, times_before, times_after));
+      root_chart(style, before, optimised ? &after : nullptr, times_before, times_after, captured));
   update_cursors();
 }
 

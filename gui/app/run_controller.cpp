@@ -210,7 +210,9 @@ void RunController::load_settings(const QSettings& s) {
   o.strict = s.value("optimize/strict", o.strict).toBool();
   o.epsilon = s.value("optimize/epsilon", o.epsilon).toDouble();
   o.optimize_timing = s.value("optimize/timing", o.optimize_timing).toBool();
-  o.knots_per_interval = s.value("optimize/knots_per_interval", o.knots_per_interval).toInt();
+  // "optimize/knots" since the automatic resolution (0): the older key held the paper's 1 as
+  // a default nobody chose.
+  o.knots_per_interval = s.value("optimize/knots", o.knots_per_interval).toInt();
   o.samples = s.value("optimize/samples", o.samples).toInt();
   o.max_iterations = s.value("optimize/max_iterations", o.max_iterations).toInt();
   o.max_joint_turn_deg = s.value("optimize/max_joint_turn_deg", o.max_joint_turn_deg).toDouble();
@@ -222,7 +224,7 @@ void RunController::save_settings(QSettings& s) const {
   s.setValue("optimize/strict", o.strict);
   s.setValue("optimize/epsilon", o.epsilon);
   s.setValue("optimize/timing", o.optimize_timing);
-  s.setValue("optimize/knots_per_interval", o.knots_per_interval);
+  s.setValue("optimize/knots", o.knots_per_interval);
   s.setValue("optimize/samples", o.samples);
   s.setValue("optimize/max_iterations", o.max_iterations);
   s.setValue("optimize/max_joint_turn_deg", o.max_joint_turn_deg);

@@ -28,11 +28,26 @@ Document::Dense Document::dense_of(const MotionFile& file, const MotionEvaluatio
 
 void Document::load(const std::string& motion_path, const std::string& model_override,
                     int samples) {
-  MotionFile file = load_motion_file(motion_path, model_override);
+  MotionFile file;
+  std::shared_ptr<const CaptureFile> capture;
+  if (is_capture_path(motion_path)) {
+    // As load_motion_or_capture reads a capture, keeping the import for the views.
+    CaptureFileOptions options;
+    options.model = model_override;
+    auto imported = std::make_shared<CaptureFile>(import_capture_file(motion_path, options));
+    file.path = motion_path;
+    file.model = imported->model;
+    file.motion = imported->import.keyframes;
+    file.motion.model = imported->model_reference;
+    capture = std::move(imported);
+  } else {
+    file = load_motion_file(motion_path, model_override);
+  }
   EvaluateOptions options;
   options.samples = samples;
   MotionEvaluation evaluation = evaluate_motion(file.motion, file.model, options);
   Dense dense = dense_of(file, evaluation);
+  std::vector<SampleRecord> capture_samples = capture_samples_of(capture.get(), file.model);
   // Only now that everything succeeded does the document change.
   file_ = std::move(file);
   model_override_ = model_override;
@@ -41,7 +56,27 @@ void Document::load(const std::string& motion_path, const std::string& model_ove
   dense_ = std::move(dense);
   edited_ = false;
   loaded_model_ = file_->model;
+  capture_ = std::move(capture);
+  capture_samples_ = std::move(capture_samples);
   clear_optimization();
+}
+
+double Document::capture_duration() const {
+  return capture_ ? capture_->import.captured.flight_time() : 0.0;
+}
+
+std::vector<SampleRecord> Document::capture_samples_of(const CaptureFile* capture,
+                                                       const BodyModel& model) {
+  if (!capture) return {};
+  const double duration = capture->import.captured.flight_time();
+  return evaluate_trajectory(model, capture->import.trajectory,
+                             uniform_times(duration, plot_samples_for(duration)));
+}
+
+SampleRecord Document::capture_sample_at(double t) const {
+  if (!capture_) throw std::logic_error("no capture");
+  const double clamped = std::clamp(t, 0.0, capture_duration());
+  return evaluate_trajectory(file_->model, capture_->import.trajectory, {clamped}).front();
 }
 
 void Document::set_model(const BodyModel& model) {
@@ -63,10 +98,13 @@ void Document::set_motion_and_model(const Motion& motion, const BodyModel& model
   file.model = model;
   MotionEvaluation evaluation = evaluate_motion(motion, model, evaluate_options_);
   Dense dense = dense_of(file, evaluation);
+  // The capture's residual depends on the masses.
+  std::vector<SampleRecord> capture_samples = capture_samples_of(capture_.get(), model);
   file_ = std::move(file);
   evaluation_ = std::move(evaluation);
   dense_ = std::move(dense);
   edited_ = true;
+  capture_samples_ = std::move(capture_samples);
   clear_optimization();
 }
 

@@ -5,6 +5,7 @@
 /// rotation metrics of both and the glyph scales. All numbers come from library calls; the
 /// views only ask for them.
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "saltus/evaluation/evaluate.h"
 #include "saltus/evaluation/flight_checks.h"
 #include "saltus/evaluation/rotation_metrics.h"
+#include "saltus/formats/capture_files.h"
 #include "saltus/optim/optimize.h"
 
 namespace saltus::gui {
@@ -36,8 +38,11 @@ struct GlyphTypicals {
 class Document {
  public:
   /// Loads a motion file and the model it names (or `model_override`, a name or path) and
-  /// evaluates it with `samples` time samples. Throws InputError for bad files and
-  /// std::invalid_argument for bad options; on failure the document keeps what it had.
+  /// evaluates it with `samples` time samples. A motion capture (a .bvh path, is_capture_path)
+  /// is imported onto the model (import_capture_file, the defaults of `saltus import`): the
+  /// motion is its picked keyframes, and the capture stays (capture()). Throws InputError for
+  /// bad files and std::invalid_argument for bad options; on failure the document keeps what it
+  /// had.
   void load(const std::string& motion_path, const std::string& model_override = "",
             int samples = kDefaultSamples);
   bool loaded() const { return file_.has_value(); }
@@ -94,6 +99,19 @@ class Document {
   /// remains, so that the residual is seen, not drawn as a dot on a 1000 N scale.
   GlyphTypicals glyph_typicals(Stage stage) const;
 
+  /// The motion capture the motion was imported from, null for a motion file. Its frames can be
+  /// picked as keyframes (core/capture_keyframes.h); it is drawn beside the motion.
+  const CaptureFile* capture() const { return capture_.get(); }
+  /// The captured flight's length (s): its own trajectory is defined on [0, capture_duration()].
+  double capture_duration() const;
+  /// The capture's own motion on the dense plot grid, with the model in use (a mass edit
+  /// changes its residual as it changes the motion's): how physically correct the capture is.
+  /// Empty without a capture.
+  const std::vector<SampleRecord>& capture_plot_samples() const { return capture_samples_; }
+  /// The capture at time t of the motions' clock (clamped to its flight): one inverse-dynamics
+  /// evaluation of its own trajectory. Requires capture().
+  SampleRecord capture_sample_at(double t) const;
+
   /// Writes the outputs the CLI would: `saltus optimize`'s when optimised, else `saltus
   /// evaluate`'s (result.json, trajectories, model.json, ...), all or nothing.
   void save_result(const std::string& out_dir) const;
@@ -113,8 +131,13 @@ class Document {
   static Dense dense_of(const MotionFile& file, const MotionEvaluation& evaluation);
   const Dense& dense(Stage stage) const;
 
+  static std::vector<SampleRecord> capture_samples_of(const CaptureFile* capture,
+                                                      const BodyModel& model);
+
   MotionEvaluation evaluation_;
   Dense dense_;
+  std::shared_ptr<const CaptureFile> capture_;  ///< immutable: shared by copies and snapshots
+  std::vector<SampleRecord> capture_samples_;
   std::optional<OptimizationResult> optimization_;
   OptimizeOptions optimize_options_;
   Dense dense_opt_before_;

@@ -76,7 +76,11 @@ void densify(ResultFolder& f) {
   try {
     const nlohmann::json result = read_json_file((folder / "result.json").string());
     const fs::path motion = result.at("motion_file").get<std::string>();
-    const int knots = result.value("knots_per_interval", 1);
+    // With the automatic resolution "before" is the paper's interpolation, knots at the
+    // keyframes (optimize_motion); otherwise the knots `saltus optimize` used.
+    const bool automatic = result.contains("resolution") && result["resolution"].is_object() &&
+                           result["resolution"].value("automatic", false);
+    const int knots = automatic ? 1 : result.value("knots_per_interval", 1);
     // Relative to where `saltus optimize` ran: try the current folder, then the folder's parent.
     for (const fs::path& candidate : {motion, folder.parent_path() / motion}) {
       if (!fs::exists(candidate)) continue;

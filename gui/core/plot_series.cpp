@@ -167,15 +167,44 @@ ChartSpec root_chart_frame(const RootChartStyle& style) {
   return chart;
 }
 
+Rgb capture_curve_colour() {
+  return {0.36, 0.50, 0.36};
+}
+
 ChartSpec root_chart(const RootChartStyle& style, const WrenchSeries& before,
                      const WrenchSeries* after, const std::vector<double>& keyframes_before,
-                     const std::vector<double>& keyframes_after) {
+                     const std::vector<double>& keyframes_after, const WrenchSeries* capture) {
   ChartSpec chart = root_chart_frame(style);
   const bool comparing = after != nullptr;
-  // The log axis is there to show "after" beside a far larger "before"; a lone curve reads
-  // better on a linear one (its dips to zero would fill the log axis with spikes).
-  chart.log_y = chart.log_y && comparing;
+  // The log axis is there to show "after" beside a far larger "before" (or the capture's);
+  // a lone curve reads better on a linear one (its dips to zero would fill the log axis with
+  // spikes).
+  chart.log_y = chart.log_y && (comparing || capture);
   const int first = style.moment ? 3 : 0;
+  if (capture) {
+    // First, so that the motion's own curves are drawn over it.
+    const int axes = style.components ? 3 : 1;
+    for (int a = 0; a < axes; ++a) {
+      if (style.components && !style.axes[static_cast<std::size_t>(a)]) continue;
+      LineSpec line;
+      line.x = capture->time;
+      if (style.components) {
+        line.label = std::string(kAxisNames[a]) + " capture";
+        line.y = capture->component[static_cast<std::size_t>(first + a)];
+        line.colour = component_colour(a);
+        line.colour = {0.5 * (line.colour.r + capture_curve_colour().r),
+                       0.5 * (line.colour.g + capture_curve_colour().g),
+                       0.5 * (line.colour.b + capture_curve_colour().b)};
+      } else {
+        line.label = std::string(style.moment ? "|M|" : "|F|") + " capture";
+        line.y = style.moment ? capture->moment_magnitude : capture->force_magnitude;
+        line.colour = capture_curve_colour();
+      }
+      line.width = 1.4;
+      chart.lines.push_back(std::move(line));
+    }
+  }
+  const std::size_t first_motion_line = chart.lines.size();
   for (int stage = 0; stage < 2; ++stage) {
     const WrenchSeries* series = stage == 0 ? &before : after;
     if (!series) continue;
@@ -200,6 +229,10 @@ ChartSpec root_chart(const RootChartStyle& style, const WrenchSeries& before,
       chart.lines.push_back(std::move(line));
     }
   }
+  // Beside the capture, a lone curve is the keyframes' interpolation.
+  if (capture && !comparing)
+    for (std::size_t i = first_motion_line; i < chart.lines.size(); ++i)
+      chart.lines[i].label += " keyframes";
   add_keyframe_markers(chart, keyframes_before,
                        comparing ? keyframes_after : std::vector<double>{});
   return chart;

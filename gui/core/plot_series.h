@@ -86,11 +86,16 @@ struct RootChartStyle {
 /// An empty root force or moment chart (title, axis titles) for this style.
 ChartSpec root_chart_frame(const RootChartStyle& style);
 
+/// Colour of a motion capture's own curves (thin, grey-green: neither before nor after).
+Rgb capture_curve_colour();
+
 /// The root force or moment against time, before and (`after` may be null) after optimisation,
-/// keyframe times as markers.
+/// keyframe times as markers; `capture` (may be null) adds the motion capture's own residual
+/// (the motion was imported from it), labelled "capture".
 ChartSpec root_chart(const RootChartStyle& style, const WrenchSeries& before,
                      const WrenchSeries* after, const std::vector<double>& keyframes_before,
-                     const std::vector<double>& keyframes_after);
+                     const std::vector<double>& keyframes_after,
+                     const WrenchSeries* capture = nullptr);
 
 /// Components chart of root force (`moment` false) or moment, with the components in `shown`
 /// (the form the exported figures of result folders use).

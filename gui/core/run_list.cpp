@@ -89,7 +89,8 @@ std::string RunList::label(int index) const {
 std::string settings_summary(const OptimizeSettings& s) {
   std::string out = s.strict ? "strict, ε = " + number("%g", s.epsilon) : "relaxed";
   out += s.optimize_timing ? ", times free" : ", times fixed";
-  out += ", K = " + std::to_string(s.knots_per_interval);
+  out += s.knots_per_interval == 0 ? std::string(", knots auto")
+                                   : ", K = " + std::to_string(s.knots_per_interval);
   out += ", " + std::to_string(s.samples) + " samples";
   if (s.max_joint_turn_deg > 0) out += ", joint turn ≤ " + number("%g", s.max_joint_turn_deg) + "°";
   return out;

@@ -30,6 +30,10 @@ const std::vector<SceneOptionInfo>& scene_option_table() {
        &SceneOptions::flight_inset},
       {"physics_text", "Numbers in the view", "Time, residual and rotation numbers",
        &SceneOptions::physics_text},
+      {"capture_figure", "Motion capture beside",
+       "For a motion imported from a capture: the capture itself as a grey figure beside the "
+       "athlete, at the same moment",
+       &SceneOptions::capture_figure},
   };
   return kTable;
 }

@@ -24,6 +24,9 @@ struct SceneOptions {
   /// The small picture of the whole flight in a corner (the main view follows the body).
   bool flight_inset = true;
   bool physics_text = true;
+  /// A motion imported from a capture: the capture's own motion as a grey figure beside the
+  /// athlete, at the same time.
+  bool capture_figure = true;
 };
 
 /// One display option: where it is stored, what the user reads, which field it switches.

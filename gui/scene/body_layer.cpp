@@ -130,20 +130,20 @@ void paint(vtkPolyData* data, const Rgb& c) {
   data->GetPointData()->SetScalars(colours);
 }
 
-/// The segment's drawing in its own coordinates, coloured per point.
-vtkSmartPointer<vtkPolyData> segment_mesh(const Segment& s) {
+/// The segment's drawing in its own coordinates, coloured per point (all `uniform` if given).
+vtkSmartPointer<vtkPolyData> segment_mesh(const Segment& s, const std::optional<Rgb>& uniform) {
   vtkNew<vtkAppendPolyData> all;
   if (s.shape.parts.empty()) {
     auto mesh = capsule(Eigen::Vector3d(0, 0.5 * s.shape.length, 0), s.shape.length,
                         std::max(s.shape.radius, 0.01), kRoundResolution);
-    paint(mesh, segment_colour(s));
+    paint(mesh, uniform ? *uniform : segment_colour(s));
     all->AddInputData(mesh);
   }
   for (const ShapePart& part : s.shape.parts) {
     auto mesh = part.type == "capsule"
                     ? capsule(part.center, part.length, part.radius, kRoundResolution)
                     : ellipsoid(part.center, part.radii);
-    paint(mesh, part_colour(s, part));
+    paint(mesh, uniform ? *uniform : part_colour(s, part));
     all->AddInputData(mesh);
   }
   all->Update();
@@ -215,7 +215,7 @@ void BodyLayer::show_in(vtkRenderer* other) {
     other->AddActor(a);
 }
 
-void BodyLayer::build(const BodyModel& model) {
+void BodyLayer::build(const BodyModel& model, const std::optional<Rgb>& uniform) {
   clear();
   std::vector<Eigen::Vector3d> origin(model.segments.size(), Eigen::Vector3d::Zero());
   double top = -std::numeric_limits<double>::infinity();
@@ -223,7 +223,7 @@ void BodyLayer::build(const BodyModel& model) {
   for (std::size_t i = 0; i < model.segments.size(); ++i) {
     const Segment& s = model.segments[i];
     if (s.parent >= 0) origin[i] = origin[static_cast<std::size_t>(s.parent)] + s.joint_position;
-    vtkSmartPointer<vtkPolyData> mesh = segment_mesh(s);
+    vtkSmartPointer<vtkPolyData> mesh = segment_mesh(s, uniform);
     double b[6];
     mesh->GetBounds(b);
     top = std::max(top, origin[i].y() + b[3]);
@@ -241,7 +241,12 @@ void BodyLayer::build(const BodyModel& model) {
     renderer_->AddActor(actor);
     for (vtkRenderer* r : also_in_)
       r->AddActor(actor);
-    picker_->AddPickList(actor);
+    if (uniform) {
+      p->SetSpecular(0.1);
+      actor->PickableOff();
+    } else {
+      picker_->AddPickList(actor);
+    }
     segments_.push_back(actor);
     outlines_.push_back(
         inflated(mesh, std::max(kOutlineWidthFactor * thickness(s), kOutlineMinWidth)));
@@ -250,11 +255,18 @@ void BodyLayer::build(const BodyModel& model) {
   apply_highlight();
 }
 
-void BodyLayer::pose(const SampleRecord& s) {
+void BodyLayer::set_visible(bool visible) {
+  for (auto& a : segments_)
+    a->SetVisibility(visible);
+  outline_->SetVisibility(visible && highlight_ >= 0);
+}
+
+void BodyLayer::pose(const SampleRecord& s, const Eigen::Vector3d& offset) {
+  const Eigen::Translation3d moved(offset);
   for (std::size_t i = 0; i < segments_.size() && i < s.segment_position.size(); ++i)
-    set_matrix(segments_[i], world_from_segment(s, i));
+    set_matrix(segments_[i], moved * world_from_segment(s, i));
   if (highlight_ >= 0 && static_cast<std::size_t>(highlight_) < s.segment_position.size())
-    set_matrix(outline_, world_from_segment(s, static_cast<std::size_t>(highlight_)));
+    set_matrix(outline_, moved * world_from_segment(s, static_cast<std::size_t>(highlight_)));
 }
 
 void BodyLayer::build_ghosts(const BodyModel& model, const std::vector<SampleRecord>& poses,

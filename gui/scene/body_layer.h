@@ -13,8 +13,10 @@
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 
+#include <optional>
 #include <vector>
 
+#include "core/chart_spec.h"
 #include "saltus/body/body_model.h"
 #include "saltus/evaluation/sampling.h"
 
@@ -24,15 +26,18 @@ class BodyLayer {
  public:
   explicit BodyLayer(vtkRenderer* renderer);
 
-  /// Actors for a model (replacing earlier ones).
-  void build(const BodyModel& model);
+  /// Actors for a model (replacing earlier ones). With `uniform`, every part in that one colour
+  /// and not pickable: a second figure beside the athlete (a motion capture).
+  void build(const BodyModel& model, const std::optional<Rgb>& uniform = std::nullopt);
+  void set_visible(bool visible);
   void clear();
   bool empty() const { return segments_.empty(); }
   /// Also draws the body in another renderer (the whole-flight inset); the actors are shared.
   void show_in(vtkRenderer* other);
 
-  /// Poses every segment (and the rim of the picked one) as in the sample.
-  void pose(const SampleRecord& sample);
+  /// Poses every segment (and the rim of the picked one) as in the sample, moved by `offset`
+  /// (world, m).
+  void pose(const SampleRecord& sample, const Eigen::Vector3d& offset = Eigen::Vector3d::Zero());
 
   /// The keyframe poses as thin figures, pale blue-grey (given) or pale amber (optimised).
   void build_ghosts(const BodyModel& model, const std::vector<SampleRecord>& poses, bool optimised);

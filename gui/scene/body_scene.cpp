@@ -1,10 +1,12 @@
 #include "scene/body_scene.h"
 
+#include <vtkBillboardTextActor3D.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkNew.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
+#include <vtkTextProperty.h>
 
 #include <algorithm>
 #include <chrono>
@@ -29,6 +31,13 @@ namespace {
 
 /// The whole-flight inset's corner of the view (normalized viewport: x0, y0, x1, y1).
 constexpr double kInsetViewport[4] = {0.745, 0.015, 0.99, 0.40};
+/// A motion capture's figure: light grey-green, beside the athlete by this share of the
+/// standing body's height, to the right on the screen.
+const Rgb kCaptureColour{0.72, 0.78, 0.70};
+constexpr double kCaptureGapPerHeight = 0.95;
+/// Labels above the figures, this far above the highest joint (m).
+constexpr double kLabelHeight = 0.45;
+
 /// Characters per line of the title and the legend before they wrap.
 constexpr std::size_t kTitleWidth = 34;
 constexpr std::size_t kLegendWidth = 64;
@@ -57,6 +66,11 @@ struct BodyScene::Impl {
   vtkNew<vtkRenderer> inset;    ///< the whole flight, in a corner, own camera
   vtkNew<vtkRenderer> overlay;  ///< layer 1: CoM ball and residual arrows, always visible
   scene::BodyLayer body{renderer};
+  scene::BodyLayer capture_body{renderer};  ///< the motion capture beside the athlete
+  vtkNew<vtkBillboardTextActor3D> capture_label;
+  vtkNew<vtkBillboardTextActor3D> athlete_label;
+  std::optional<SampleRecord> capture_now;  ///< the capture at the time shown
+  std::optional<SampleRecord> athlete_now;  ///< the motion at the time shown
   scene::EnvironmentLayer environment{renderer};
   scene::PathLayer paths{renderer, overlay};
   scene::GlyphLayer glyphs{renderer, overlay};
@@ -92,13 +106,65 @@ struct BodyScene::Impl {
     on_resize->SetClientData(this);
     on_resize->SetCallback([](vtkObject* caller, unsigned long, void* self, void*) {
       const int* size = static_cast<vtkRenderer*>(caller)->GetSize();
-      static_cast<Impl*>(self)->texts.fit(size[1]);
+      Impl& impl = *static_cast<Impl*>(self);
+      impl.texts.fit(size[1]);
+      // The user may have turned the camera: the capture stays to the right on the screen.
+      if (impl.capture_shown() && impl.athlete_now) impl.place_capture(*impl.athlete_now);
     });
     renderer->AddObserver(vtkCommand::StartEvent, on_resize);
+    for (vtkBillboardTextActor3D* label : {capture_label.Get(), athlete_label.Get()}) {
+      vtkTextProperty* p = label->GetTextProperty();
+      p->SetFontSize(18);
+      p->SetJustificationToCentered();
+      p->SetBold(true);
+      p->SetColor(0.92, 0.94, 0.90);
+      label->PickableOff();
+      label->SetVisibility(false);
+      renderer->AddActor(label);
+    }
+    capture_label->SetInput("capture");
+  }
+
+  bool capture_shown() const { return document && document->capture() && options.capture_figure; }
+
+  /// Where the capture's figure goes: to the right of the athlete as the camera sees it.
+  Eigen::Vector3d capture_offset() const {
+    vtkCamera* c = renderer->GetActiveCamera();
+    double dop[3], up[3];
+    c->GetDirectionOfProjection(dop);
+    c->GetViewUp(up);
+    Eigen::Vector3d right =
+        Eigen::Vector3d(dop[0], dop[1], dop[2]).cross(Eigen::Vector3d(up[0], up[1], up[2]));
+    if (right.norm() < 1e-9) right = Eigen::Vector3d::UnitX();
+    return right.normalized() * kCaptureGapPerHeight * body.standing_height();
+  }
+
+  static double top_of(const SampleRecord& s) {
+    double top = s.com.y();
+    for (const Eigen::Vector3d& p : s.segment_position)
+      top = std::max(top, p.y());
+    return top;
+  }
+
+  /// Poses the capture's figure beside the athlete (again after the camera turned).
+  void place_capture(const SampleRecord& athlete) {
+    if (!capture_shown() || !capture_now) return;
+    const Eigen::Vector3d offset = capture_offset();
+    capture_body.pose(*capture_now, offset);
+    const Eigen::Vector3d at =
+        capture_now->com + offset +
+        Eigen::Vector3d(0, top_of(*capture_now) - capture_now->com.y() + kLabelHeight, 0);
+    capture_label->SetPosition(at.x(), at.y(), at.z());
+    const Eigen::Vector3d own =
+        athlete.com + Eigen::Vector3d(0, top_of(athlete) - athlete.com.y() + kLabelHeight, 0);
+    athlete_label->SetPosition(own.x(), own.y(), own.z());
   }
 
   void clear() {
     body.clear();
+    capture_body.clear();
+    capture_now.reset();
+    athlete_now.reset();
     environment.clear();
     paths.clear();
     glyphs.clear();
@@ -107,6 +173,8 @@ struct BodyScene::Impl {
   void build(const Document& d) {
     const MotionFile& file = d.file();
     body.build(file.model);
+    if (d.capture()) capture_body.build(file.model, kCaptureColour);
+    athlete_label->SetInput(stage == Stage::kAfter ? "optimised" : "keyframes");
     paths.build(d, stage);
     const std::vector<SampleRecord>& samples = d.plot_samples(stage);
     const Apparatus apparatus = apparatus_for(file.model, file.motion.takeoff, samples);
@@ -149,6 +217,9 @@ struct BodyScene::Impl {
     environment.set_visible(options.apparatus, options.floor_grid);
     paths.set_visible(options.parabola, options.com_trace, has_doc);
     body.set_ghosts_visible(options.ghosts);
+    capture_body.set_visible(capture_shown());
+    capture_label->SetVisibility(capture_shown());
+    athlete_label->SetVisibility(capture_shown());
     if (!has_doc) glyphs.hide();
     const bool inset_shown = has_doc && options.flight_inset;
     inset->SetDraw(inset_shown);
@@ -181,6 +252,8 @@ struct BodyScene::Impl {
     std::string text = scene::wrapped(arrows, width);
     text += "\nLines: white = ballistic parabola, orange = this motion's CoM path";
     if (options.ghosts) text += "\nPale thin figures: the keyframe poses";
+    if (capture_shown())
+      text += "\nGrey figure: the motion capture itself (its residual: the grey-green curves)";
     return text;
   }
 
@@ -191,7 +264,12 @@ struct BodyScene::Impl {
     body.pose(s);
     paths.set_com(s.com);
     glyphs.update(s, options.residual_arrows, options.joint_arrows);
-    camera.follow(renderer->GetActiveCamera(), s.com);
+    athlete_now = s;
+    if (capture_shown()) {
+      capture_now = document->capture_sample_at(time);
+      place_capture(s);
+    }
+    camera.follow(renderer->GetActiveCamera(), focus(s.com));
     // The overlay shares this camera and so its clipping range, which covers its props too.
     renderer->ResetCameraClippingRange();
 
@@ -230,8 +308,15 @@ struct BodyScene::Impl {
     texts.set_legend(legend_text());
   }
 
+  /// What the camera follows: the athlete's CoM, or with the capture beside it the point
+  /// between the two.
+  Eigen::Vector3d focus(const Eigen::Vector3d& athlete_com) const {
+    return capture_shown() ? Eigen::Vector3d(athlete_com + 0.5 * capture_offset()) : athlete_com;
+  }
+
   void apply_camera() {
     camera.reset(renderer->GetActiveCamera(), com);
+    camera.follow(renderer->GetActiveCamera(), focus(com));
     renderer->ResetCameraClippingRange();
   }
 };

@@ -85,6 +85,8 @@ TEST(RunList, CountsUnsavedRunsAndLabelsThemInWords) {
 
 TEST(RunList, SettingsSummaryNamesWhatARunUsed) {
   OptimizeSettings s;
+  EXPECT_EQ(settings_summary(s), "relaxed, times free, knots auto, 101 samples, joint turn ≤ 180°");
+  s.knots_per_interval = 1;
   EXPECT_EQ(settings_summary(s), "relaxed, times free, K = 1, 101 samples, joint turn ≤ 180°");
   s.strict = true;
   s.epsilon = 50;
