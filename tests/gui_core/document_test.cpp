@@ -27,8 +27,10 @@ TEST(Document, LoadsAndEvaluatesTheMotion) {
   EXPECT_EQ(d.available(Stage::kAfter), Stage::kBefore);
   EXPECT_DOUBLE_EQ(d.duration(), d.file().motion.flight_time());
   // Plots and teaching read the dense grid, which ends where the flight does.
-  EXPECT_EQ(d.rotation(Stage::kBefore).size(), static_cast<std::size_t>(kPlotSamples));
-  EXPECT_EQ(d.plot_samples(Stage::kBefore).size(), static_cast<std::size_t>(kPlotSamples));
+  EXPECT_EQ(d.rotation(Stage::kBefore).size(),
+            static_cast<std::size_t>(plot_samples_for(d.duration())));
+  EXPECT_EQ(d.plot_samples(Stage::kBefore).size(),
+            static_cast<std::size_t>(plot_samples_for(d.duration())));
   EXPECT_DOUBLE_EQ(d.plot_samples(Stage::kBefore).back().time, d.duration());
 }
 
