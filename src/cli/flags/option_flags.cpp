@@ -1,0 +1,86 @@
+#include "flags/option_flags.h"
+
+namespace saltus::cli {
+
+namespace {
+
+std::string description(const OptionSpec& spec) {
+  std::string out = spec.help;
+  if (spec.kind == OptionKind::kSwitch || spec.kind == OptionKind::kChoice) return out;
+  out += " (";
+  if (!spec.unit.empty()) out += spec.unit + "; ";
+  return out + option_range_text(spec) + ")";
+}
+
+std::string type_name(const OptionSpec& spec) {
+  switch (spec.kind) {
+    case OptionKind::kChoice:
+      return option_range_text(spec);
+    case OptionKind::kInteger:
+      return spec.word.empty() ? "INT" : "INT|" + spec.word;
+    case OptionKind::kReal:
+      return spec.word.empty() ? "FLOAT" : "FLOAT|" + spec.word;
+    case OptionKind::kSwitch:
+      break;
+  }
+  return "";
+}
+
+}  // namespace
+
+std::vector<std::string> option_names(OptionUse use) {
+  std::vector<std::string> out;
+  for (const OptionSpec& spec : option_table())
+    if (spec.use == use) out.push_back(spec.name);
+  return out;
+}
+
+std::vector<std::string> all_option_names() {
+  std::vector<std::string> out;
+  for (const OptionSpec& spec : option_table())
+    out.push_back(spec.name);
+  return out;
+}
+
+void OptionFlags::add(CLI::App* command, const std::vector<std::string>& names) {
+  for (const std::string& name : names) {
+    const OptionSpec& spec = option_spec(name);
+    if (spec.kind == OptionKind::kSwitch) {
+      // The flag turns the option away from its default (--no-timing).
+      const bool flagged = !std::get<bool>(spec.default_value());
+      command->add_flag_function(
+          spec.flag,
+          [this, name, flagged](std::int64_t) {
+            values_.set(name, flagged);
+            given_.emplace_back(name, flagged);
+          },
+          description(spec));
+      continue;
+    }
+    CLI::Validator check(
+        [&spec](std::string& text) -> std::string {
+          try {
+            parse_option_value(spec, text);
+          } catch (const OptionValueError& e) {
+            return e.problem();
+          }
+          return "";
+        },
+        "", spec.name);
+    command
+        ->add_option(
+            spec.flag,
+            [this, &spec](const CLI::results_t& results) {
+              const OptionValue value = parse_option_value(spec, results.front());
+              values_.set(spec.name, value);
+              given_.emplace_back(spec.name, value);
+              return true;
+            },
+            description(spec))
+        ->type_name(type_name(spec))
+        ->default_str(option_value_text(spec.default_value()))
+        ->check(check);
+  }
+}
+
+}  // namespace saltus::cli
