@@ -1,8 +1,12 @@
 #include "saltus/formats/result_json.h"
 
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <variant>
 
+#include "saltus/base/constants.h"
+#include "saltus/base/input_error.h"
 #include "saltus/base/json_reader.h"
 #include "saltus/formats/model_file.h"
 #include "saltus/formats/motion_file.h"
@@ -23,26 +27,8 @@ nlohmann::json vector_json(const Eigen::Vector3d& v) {
   return {v.x(), v.y(), v.z()};
 }
 
-/// Fields shared by every result.json; optimiser-only ones are null here.
-nlohmann::json base_result(const MotionFile& file, const EvaluateOptions& options,
-                           const std::string& status) {
-  nlohmann::json r;
-  r["format"] = "saltus-result/1";
-  r["status"] = status;
-  r["motion"] = file.motion.name;
-  r["motion_file"] = file.path;
-  r["model"] = file.model.name;
-  r["samples"] = options.samples;
-  r["knots_per_interval"] = options.interpolation.knots_per_interval;
-  r["flight_time_s"] = file.motion.flight_time();
-  r["keyframes"] = file.motion.keyframes.size();
-  r["iterations"] = nullptr;
-  r["solve_seconds"] = nullptr;
-  r["variables"] = nullptr;
-  r["constraints"] = nullptr;
-  r["after"] = nullptr;
-  r["keyframe_times_after"] = nullptr;
-  return r;
+nlohmann::json option_json(const OptionValue& value) {
+  return std::visit([](const auto& v) { return nlohmann::json(v); }, value);
 }
 
 void write_text_file(const std::string& path, const std::string& what,
@@ -77,44 +63,264 @@ nlohmann::json write_outputs(const std::string& out_dir, const MotionFile& file,
   return result;
 }
 
-void put_keyframe_errors(nlohmann::json& r, const KeyframeErrors& e) {
-  r["max_translation_error_m"] = e.max_translation_error_m;
-  r["max_quaternion_error"] = e.max_quaternion_error;
-  r["max_rotation_error_deg"] = e.max_rotation_error_deg;
+/// The fields every result shares.
+ResultJson common_result(const MotionFile& file, ResultJson::Kind kind, const std::string& status,
+                         int knots_per_interval) {
+  ResultJson r;
+  r.kind = kind;
+  r.status = status;
+  r.motion = file.motion.name;
+  r.motion_file = file.path;
+  r.model = file.model.name;
+  r.knots_per_interval = knots_per_interval;
+  r.flight_time_s = file.motion.flight_time();
+  r.keyframes = static_cast<int>(file.motion.keyframes.size());
+  return r;
+}
+
+bool read_bool(const JsonNode& node) {
+  if (!node.value().is_boolean()) node.fail("expected true or false");
+  return node.value().get<bool>();
+}
+
+ForceMetrics read_force_metrics(const JsonNode& node) {
+  node.require_object();
+  ForceMetrics m;
+  m.objective = node.at("objective").as_double();
+  m.avg_root_force = node.at("avg_root_force").as_double();
+  m.rms_force_N = node.at("rms_force_N").as_double();
+  m.rms_moment_Nm = node.at("rms_moment_Nm").as_double();
+  m.max_force_N = node.at("max_force_N").as_double();
+  m.max_moment_Nm = node.at("max_moment_Nm").as_double();
+  return m;
+}
+
+/// The JSON value of a recorded option, as the option's kind reads it.
+OptionValue read_option(const OptionSpec& spec, const JsonNode& node) {
+  const nlohmann::json& v = node.value();
+  OptionValue value;
+  if (spec.kind == OptionKind::kSwitch)
+    value = read_bool(node);
+  else if (v.is_string())
+    value = v.get<std::string>();
+  else if (spec.kind == OptionKind::kInteger)
+    value = node.as_int();
+  else if (spec.kind == OptionKind::kReal)
+    value = node.as_double();
+  else
+    node.fail("expected one of " + option_range_text(spec));
+  try {
+    return checked_option_value(spec, value);
+  } catch (const OptionValueError& e) {
+    node.fail(e.problem());
+  }
+}
+
+bool records(const OptionSpec& spec, ResultJson::Kind kind) {
+  return spec.recorded == ResultRecord::kEveryResult ||
+         (spec.recorded == ResultRecord::kOptimization && kind == ResultJson::Kind::kOptimization);
 }
 
 }  // namespace
 
+std::optional<OptionValue> ResultJson::option(const std::string& result_key) const {
+  for (const auto& [key, value] : options)
+    if (key == result_key) return value;
+  return std::nullopt;
+}
+
+nlohmann::json result_to_json(const ResultJson& r) {
+  nlohmann::json j;
+  j["format"] = r.format;
+  j["status"] = r.status;
+  j["motion"] = r.motion;
+  j["motion_file"] = r.motion_file;
+  j["model"] = r.model;
+  j["knots_per_interval"] = r.knots_per_interval;
+  j["flight_time_s"] = r.flight_time_s;
+  j["keyframes"] = r.keyframes;
+  for (const auto& [key, value] : r.options)
+    j[key] = option_json(value);
+  j["before"] = force_metrics_to_json(r.before);
+  j["keyframe_times_before"] = r.keyframe_times_before;
+  const KeyframeErrors* e = r.keyframe_errors ? &*r.keyframe_errors : nullptr;
+  j["max_translation_error_m"] = e ? nlohmann::json(e->max_translation_error_m) : nullptr;
+  j["max_quaternion_error"] = e ? nlohmann::json(e->max_quaternion_error) : nullptr;
+  j["max_rotation_error_deg"] = e ? nlohmann::json(e->max_rotation_error_deg) : nullptr;
+  if (r.takeoff_angular_momentum)
+    j["takeoff_angular_momentum"] = vector_json(*r.takeoff_angular_momentum);
+  if (const auto& s = r.simulation) {
+    j["takeoff_angular_momentum_source"] = s->angular_momentum_source;
+    nlohmann::json joints = nlohmann::json::object();
+    for (const auto& [name, deg] : s->landing_joint_error_deg)
+      joints[name] = deg;
+    j["landing"] = {{"root_error_deg", s->landing_root_error_deg},
+                    {"joint_error_deg", joints},
+                    {"com_error_m", s->landing_com_error_m}};
+  }
+  const auto& o = r.optimization;
+  // Evaluations and simulations keep the optimiser's DESIGN §6 fields, as null.
+  j["iterations"] = o ? nlohmann::json(o->iterations) : nullptr;
+  j["solve_seconds"] = o ? nlohmann::json(o->solve_seconds) : nullptr;
+  j["variables"] = o ? nlohmann::json(o->variables) : nullptr;
+  j["constraints"] = o ? nlohmann::json(o->constraints) : nullptr;
+  j["after"] = o ? force_metrics_to_json(o->after) : nullptr;
+  j["keyframe_times_after"] = o ? nlohmann::json(o->keyframe_times_after) : nullptr;
+  if (o && o->ipopt_status) j["ipopt_status"] = *o->ipopt_status;
+  if (o && o->restarts) j["restarts"] = *o->restarts;
+  if (o && o->tolerances)
+    j["tolerances"] = {{"translation_m", o->tolerances->translation_m},
+                       {"quaternion", o->tolerances->quaternion}};
+  if (o && o->largest_joint_turn_deg)
+    j["largest_joint_turn_deg"] = {{"before", o->largest_joint_turn_deg->first},
+                                   {"after", o->largest_joint_turn_deg->second}};
+  return j;
+}
+
+ResultJson parse_result_json(const nlohmann::json& document, const std::string& file) {
+  const JsonNode root(document, file);
+  root.require_object();
+  ResultJson r;
+  const JsonNode format = root.at("format");
+  r.format = format.as_string();
+  if (r.format != kResultFormatTag)
+    format.fail("expected \"" + std::string(kResultFormatTag) + "\", found \"" + r.format +
+                "\" (not a saltus evaluate, simulate or optimize result)");
+  r.status = root.at("status").as_string();
+  if (r.status == "evaluated")
+    r.kind = ResultJson::Kind::kEvaluation;
+  else if (root.find("landing"))
+    r.kind = ResultJson::Kind::kSimulation;
+  else if (root.find("after"))
+    r.kind = ResultJson::Kind::kOptimization;
+  else
+    root.at("after").fail("null or missing in a result that was neither evaluated nor simulated");
+  r.motion = root.at("motion").as_string();
+  r.motion_file = root.at("motion_file").as_string();
+  r.model = root.at("model").as_string();
+  r.knots_per_interval = root.at("knots_per_interval").as_int();
+  r.flight_time_s = root.at("flight_time_s").as_double();
+  r.keyframes = root.at("keyframes").as_int();
+  for (const OptionSpec& spec : option_table())
+    if (records(spec, r.kind))
+      if (const auto node = root.find(spec.result_key))
+        r.options.emplace_back(spec.result_key, read_option(spec, *node));
+  r.before = read_force_metrics(root.at("before"));
+  r.keyframe_times_before = root.at("keyframe_times_before").as_double_array();
+  if (const auto translation = root.find("max_translation_error_m")) {
+    KeyframeErrors e;
+    e.max_translation_error_m = translation->as_double();
+    e.max_quaternion_error = root.at("max_quaternion_error").as_double();
+    e.max_rotation_error_deg = root.at("max_rotation_error_deg").as_double();
+    r.keyframe_errors = e;
+  }
+  if (const auto momentum = root.find("takeoff_angular_momentum"))
+    r.takeoff_angular_momentum = momentum->as_vector3();
+  if (r.kind == ResultJson::Kind::kSimulation) {
+    ResultJson::Simulation s;
+    s.angular_momentum_source = root.at("takeoff_angular_momentum_source").as_string();
+    const JsonNode landing = root.at("landing");
+    landing.require_object();
+    s.landing_root_error_deg = landing.at("root_error_deg").as_double();
+    s.landing_com_error_m = landing.at("com_error_m").as_double();
+    const JsonNode joints = landing.at("joint_error_deg");
+    joints.require_object();
+    for (const auto& [name, node] : joints.members())
+      s.landing_joint_error_deg[name] = node.as_double();
+    r.simulation = std::move(s);
+  }
+  if (r.kind == ResultJson::Kind::kOptimization) {
+    ResultJson::Optimization o;
+    o.iterations = root.at("iterations").as_int();
+    o.solve_seconds = root.at("solve_seconds").as_double();
+    o.variables = root.at("variables").as_int();
+    o.constraints = root.at("constraints").as_int();
+    o.after = read_force_metrics(root.at("after"));
+    o.keyframe_times_after = root.at("keyframe_times_after").as_double_array();
+    if (const auto status = root.find("ipopt_status")) o.ipopt_status = status->as_string();
+    if (const auto restarts = root.find("restarts")) o.restarts = restarts->as_int();
+    if (const auto tolerances = root.find("tolerances")) {
+      Tolerances t;
+      t.translation_m = tolerances->at("translation_m").as_double();
+      t.quaternion = tolerances->at("quaternion").as_double();
+      o.tolerances = t;
+    }
+    if (const auto turn = root.find("largest_joint_turn_deg"))
+      o.largest_joint_turn_deg =
+          std::make_pair(turn->at("before").as_double(), turn->at("after").as_double());
+    r.optimization = std::move(o);
+  }
+  return r;
+}
+
+ResultJson read_result_json(const std::string& path) {
+  return parse_result_json(read_json_file(path), path);
+}
+
+ResultJson evaluation_result(const MotionFile& file, const MotionEvaluation& e,
+                             const EvaluateOptions& options) {
+  ResultJson r = common_result(file, ResultJson::Kind::kEvaluation, "evaluated",
+                               options.interpolation.knots_per_interval);
+  r.options = recorded_options(with_evaluation_options(options), false);
+  r.before = e.metrics;
+  r.keyframe_times_before = e.keyframe_times;
+  r.keyframe_errors = e.keyframe_errors;
+  r.takeoff_angular_momentum = e.samples.front().angular_momentum;
+  return r;
+}
+
+ResultJson simulation_result(const MotionFile& file, const SimulationResult& s,
+                             const EvaluateOptions& options) {
+  ResultJson r = common_result(file, ResultJson::Kind::kSimulation, "simulated",
+                               options.interpolation.knots_per_interval);
+  r.options = recorded_options(with_evaluation_options(options), false);
+  r.before = s.metrics;
+  for (const Keyframe& k : file.motion.keyframes)
+    r.keyframe_times_before.push_back(k.time);
+  r.takeoff_angular_momentum = s.angular_momentum;
+  ResultJson::Simulation sim;
+  sim.angular_momentum_source = s.angular_momentum_from_file ? "motion file" : "keyframes";
+  sim.landing_root_error_deg = s.landing_root_error_deg;
+  sim.landing_joint_error_deg = s.landing_joint_error_deg;
+  sim.landing_com_error_m = s.landing_com_error_m;
+  r.simulation = std::move(sim);
+  return r;
+}
+
+ResultJson optimization_result(const MotionFile& file, const OptimizationResult& result,
+                               const OptimizeOptions& options) {
+  // knots_per_interval is the K used; the one asked for is an option (option table).
+  ResultJson r = common_result(file, ResultJson::Kind::kOptimization, result.solve.status,
+                               result.knots_per_interval);
+  r.options = recorded_options(options, true);
+  r.before = result.before.metrics;
+  r.keyframe_times_before = result.before.keyframe_times;
+  r.keyframe_errors = result.after.keyframe_errors;
+  ResultJson::Optimization o;
+  o.iterations = result.solve.iterations;
+  o.solve_seconds = result.solve.seconds;
+  o.variables = result.variables;
+  o.constraints = result.constraints;
+  o.after = result.after.metrics;
+  o.keyframe_times_after = result.after.keyframe_times;
+  o.ipopt_status = result.solve.ipopt_status;
+  o.restarts = result.solve.restarts;
+  o.tolerances = file.motion.tolerances;
+  o.largest_joint_turn_deg =
+      std::make_pair(largest_control_turn(result.before.trajectory, 1) * kDegreesPerRadian,
+                     largest_control_turn(result.after.trajectory, 1) * kDegreesPerRadian);
+  r.optimization = std::move(o);
+  return r;
+}
+
 nlohmann::json evaluation_result_json(const MotionFile& file, const MotionEvaluation& e,
                                       const EvaluateOptions& options) {
-  nlohmann::json r = base_result(file, options, "evaluated");
-  r["before"] = force_metrics_to_json(e.metrics);
-  r["keyframe_times_before"] = e.keyframe_times;
-  put_keyframe_errors(r, e.keyframe_errors);
-  r["takeoff_angular_momentum"] = vector_json(e.samples.front().angular_momentum);
-  return r;
+  return result_to_json(evaluation_result(file, e, options));
 }
 
 nlohmann::json simulation_result_json(const MotionFile& file, const SimulationResult& s,
                                       const EvaluateOptions& options) {
-  nlohmann::json r = base_result(file, options, "simulated");
-  r["before"] = force_metrics_to_json(s.metrics);
-  std::vector<double> times;
-  for (const Keyframe& k : file.motion.keyframes)
-    times.push_back(k.time);
-  r["keyframe_times_before"] = times;
-  r["max_translation_error_m"] = nullptr;
-  r["max_quaternion_error"] = nullptr;
-  r["max_rotation_error_deg"] = nullptr;
-  r["takeoff_angular_momentum"] = vector_json(s.angular_momentum);
-  r["takeoff_angular_momentum_source"] = s.angular_momentum_from_file ? "motion file" : "keyframes";
-  nlohmann::json joints = nlohmann::json::object();
-  for (const auto& [name, deg] : s.landing_joint_error_deg)
-    joints[name] = deg;
-  r["landing"] = {{"root_error_deg", s.landing_root_error_deg},
-                  {"joint_error_deg", joints},
-                  {"com_error_m", s.landing_com_error_m}};
-  return r;
+  return result_to_json(simulation_result(file, s, options));
 }
 
 nlohmann::json write_evaluation_outputs(const std::string& out_dir, const MotionFile& file,
@@ -133,33 +339,7 @@ nlohmann::json write_simulation_outputs(const std::string& out_dir, const Motion
 
 nlohmann::json optimization_result_json(const MotionFile& file, const OptimizationResult& result,
                                         const OptimizeOptions& options) {
-  EvaluateOptions evaluate;
-  evaluate.samples = options.nlp.samples;
-  evaluate.interpolation.knots_per_interval = result.knots_per_interval;  // the one used
-  nlohmann::json r = base_result(file, evaluate, result.solve.status);
-  r["knots_per_interval_requested"] = options.nlp.knots_per_interval;
-  r["ipopt_status"] = result.solve.ipopt_status;
-  r["restarts"] = result.solve.restarts;
-  r["formulation"] = options.nlp.formulation == Formulation::kRelaxed ? "relaxed" : "strict";
-  if (options.nlp.formulation == Formulation::kStrict) r["epsilon"] = options.nlp.epsilon;
-  r["timing_optimized"] = options.nlp.optimize_timing;
-  r["iterations"] = result.solve.iterations;
-  r["solve_seconds"] = result.solve.seconds;
-  r["variables"] = result.variables;
-  r["constraints"] = result.constraints;
-  r["before"] = force_metrics_to_json(result.before.metrics);
-  r["after"] = force_metrics_to_json(result.after.metrics);
-  r["keyframe_times_before"] = result.before.keyframe_times;
-  r["keyframe_times_after"] = result.after.keyframe_times;
-  put_keyframe_errors(r, result.after.keyframe_errors);
-  r["tolerances"] = {{"translation_m", file.motion.tolerances.translation_m},
-                     {"quaternion", file.motion.tolerances.quaternion}};
-  r["joint_turn_limit_deg"] =
-      options.nlp.limits_joint_turns() ? options.nlp.joint_turn_limit * kDegreesPerRadian : 0.0;
-  r["largest_joint_turn_deg"] = {
-      {"before", largest_control_turn(result.before.trajectory, 1) * kDegreesPerRadian},
-      {"after", largest_control_turn(result.after.trajectory, 1) * kDegreesPerRadian}};
-  return r;
+  return result_to_json(optimization_result(file, result, options));
 }
 
 nlohmann::json write_optimization_outputs(const std::string& out_dir, const MotionFile& file,
@@ -179,6 +359,40 @@ nlohmann::json write_optimization_outputs(const std::string& out_dir, const Moti
   write_common_files(folder, file, r);
   folder.commit();
   return r;
+}
+
+std::string folder_name(const std::string& dir) {
+  const std::filesystem::path folder(dir);
+  return folder.filename().empty() ? folder.parent_path().filename().string()
+                                   : folder.filename().string();
+}
+
+ResultFolder read_result_folder(const std::string& dir) {
+  namespace fs = std::filesystem;
+  const fs::path folder(dir);
+  if (!fs::is_directory(folder))
+    throw InputError(dir, "",
+                     "not a folder (expected a saltus evaluate, simulate or optimize "
+                     "output folder)");
+  ResultFolder out;
+  out.path = dir;
+  out.name = folder_name(dir);
+  const std::string result_path = (folder / "result.json").string();
+  if (!fs::exists(result_path))
+    throw InputError(result_path, "", "missing (not a saltus result folder)");
+  out.result = read_result_json(result_path);
+  auto trajectory = [&](const char* name) {
+    const std::string csv = (folder / name).string();
+    if (!fs::exists(csv)) throw InputError(csv, "", "missing (not a complete result folder)");
+    return read_trajectory_csv(csv);
+  };
+  if (out.result.kind == ResultJson::Kind::kOptimization) {
+    out.before = trajectory("trajectory_before.csv");
+    out.after = trajectory("trajectory_after.csv");
+  } else {
+    out.before = trajectory("trajectory.csv");
+  }
+  return out;
 }
 
 }  // namespace saltus

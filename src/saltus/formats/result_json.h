@@ -1,20 +1,95 @@
 #pragma once
 /// @file
 /// The result folders of `saltus evaluate`, `saltus simulate` and `saltus optimize` (DESIGN §6):
-/// result.json, the trajectory CSVs, model.json and optimized.motion.json, all or nothing
-/// (OutputFolder).
+/// result.json, the trajectory CSVs, model.json and optimized.motion.json, written all or
+/// nothing (OutputFolder) and read back here. result.json records the options of the option
+/// table (optim/option_table.h) under their result keys.
 
+#include <Eigen/Core>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "saltus/evaluation/evaluate.h"
 #include "saltus/evaluation/simulate.h"
+#include "saltus/formats/motion_file.h"
+#include "saltus/formats/trajectory_csv.h"
 #include "saltus/optim/optimize.h"
+#include "saltus/optim/option_table.h"
 
 namespace saltus {
 
+/// result.json's "format".
+inline constexpr const char* kResultFormatTag = "saltus-result/1";
+
+/// result.json as data: what the writers below put in it and read_result_json reads back.
+/// Keys added after the first release (restarts, tolerances, ...) may be missing from older
+/// files; they read as empty.
+struct ResultJson {
+  enum class Kind { kEvaluation, kSimulation, kOptimization };
+  Kind kind = Kind::kEvaluation;
+  std::string format = kResultFormatTag;
+  std::string status;          ///< "evaluated", "simulated", or the solver's ("solved", ...)
+  std::string motion;          ///< the motion's name
+  std::string motion_file;     ///< the motion file as given
+  std::string model;           ///< the body model's name
+  int knots_per_interval = 1;  ///< the refinement K used
+  double flight_time_s = 0.0;
+  int keyframes = 0;
+  /// The options recorded (OptionSpec::result_key and value), in table order.
+  std::vector<std::pair<std::string, OptionValue>> options;
+  ForceMetrics before;  ///< the evaluated, simulated or interpolated ("before") motion
+  std::vector<double> keyframe_times_before;
+  /// Of the evaluated or the optimised motion; none for simulations (null in the file).
+  std::optional<KeyframeErrors> keyframe_errors;
+  std::optional<Eigen::Vector3d> takeoff_angular_momentum;  ///< evaluations and simulations
+
+  struct Simulation {
+    std::string angular_momentum_source;  ///< "motion file" or "keyframes"
+    double landing_root_error_deg = 0.0;
+    std::map<std::string, double> landing_joint_error_deg;  ///< joint name -> degrees
+    double landing_com_error_m = 0.0;
+  };
+  std::optional<Simulation> simulation;
+
+  struct Optimization {
+    int iterations = 0;
+    double solve_seconds = 0.0;
+    int variables = 0;
+    int constraints = 0;
+    ForceMetrics after;
+    std::vector<double> keyframe_times_after;
+    std::optional<std::string> ipopt_status;
+    std::optional<int> restarts;
+    std::optional<Tolerances> tolerances;
+    /// Largest joint turn between two control points (°), before and after.
+    std::optional<std::pair<double, double>> largest_joint_turn_deg;
+  };
+  std::optional<Optimization> optimization;
+
+  /// The value recorded for `result_key`, if any.
+  std::optional<OptionValue> option(const std::string& result_key) const;
+};
+
+/// The document to write; `parse_result_json(result_to_json(r)) == r`.
+nlohmann::json result_to_json(const ResultJson& result);
+/// Reads a result.json document. Throws InputError naming `file` and the JSON field.
+ResultJson parse_result_json(const nlohmann::json& document, const std::string& file);
+ResultJson read_result_json(const std::string& path);
+
 /// before/after block of result.json.
 nlohmann::json force_metrics_to_json(const ForceMetrics& metrics);
+
+/// What result.json records of an evaluation, a simulation and an optimisation.
+ResultJson evaluation_result(const MotionFile& file, const MotionEvaluation& evaluation,
+                             const EvaluateOptions& options);
+ResultJson simulation_result(const MotionFile& file, const SimulationResult& simulation,
+                             const EvaluateOptions& options);
+ResultJson optimization_result(const MotionFile& file, const OptimizationResult& result,
+                               const OptimizeOptions& options);
 
 /// result.json of an evaluation ("before" filled; optimiser-only fields null).
 nlohmann::json evaluation_result_json(const MotionFile& file, const MotionEvaluation& evaluation,
@@ -44,5 +119,22 @@ nlohmann::json optimization_result_json(const MotionFile& file, const Optimizati
 nlohmann::json write_optimization_outputs(const std::string& out_dir, const MotionFile& file,
                                           const OptimizationResult& result,
                                           const OptimizeOptions& options);
+
+/// A result folder read back: result.json and its trajectories.
+struct ResultFolder {
+  std::string path;
+  std::string name;  ///< the folder's own name
+  ResultJson result;
+  /// trajectory.csv, or an optimisation's trajectory_before.csv.
+  TrajectoryCsv before;
+  std::optional<TrajectoryCsv> after;  ///< an optimisation's trajectory_after.csv
+};
+
+/// Reads a `saltus evaluate`, `simulate` or `optimize` output folder. Throws InputError naming
+/// the file (and field) that is missing or malformed.
+ResultFolder read_result_folder(const std::string& dir);
+
+/// The folder's own name ("out" for "a/out" and "a/out/").
+std::string folder_name(const std::string& dir);
 
 }  // namespace saltus

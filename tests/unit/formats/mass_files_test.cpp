@@ -1,0 +1,156 @@
+// The mass study's folder: mass.csv and result.json written by write_mass_outputs read back (the
+// joint wrenches to the ten digits mass.csv keeps), and malformed files refused with the file
+// and column named.
+
+#include "saltus/formats/mass_files.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "saltus/base/input_error.h"
+#include "saltus/evaluation/evaluate.h"
+#include "saltus/formats/motion_file.h"
+
+namespace saltus {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A mass study without the optimisations (too slow for a unit test): each run's "after" is the
+/// interpolated motion evaluated with that run's model, which is all the writer reads.
+class MassFilesTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    file_ = new MotionFile(load_motion_file(std::string(SALTUS_EXAMPLES_DIR) +
+                                            "/motions/M1-straight-back-somersault.motion.json"));
+    options_ = new MassStudyOptions();
+    options_->load_segments = {"thigh_r", "upper_arm_r", "foot_l"};
+    study_ = new MassStudyResult();
+    study_->load_segments = options_->load_segments;
+    EvaluateOptions evaluate;
+    evaluate.samples = 23;
+    BodyModel scaled = file_->model;
+    for (const std::string& s : options_->scaled_segments)
+      scaled = scale_segment_mass(scaled, s, options_->factor);
+    for (const BodyModel* model : {&file_->model, &scaled}) {
+      MassStudyRun run;
+      run.label = model == &scaled ? "thighs x1.5" : "table2";
+      run.model = *model;
+      run.result.before = run.result.after = evaluate_motion(file_->motion, *model, evaluate);
+      run.result.solve.status = "not run";
+      run.result.solve.iterations = model == &scaled ? 7 : 5;
+      study_->runs.push_back(std::move(run));
+    }
+    folder_ = new fs::path(fs::temp_directory_path() / "saltus_mass_files_test");
+    fs::remove_all(*folder_);
+    write_mass_outputs(folder_->string(), *file_, *study_, *options_);
+  }
+  static void TearDownTestSuite() {
+    fs::remove_all(*folder_);
+    delete folder_;
+    delete study_;
+    delete options_;
+    delete file_;
+  }
+  static MotionFile* file_;
+  static MassStudyOptions* options_;
+  static MassStudyResult* study_;
+  static fs::path* folder_;
+};
+MotionFile* MassFilesTest::file_ = nullptr;
+MassStudyOptions* MassFilesTest::options_ = nullptr;
+MassStudyResult* MassFilesTest::study_ = nullptr;
+fs::path* MassFilesTest::folder_ = nullptr;
+
+/// Equal to the ten significant digits mass.csv keeps.
+void expect_ten_digits(double read, double written) {
+  EXPECT_NEAR(read, written, 1e-9 * std::abs(written) + 1e-300);
+}
+
+TEST_F(MassFilesTest, FolderReadsBack) {
+  ASSERT_TRUE(is_mass_study_folder(folder_->string()));
+  EXPECT_FALSE(is_mass_study_folder("/nonexistent/folder"));
+  EXPECT_FALSE(is_mass_study_folder(SALTUS_EXAMPLES_DIR));
+  const MassStudyFolder f = read_mass_study_folder(folder_->string() + "/");
+  EXPECT_EQ(f.name, "saltus_mass_files_test");
+  EXPECT_EQ(f.motion, file_->motion.name);
+  EXPECT_EQ(f.motion_file, file_->path);
+  EXPECT_EQ(f.factor, options_->factor);
+  EXPECT_EQ(f.scaled_segments, options_->scaled_segments);
+  EXPECT_EQ(f.load_segments, options_->load_segments);
+  for (std::size_t r = 0; r < 2; ++r) {
+    const MassStudyRun& run = study_->runs[r];
+    EXPECT_EQ(f.runs[r].label, run.label);
+    EXPECT_EQ(f.runs[r].model, run.model.name);
+    EXPECT_EQ(f.runs[r].status, "not run");
+    EXPECT_EQ(f.runs[r].iterations, run.result.solve.iterations);
+    EXPECT_EQ(f.runs[r].avg_force_after_N, run.result.after.metrics.avg_root_force);
+  }
+  const MassCsv& csv = f.loads;
+  ASSERT_EQ(csv.time.size(), 23u);
+  ASSERT_EQ(csv.load_segments, options_->load_segments);
+  ASSERT_EQ(csv.loads.size(), 3u);
+  for (std::size_t s = 0; s < csv.loads.size(); ++s) {
+    for (std::size_t r = 0; r < 2; ++r) {
+      const MassStudyRun& run = study_->runs[r];
+      const int index = run.model.segment_index(csv.load_segments[s]);
+      const MassLoads& loads = csv.loads[s][r];
+      ASSERT_EQ(loads.wrench.size(), 23u);
+      for (std::size_t k = 0; k < 23; ++k) {
+        expect_ten_digits(csv.time[k], run.result.after.samples[k].time);
+        const Vector6d& w = run.result.after.samples[k].joint_wrench.at(index);
+        for (int i = 0; i < 6; ++i)
+          expect_ten_digits(loads.wrench[k][i], w[i]);
+        expect_ten_digits(loads.force_N[k], w.head<3>().norm());
+        expect_ten_digits(loads.moment_Nm[k], w.tail<3>().norm());
+      }
+    }
+  }
+  // Heavier thighs need a larger force at the hip: the runs differ there.
+  double diff = 0;
+  for (std::size_t k = 0; k < 23; ++k)
+    diff = std::max(diff, std::abs(csv.loads[0][1].force_N[k] - csv.loads[0][0].force_N[k]));
+  EXPECT_GT(diff, 1.0);
+}
+
+TEST(MassCsv, MissingOrMisnamedColumnsAreNamed) {
+  CsvTable table;
+  table.columns = {"t"};
+  for (const char* run : {"given", "scaled"})
+    for (const char* q : {"fx", "fy", "fz", "mx", "my", "mz", "force_N", "moment_Nm"})
+      table.columns.push_back(std::string(run) + ".thigh_r." + q);
+  table.rows = {std::vector<double>(17, 1.0), std::vector<double>(17, 2.0)};
+  const MassCsv ok = parse_mass_csv(table, "mass.csv");
+  EXPECT_EQ(ok.load_segments, std::vector<std::string>{"thigh_r"});
+  EXPECT_EQ(ok.loads[0][1].moment_Nm, (std::vector<double>{1.0, 2.0}));
+
+  CsvTable renamed = table;
+  renamed.columns[16] = "scaled.thigh_r.moment";
+  try {
+    parse_mass_csv(renamed, "mass.csv");
+    ADD_FAILURE() << "a missing column was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("mass.csv"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("scaled.thigh_r.moment_Nm"), std::string::npos)
+        << e.what();
+  }
+  CsvTable short_table = table;
+  short_table.columns.pop_back();
+  for (auto& row : short_table.rows)
+    row.pop_back();
+  EXPECT_THROW(parse_mass_csv(short_table, "mass.csv"), InputError);
+  CsvTable no_time = table;
+  no_time.columns[0] = "time";
+  EXPECT_THROW(parse_mass_csv(no_time, "mass.csv"), InputError);
+}
+
+TEST(MassStudyFolder, RejectsOtherFolders) {
+  EXPECT_THROW(read_mass_study_folder("/nonexistent/folder"), InputError);
+  EXPECT_THROW(read_mass_study_folder(SALTUS_EXAMPLES_DIR), InputError);
+}
+
+}  // namespace
+}  // namespace saltus

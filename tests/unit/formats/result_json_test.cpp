@@ -1,0 +1,341 @@
+// result.json and result folders: what is written reads back the same (seeded documents of every
+// kind, and real evaluate / simulate / optimize folders), older files without the later keys
+// still read, and bad documents are refused naming the field.
+
+#include "saltus/formats/result_json.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+
+#include "saltus/base/input_error.h"
+#include "saltus/formats/motion_file.h"
+
+namespace saltus {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string m1_path() {
+  return std::string(SALTUS_EXAMPLES_DIR) + "/motions/M1-straight-back-somersault.motion.json";
+}
+
+/// A fresh folder under the system's temporary folder, removed afterwards.
+struct TempDir {
+  explicit TempDir(const std::string& name) : path(fs::temp_directory_path() / name) {
+    fs::remove_all(path);
+  }
+  ~TempDir() { fs::remove_all(path); }
+  fs::path path;
+};
+
+void expect_same_metrics(const ForceMetrics& a, const ForceMetrics& b) {
+  EXPECT_EQ(a.objective, b.objective);
+  EXPECT_EQ(a.avg_root_force, b.avg_root_force);
+  EXPECT_EQ(a.rms_force_N, b.rms_force_N);
+  EXPECT_EQ(a.rms_moment_Nm, b.rms_moment_Nm);
+  EXPECT_EQ(a.max_force_N, b.max_force_N);
+  EXPECT_EQ(a.max_moment_Nm, b.max_moment_Nm);
+}
+
+void expect_same(const ResultJson& a, const ResultJson& b) {
+  EXPECT_EQ(a.kind, b.kind);
+  EXPECT_EQ(a.format, b.format);
+  EXPECT_EQ(a.status, b.status);
+  EXPECT_EQ(a.motion, b.motion);
+  EXPECT_EQ(a.motion_file, b.motion_file);
+  EXPECT_EQ(a.model, b.model);
+  EXPECT_EQ(a.knots_per_interval, b.knots_per_interval);
+  EXPECT_EQ(a.flight_time_s, b.flight_time_s);
+  EXPECT_EQ(a.keyframes, b.keyframes);
+  EXPECT_EQ(a.options, b.options);
+  expect_same_metrics(a.before, b.before);
+  EXPECT_EQ(a.keyframe_times_before, b.keyframe_times_before);
+  ASSERT_EQ(a.keyframe_errors.has_value(), b.keyframe_errors.has_value());
+  if (a.keyframe_errors) {
+    EXPECT_EQ(a.keyframe_errors->max_translation_error_m,
+              b.keyframe_errors->max_translation_error_m);
+    EXPECT_EQ(a.keyframe_errors->max_quaternion_error, b.keyframe_errors->max_quaternion_error);
+    EXPECT_EQ(a.keyframe_errors->max_rotation_error_deg, b.keyframe_errors->max_rotation_error_deg);
+  }
+  EXPECT_EQ(a.takeoff_angular_momentum, b.takeoff_angular_momentum);
+  ASSERT_EQ(a.simulation.has_value(), b.simulation.has_value());
+  if (a.simulation) {
+    EXPECT_EQ(a.simulation->angular_momentum_source, b.simulation->angular_momentum_source);
+    EXPECT_EQ(a.simulation->landing_root_error_deg, b.simulation->landing_root_error_deg);
+    EXPECT_EQ(a.simulation->landing_joint_error_deg, b.simulation->landing_joint_error_deg);
+    EXPECT_EQ(a.simulation->landing_com_error_m, b.simulation->landing_com_error_m);
+  }
+  ASSERT_EQ(a.optimization.has_value(), b.optimization.has_value());
+  if (a.optimization) {
+    const auto &x = *a.optimization, &y = *b.optimization;
+    EXPECT_EQ(x.iterations, y.iterations);
+    EXPECT_EQ(x.solve_seconds, y.solve_seconds);
+    EXPECT_EQ(x.variables, y.variables);
+    EXPECT_EQ(x.constraints, y.constraints);
+    expect_same_metrics(x.after, y.after);
+    EXPECT_EQ(x.keyframe_times_after, y.keyframe_times_after);
+    EXPECT_EQ(x.ipopt_status, y.ipopt_status);
+    EXPECT_EQ(x.restarts, y.restarts);
+    ASSERT_EQ(x.tolerances.has_value(), y.tolerances.has_value());
+    if (x.tolerances) {
+      EXPECT_EQ(x.tolerances->translation_m, y.tolerances->translation_m);
+      EXPECT_EQ(x.tolerances->quaternion, y.tolerances->quaternion);
+    }
+    EXPECT_EQ(x.largest_joint_turn_deg, y.largest_joint_turn_deg);
+  }
+}
+
+/// A result.json of `kind` with seeded values in every field the kind has.
+ResultJson random_result(ResultJson::Kind kind, std::mt19937& rng) {
+  std::uniform_real_distribution<double> any(-1e3, 1e3), positive(1e-9, 1e4);
+  std::uniform_int_distribution<int> count(2, 12);
+  auto metrics = [&] {
+    ForceMetrics m;
+    m.objective = positive(rng);
+    m.avg_root_force = positive(rng);
+    m.rms_force_N = positive(rng);
+    m.rms_moment_Nm = positive(rng);
+    m.max_force_N = positive(rng);
+    m.max_moment_Nm = positive(rng);
+    return m;
+  };
+  auto times = [&](int n) {
+    std::vector<double> t{0.0};
+    for (int i = 1; i < n; ++i)
+      t.push_back(t.back() + positive(rng) / 1e4);
+    return t;
+  };
+  ResultJson r;
+  r.kind = kind;
+  r.status = kind == ResultJson::Kind::kEvaluation   ? "evaluated"
+             : kind == ResultJson::Kind::kSimulation ? "simulated"
+                                                     : (rng() % 2 ? "solved" : "max_iterations");
+  r.motion = "motion " + std::to_string(rng());
+  r.motion_file = "dir/m" + std::to_string(rng()) + ".motion.json";
+  r.model = "model-" + std::to_string(rng() % 100);
+  r.knots_per_interval = 1 + static_cast<int>(rng() % 4);
+  r.keyframes = count(rng);
+  r.flight_time_s = positive(rng) / 1e3;
+  // The options through the table, at seeded values.
+  OptionValues values;
+  values.set("samples", static_cast<int>(2 + rng() % 5000));
+  values.set("knots_per_interval", static_cast<int>(1 + rng() % 50));
+  values.set("formulation", std::string(rng() % 2 ? "strict" : "relaxed"));
+  values.set("epsilon", positive(rng));
+  values.set("optimize_timing", rng() % 2 == 0);
+  values.set("max_joint_turn", std::uniform_real_distribution<double>(0, 360)(rng));
+  r.options = recorded_options(values.optimize_options(), kind == ResultJson::Kind::kOptimization);
+  r.before = metrics();
+  r.keyframe_times_before = times(r.keyframes);
+  if (kind != ResultJson::Kind::kSimulation)
+    r.keyframe_errors = KeyframeErrors{positive(rng), positive(rng), positive(rng)};
+  if (kind != ResultJson::Kind::kOptimization)
+    r.takeoff_angular_momentum = Eigen::Vector3d(any(rng), any(rng), any(rng));
+  if (kind == ResultJson::Kind::kSimulation) {
+    ResultJson::Simulation s;
+    s.angular_momentum_source = rng() % 2 ? "motion file" : "keyframes";
+    s.landing_root_error_deg = positive(rng);
+    s.landing_com_error_m = positive(rng);
+    for (const char* joint : {"root", "hip_l", "knee_r"})
+      s.landing_joint_error_deg[joint] = positive(rng);
+    r.simulation = s;
+  }
+  if (kind == ResultJson::Kind::kOptimization) {
+    ResultJson::Optimization o;
+    o.iterations = count(rng) * 10;
+    o.solve_seconds = positive(rng);
+    o.variables = count(rng) * 30;
+    o.constraints = count(rng) * 7;
+    o.after = metrics();
+    o.keyframe_times_after = times(r.keyframes);
+    o.ipopt_status = "acceptable";
+    o.restarts = static_cast<int>(rng() % 3);
+    o.tolerances = Tolerances{positive(rng), positive(rng)};
+    o.largest_joint_turn_deg = std::make_pair(positive(rng), positive(rng));
+    r.optimization = o;
+  }
+  return r;
+}
+
+TEST(ResultJson, EveryKindReadsBackWhatWasWritten) {
+  std::mt19937 rng(12);
+  for (int trial = 0; trial < 30; ++trial) {
+    for (auto kind : {ResultJson::Kind::kEvaluation, ResultJson::Kind::kSimulation,
+                      ResultJson::Kind::kOptimization}) {
+      const ResultJson written = random_result(kind, rng);
+      // Through the text a file holds, as nlohmann writes and reads it.
+      const std::string text = result_to_json(written).dump(2);
+      const ResultJson read = parse_result_json(nlohmann::json::parse(text), "r.json");
+      SCOPED_TRACE(text);
+      expect_same(read, written);
+      EXPECT_EQ(result_to_json(read).dump(2), text);
+    }
+  }
+}
+
+TEST(ResultJson, KeysAreThoseOfDesignSection6) {
+  std::mt19937 rng(3);
+  const nlohmann::json e = result_to_json(random_result(ResultJson::Kind::kEvaluation, rng));
+  for (const char* key : {"format",
+                          "status",
+                          "motion",
+                          "motion_file",
+                          "model",
+                          "samples",
+                          "knots_per_interval",
+                          "flight_time_s",
+                          "keyframes",
+                          "iterations",
+                          "solve_seconds",
+                          "variables",
+                          "constraints",
+                          "before",
+                          "after",
+                          "keyframe_times_before",
+                          "keyframe_times_after",
+                          "max_translation_error_m",
+                          "max_quaternion_error",
+                          "max_rotation_error_deg",
+                          "takeoff_angular_momentum"})
+    EXPECT_TRUE(e.contains(key)) << key;
+  EXPECT_EQ(e.size(), 21u) << e.dump();
+  EXPECT_TRUE(e["after"].is_null());
+  EXPECT_TRUE(e["iterations"].is_null());
+  EXPECT_TRUE(e["samples"].is_number_integer());
+  const nlohmann::json o = result_to_json(random_result(ResultJson::Kind::kOptimization, rng));
+  for (const char* key :
+       {"knots_per_interval_requested", "ipopt_status", "restarts", "formulation",
+        "timing_optimized", "tolerances", "joint_turn_limit_deg", "largest_joint_turn_deg"})
+    EXPECT_TRUE(o.contains(key)) << key;
+  EXPECT_FALSE(o.contains("takeoff_angular_momentum"));
+  EXPECT_EQ(o.contains("epsilon"), o["formulation"] == "strict");
+  EXPECT_TRUE(o["iterations"].is_number_integer());
+  EXPECT_TRUE(o["joint_turn_limit_deg"].is_number_float());
+}
+
+TEST(ResultJson, OlderOptimisationResultsWithoutTheLaterKeysStillRead) {
+  std::mt19937 rng(5);
+  nlohmann::json j = result_to_json(random_result(ResultJson::Kind::kOptimization, rng));
+  for (const char* key : {"restarts", "tolerances", "largest_joint_turn_deg", "ipopt_status",
+                          "knots_per_interval_requested", "joint_turn_limit_deg", "formulation",
+                          "timing_optimized", "epsilon"})
+    j.erase(key);
+  const ResultJson r = parse_result_json(j, "old.json");
+  EXPECT_EQ(r.kind, ResultJson::Kind::kOptimization);
+  ASSERT_TRUE(r.optimization);
+  EXPECT_FALSE(r.optimization->restarts);
+  EXPECT_FALSE(r.optimization->tolerances);
+  EXPECT_FALSE(r.option("formulation"));
+  ASSERT_TRUE(r.option("samples"));
+  EXPECT_EQ(result_to_json(r), j);
+}
+
+TEST(ResultJson, BadDocumentsNameTheField) {
+  std::mt19937 rng(9);
+  const nlohmann::json good = result_to_json(random_result(ResultJson::Kind::kOptimization, rng));
+  auto expect_error = [](const nlohmann::json& j, const std::string& field) {
+    try {
+      parse_result_json(j, "bad.json");
+      ADD_FAILURE() << "accepted, expected an error at " << field;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("bad.json"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+    }
+  };
+  nlohmann::json j = good;
+  j["format"] = "saltus-study/1";
+  expect_error(j, "/format");
+  j = good;
+  j["samples"] = 1;
+  expect_error(j, "/samples");
+  j = good;
+  j["formulation"] = "loose";
+  expect_error(j, "/formulation");
+  j = good;
+  j["timing_optimized"] = "yes";
+  expect_error(j, "/timing_optimized");
+  j = good;
+  j["after"].erase("max_force_N");
+  expect_error(j, "/after");
+  j = good;
+  j["after"] = nullptr;
+  expect_error(j, "/after");
+  j = good;
+  j["keyframe_times_before"] = "0, 1";
+  expect_error(j, "/keyframe_times_before");
+  expect_error(nlohmann::json::array(), "bad.json");
+}
+
+/// The motion's samples as the trajectory CSV holds them (rotations in one hemisphere).
+void expect_trajectory(const TrajectoryCsv& csv, const std::vector<SampleRecord>& samples,
+                       const BodyModel& model) {
+  ASSERT_EQ(csv.samples.size(), samples.size());
+  ASSERT_EQ(csv.segments.size(), static_cast<std::size_t>(model.size()));
+  for (int s = 0; s < model.size(); ++s)
+    EXPECT_EQ(csv.segments[s], model.segments[s].name);
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    EXPECT_EQ(csv.samples[k].time, samples[k].time);
+    EXPECT_EQ(csv.samples[k].root_wrench, samples[k].root_wrench);
+    EXPECT_EQ(csv.samples[k].residual, samples[k].residual);
+    EXPECT_EQ(csv.samples[k].com, samples[k].com);
+    for (int s = 0; s < model.size(); ++s) {
+      EXPECT_EQ(csv.samples[k].segment_position[s], samples[k].segment_position[s]);
+      Eigen::Quaterniond q = samples[k].segment_rotation[s];
+      if (q.w() < 0) q.coeffs() = -q.coeffs();
+      EXPECT_EQ(csv.samples[k].segment_rotation[s].coeffs(), q.coeffs());
+    }
+  }
+}
+
+TEST(ResultFolder, EvaluationAndSimulationFoldersReadBack) {
+  const MotionFile file = load_motion_file(m1_path());
+  EvaluateOptions options;
+  options.samples = 21;
+  options.interpolation.knots_per_interval = 2;
+  TempDir dir("saltus_result_json_test_eval");
+  const MotionEvaluation e = evaluate_motion(file.motion, file.model, options);
+  write_evaluation_outputs((dir.path / "e").string(), file, e, options);
+  const ResultFolder f = read_result_folder((dir.path / "e/").string());
+  EXPECT_EQ(f.name, "e");
+  expect_same(f.result, evaluation_result(file, e, options));
+  EXPECT_EQ(f.result.option("samples"), OptionValue(21));
+  EXPECT_EQ(f.result.knots_per_interval, 2);
+  EXPECT_FALSE(f.after);
+  expect_trajectory(f.before, e.samples, file.model);
+
+  const SimulationResult s = simulate_motion(file.motion, file.model, options);
+  write_simulation_outputs((dir.path / "s").string(), file, s, options);
+  const ResultFolder g = read_result_folder((dir.path / "s").string());
+  EXPECT_EQ(g.result.kind, ResultJson::Kind::kSimulation);
+  expect_same(g.result, simulation_result(file, s, options));
+  expect_trajectory(g.before, s.samples, file.model);
+}
+
+TEST(ResultFolder, OptimisationFolderReadsBack) {
+  const MotionFile file = load_motion_file(m1_path());
+  OptionValues values;
+  values.set("samples", 21);
+  values.set("max_iterations", 2);
+  values.set("formulation", std::string("strict"));
+  const OptimizeOptions options = values.optimize_options();
+  const OptimizationResult result = optimize_motion(file.motion, file.model, options);
+  TempDir dir("saltus_result_json_test_opt");
+  write_optimization_outputs(dir.path.string(), file, result, options);
+  const ResultFolder f = read_result_folder(dir.path.string());
+  expect_same(f.result, optimization_result(file, result, options));
+  EXPECT_EQ(f.result.option("epsilon"), values.get("epsilon"));
+  EXPECT_EQ(f.result.option("timing_optimized"), OptionValue(true));
+  ASSERT_TRUE(f.after);
+  expect_trajectory(f.before, result.before.samples, file.model);
+  expect_trajectory(*f.after, result.after.samples, file.model);
+
+  fs::remove(dir.path / "trajectory_after.csv");
+  EXPECT_THROW(read_result_folder(dir.path.string()), InputError);
+  EXPECT_THROW(read_result_folder((dir.path / "nothing").string()), InputError);
+}
+
+}  // namespace
+}  // namespace saltus
