@@ -47,9 +47,9 @@
 #include "core/model_edit.h"
 #include "core/motion_edit.h"
 #include "saltus/base/input_error.h"
-#include "saltus/base/json_reader.h"
 #include "saltus/formats/model_file.h"
 #include "saltus/formats/motion_file.h"
+#include "saltus/formats/readable_formats.h"
 #include "scene/chart_view.h"
 
 namespace saltus::gui {
@@ -82,16 +82,6 @@ bool* option_field(SceneOptions& o, int i) {
 
 QString qstr(const std::string& s) {
   return QString::fromStdString(s);
-}
-
-/// Whether a JSON file is a body model ("saltus-model/1") rather than a motion.
-bool is_model_file(const QString& path) {
-  try {
-    const nlohmann::json document = read_json_file(path.toStdString());
-    return document.is_object() && document.value("format", "") == "saltus-model/1";
-  } catch (const std::exception&) {
-    return false;
-  }
 }
 
 /// A checkbox that mirrors a checkable action both ways.
@@ -242,8 +232,8 @@ void MainWindow::build_ui() {
     const QFileInfo motion(qstr(document_.file().path));
     const QString suggestion = QDir(last_dir_).filePath(
         motion.completeBaseName().remove(".motion") + "-edited.motion.json");
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save motion"), suggestion,
-                                                      tr("Motions (*.motion.json)"));
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Save motion"), suggestion, qstr(save_dialog_filter(ReadableKind::kMotion)));
     if (!path.isEmpty()) save_motion(path);
   });
 
@@ -253,7 +243,7 @@ void MainWindow::build_ui() {
   connect(model_panel_, &ModelPanel::save_requested, this, [this] {
     const QString path = QFileDialog::getSaveFileName(this, tr("Save body model"),
                                                       QDir(last_dir_).filePath("edited-model.json"),
-                                                      tr("Body models (*.json)"));
+                                                      qstr(dialog_filter(ReadableKind::kModel)));
     if (!path.isEmpty()) save_model(path);
   });
 
@@ -267,12 +257,14 @@ void MainWindow::build_menus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
   QAction* open = file->addAction(
       style()->standardIcon(QStyle::SP_DialogOpenButton), tr("&Open motion…"), this, [this] {
-        const QString path = ask_open_file(tr("Open motion"), tr("Motions (*.motion.json *.json)"));
+        const QString path =
+            ask_open_file(tr("Open motion"), qstr(dialog_filter(ReadableKind::kMotion)));
         if (!path.isEmpty()) open_motion(path);
       });
   open->setShortcut(QKeySequence::Open);
   file->addAction(tr("Open &model…"), this, [this] {
-    const QString path = ask_open_file(tr("Open body model"), tr("Body models (*.json)"));
+    const QString path =
+        ask_open_file(tr("Open body model"), qstr(dialog_filter(ReadableKind::kModel)));
     if (!path.isEmpty()) open_model(path);
   });
   recent_menu_ = file->addMenu(tr("Open &recent"));
@@ -414,11 +406,12 @@ void MainWindow::build_menus() {
                                                     [this] { compare_before_after(); });
   compare_motion_action_ = compare->addAction(tr("With another &motion…"), this, [this] {
     const QString path =
-        ask_open_file(tr("Compare with motion"), tr("Motions (*.motion.json *.json)"));
+        ask_open_file(tr("Compare with motion"), qstr(dialog_filter(ReadableKind::kMotion)));
     if (!path.isEmpty()) compare_with_motion(path);
   });
   compare_model_action_ = compare->addAction(tr("With another body m&odel…"), this, [this] {
-    const QString path = ask_open_file(tr("Compare with body model"), tr("Body models (*.json)"));
+    const QString path =
+        ask_open_file(tr("Compare with body model"), qstr(dialog_filter(ReadableKind::kModel)));
     if (!path.isEmpty()) compare_with_model(path);
   });
   compare_folder_action_ = compare->addAction(tr("With a saved &result folder…"), this, [this] {
@@ -520,15 +513,11 @@ void MainWindow::load_settings() {
   last_dir_ = s.value("files/last_dir", QDir::homePath()).toString();
   recent_ = s.value("files/recent").toStringList();
   rebuild_recent_menu();
-  OptimizeSettings o;
-  o.strict = s.value("optimize/strict", o.strict).toBool();
-  o.epsilon = s.value("optimize/epsilon", o.epsilon).toDouble();
-  o.optimize_timing = s.value("optimize/timing", o.optimize_timing).toBool();
-  o.knots_per_interval = s.value("optimize/knots_per_interval", o.knots_per_interval).toInt();
-  o.samples = s.value("optimize/samples", o.samples).toInt();
-  o.max_iterations = s.value("optimize/max_iterations", o.max_iterations).toInt();
-  o.max_joint_turn_deg = s.value("optimize/max_joint_turn_deg", o.max_joint_turn_deg).toDouble();
-  optimize_panel_->set_settings(o);
+  optimize_panel_->set_settings(
+      settings_from_entries([&s](const std::string& key) -> std::optional<std::string> {
+        if (!s.contains(qstr(key))) return std::nullopt;
+        return s.value(qstr(key)).toString().toStdString();
+      }));
   for (int i = 0; i < 8; ++i)
     option_actions_[i]->setChecked(
         s.value(QString("view/") + kOptionNames[i], option_actions_[i]->isChecked()).toBool());
@@ -550,14 +539,8 @@ void MainWindow::save_settings() const {
   s.setValue("window/state", saveState());
   s.setValue("files/last_dir", last_dir_);
   s.setValue("files/recent", recent_);
-  const OptimizeSettings o = optimize_panel_->settings();
-  s.setValue("optimize/strict", o.strict);
-  s.setValue("optimize/epsilon", o.epsilon);
-  s.setValue("optimize/timing", o.optimize_timing);
-  s.setValue("optimize/knots_per_interval", o.knots_per_interval);
-  s.setValue("optimize/samples", o.samples);
-  s.setValue("optimize/max_iterations", o.max_iterations);
-  s.setValue("optimize/max_joint_turn_deg", o.max_joint_turn_deg);
+  for (const auto& [key, text] : settings_entries(optimize_panel_->settings()))
+    s.setValue(qstr(key), qstr(text));
   for (int i = 0; i < 8; ++i)
     s.setValue(QString("view/") + kOptionNames[i], option_actions_[i]->isChecked());
   s.setValue("view/camera", qstr(camera_preset_name(scene_->scene().camera())));
@@ -1293,7 +1276,9 @@ void MainWindow::closeEvent(QCloseEvent* event) {
 void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
   if (!event->mimeData()->hasUrls()) return;
   for (const QUrl& url : event->mimeData()->urls()) {
-    if (url.isLocalFile() && url.toLocalFile().endsWith(".json", Qt::CaseInsensitive)) {
+    const auto kind =
+        url.isLocalFile() ? identify_readable(url.toLocalFile().toStdString()) : std::nullopt;
+    if (kind == ReadableKind::kMotion || kind == ReadableKind::kModel) {
       event->acceptProposedAction();
       return;
     }
@@ -1306,9 +1291,10 @@ void MainWindow::dropEvent(QDropEvent* event) {
   for (const QUrl& url : event->mimeData()->urls()) {
     if (!url.isLocalFile()) continue;
     const QString path = url.toLocalFile();
-    if (is_model_file(path))
+    const auto kind = identify_readable(path.toStdString());
+    if (kind == ReadableKind::kModel)
       open_model(path);
-    else
+    else if (kind == ReadableKind::kMotion)
       motions.append(path);
   }
   if (!motions.isEmpty()) open_motion(motions.first());

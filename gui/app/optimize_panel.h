@@ -1,24 +1,21 @@
 #pragma once
 /// @file
-/// The optimisation panel: formulation (relaxed / strict with ε), timing on/off, knots per
-/// interval, samples, max iterations; Run and Cancel; live progress; the result table (before /
-/// after).
+/// The optimisation panel: the option table's options (OptionForm); Run and Cancel; live
+/// progress; the result table (before / after).
 
 #include <QWidget>
 #include <vector>
 
 #include "core/optimize_settings.h"
 
-class QCheckBox;
-class QComboBox;
-class QDoubleSpinBox;
 class QLabel;
 class QProgressBar;
 class QPushButton;
-class QSpinBox;
 class QTableWidget;
 
 namespace saltus::gui {
+
+class OptionForm;
 
 class OptimizePanel : public QWidget {
   Q_OBJECT
@@ -45,13 +42,7 @@ class OptimizePanel : public QWidget {
  private:
   void update_enabled();
 
-  QComboBox* formulation_ = nullptr;
-  QDoubleSpinBox* epsilon_ = nullptr;
-  QCheckBox* timing_ = nullptr;
-  QSpinBox* knots_ = nullptr;
-  QSpinBox* samples_ = nullptr;
-  QSpinBox* iterations_ = nullptr;
-  QDoubleSpinBox* joint_turn_ = nullptr;
+  OptionForm* form_ = nullptr;
   QPushButton* run_ = nullptr;
   QPushButton* cancel_ = nullptr;
   QProgressBar* bar_ = nullptr;

@@ -3,13 +3,9 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "saltus/base/input_error.h"
-
 namespace saltus::gui {
 
 namespace {
-
-const char* const kColumns[6] = {"root_fx", "root_fy", "root_fz", "root_mx", "root_my", "root_mz"};
 
 /// The paler "before" version of a colour: 45 % towards white.
 Rgb paler(const Rgb& c) {
@@ -69,24 +65,6 @@ WrenchSeries root_wrench_series(const std::vector<SampleRecord>& samples) {
     out.time.push_back(s.time);
     for (int i = 0; i < 6; ++i)
       out.component[i].push_back(s.root_wrench[i]);
-  }
-  return out;
-}
-
-WrenchSeries root_wrench_series(const CsvTable& table, const std::string& file) {
-  const int t = table.column("t");
-  if (t < 0) throw InputError(file, "", "missing column \"t\"");
-  int columns[6];
-  for (int i = 0; i < 6; ++i) {
-    columns[i] = table.column(kColumns[i]);
-    if (columns[i] < 0)
-      throw InputError(file, "", std::string("missing column \"") + kColumns[i] + "\"");
-  }
-  WrenchSeries out;
-  for (const std::vector<double>& row : table.rows) {
-    out.time.push_back(row.at(t));
-    for (int i = 0; i < 6; ++i)
-      out.component[i].push_back(row.at(columns[i]));
   }
   return out;
 }

@@ -92,8 +92,8 @@ TEST_F(CompareWindowTest, BeforeAndAfterOfAnOptimisation) {
   EXPECT_FALSE(window_->compare_before_after(&error));  // nothing optimised yet
   EXPECT_FALSE(error.isEmpty());
   OptimizeSettings s;
-  s.max_iterations = 2;
-  s.samples = 21;
+  s.set("max_iterations", 2);
+  s.set("samples", 21);
   ASSERT_TRUE(window_->start_optimization(s, &error)) << error.toStdString();
   ASSERT_TRUE(window_->wait_for_optimization(300000));
   ASSERT_TRUE(window_->document().has_optimization());

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
 
 #include "core/optimize_settings.h"
 #include "core/result_folder.h"
@@ -20,13 +21,13 @@ namespace fs = std::filesystem;
 
 TEST(OptimizeSettings, MapOntoTheLibraryOptions) {
   OptimizeSettings s;
-  s.strict = true;
-  s.epsilon = 40.0;
-  s.optimize_timing = false;
-  s.knots_per_interval = 2;
-  s.max_iterations = 7;
-  s.samples = 51;
-  s.max_joint_turn_deg = 90.0;
+  s.set("formulation", std::string("strict"));
+  s.set("epsilon", 40.0);
+  s.set("optimize_timing", false);
+  s.set("knots_per_interval", 2);
+  s.set("max_iterations", 7);
+  s.set("samples", 51);
+  s.set("max_joint_turn", 90.0);
   const OptimizeOptions o = to_optimize_options(s);
   EXPECT_EQ(o.nlp.formulation, Formulation::kStrict);
   EXPECT_DOUBLE_EQ(o.nlp.epsilon, 40.0);
@@ -37,10 +38,10 @@ TEST(OptimizeSettings, MapOntoTheLibraryOptions) {
   EXPECT_NEAR(o.nlp.joint_turn_limit, M_PI / 2, 1e-15);
   // The CLI's default limit, half a turn.
   EXPECT_NEAR(to_optimize_options(OptimizeSettings{}).nlp.joint_turn_limit, M_PI, 1e-15);
-  // The CLI's defaults for what the panel does not show.
-  EXPECT_DOUBLE_EQ(o.solver.tolerance, 1e-8);
+  // The library's defaults for what is not set, as `saltus optimize` has them.
+  EXPECT_DOUBLE_EQ(o.solver.tolerance, SolverOptions{}.tolerance);
   EXPECT_DOUBLE_EQ(o.solver.objective_change_tolerance, SolverOptions{}.objective_change_tolerance);
-  EXPECT_EQ(OptimizeSettings{}.samples, kDefaultSamples);
+  EXPECT_EQ(OptimizeSettings{}.integer("samples"), kDefaultSamples);
   EXPECT_DOUBLE_EQ(o.nlp.max_time_shift, MotionNlpOptions{}.max_time_shift);
   EXPECT_DOUBLE_EQ(o.nlp.regularization, MotionNlpOptions{}.regularization);
   EXPECT_EQ(to_optimize_options(OptimizeSettings{}).nlp.formulation, Formulation::kRelaxed);
@@ -48,20 +49,63 @@ TEST(OptimizeSettings, MapOntoTheLibraryOptions) {
 
 TEST(OptimizeSettings, RejectValuesOutOfRange) {
   OptimizeSettings s;
-  s.epsilon = 0;
-  EXPECT_THROW(to_optimize_options(s), std::invalid_argument);
-  s = {};
-  s.knots_per_interval = 0;
-  EXPECT_THROW(to_optimize_options(s), std::invalid_argument);
-  s = {};
-  s.samples = 1;
-  EXPECT_THROW(to_optimize_options(s), std::invalid_argument);
-  s = {};
-  s.max_iterations = -1;
-  EXPECT_THROW(to_optimize_options(s), std::invalid_argument);
-  s = {};
-  s.max_joint_turn_deg = -1;
-  EXPECT_THROW(to_optimize_options(s), std::invalid_argument);
+  EXPECT_THROW(s.set("epsilon", 0.0), std::invalid_argument);
+  EXPECT_THROW(s.set("knots_per_interval", 0), std::invalid_argument);
+  EXPECT_THROW(s.set("samples", 1), std::invalid_argument);
+  EXPECT_THROW(s.set("samples", 100001), std::invalid_argument);
+  EXPECT_THROW(s.set("max_iterations", -1), std::invalid_argument);
+  EXPECT_THROW(s.set("max_joint_turn", -1.0), std::invalid_argument);
+  EXPECT_EQ(s, OptimizeSettings{});
+}
+
+TEST(OptimizeSettings, UndoStepsNameTheChangedOption) {
+  OptimizeSettings a, b;
+  EXPECT_EQ(first_changed_option(a, b), "");
+  b.set("samples", 31);
+  EXPECT_EQ(first_changed_option(a, b), option_spec("samples").label);
+  b.set("formulation", std::string("strict"));
+  EXPECT_EQ(first_changed_option(a, b), option_spec("formulation").label);
+  const std::string tip = option_tooltip(option_spec("max_time_shift"));
+  EXPECT_NE(tip.find("(s; >= 0)"), std::string::npos) << tip;
+  EXPECT_NE(tip.find("--max-time-shift"), std::string::npos) << tip;
+}
+
+TEST(OptimizeSettings, StoredSettingsReadBackAndOldKeysStillRead) {
+  OptimizeSettings s;
+  s.set("formulation", std::string("strict"));
+  s.set("epsilon", 12.5);
+  s.set("optimize_timing", false);
+  s.set("samples", 77);
+  s.set("tolerance", 3e-9);
+  s.set("max_joint_turn", 123.25);
+  s.set("threads", std::string("auto"));
+  std::map<std::string, std::string> stored;
+  for (const auto& [key, text] : settings_entries(s))
+    stored[key] = text;
+  EXPECT_EQ(stored.size(), option_table().size());
+  auto from = [](const std::map<std::string, std::string>& m) {
+    return settings_from_entries([&m](const std::string& key) -> std::optional<std::string> {
+      const auto it = m.find(key);
+      if (it == m.end()) return std::nullopt;
+      return it->second;
+    });
+  };
+  EXPECT_EQ(from(stored), s);
+  // What an earlier version stored (QSettings text of bools and doubles), and a value out of
+  // today's range, which keeps the default.
+  const OptimizeSettings old = from({{"optimize/strict", "true"},
+                                     {"optimize/timing", "false"},
+                                     {"optimize/max_joint_turn_deg", "90"},
+                                     {"optimize/epsilon", "25"},
+                                     {"optimize/samples", "500000"},
+                                     {"optimize/max_iterations", "40"}});
+  EXPECT_EQ(std::get<std::string>(old.get("formulation")), "strict");
+  EXPECT_FALSE(old.on("optimize_timing"));
+  EXPECT_EQ(old.real("max_joint_turn"), 90.0);
+  EXPECT_EQ(old.real("epsilon"), 25.0);
+  EXPECT_EQ(old.integer("samples"), kDefaultSamples);
+  EXPECT_EQ(old.integer("max_iterations"), 40);
+  EXPECT_EQ(from({}), OptimizeSettings{});
 }
 
 TEST(OptimizeSettings, ProgressTextNamesIterationAndObjective) {
@@ -80,8 +124,8 @@ class OptimizedMotion : public ::testing::Test {
   static void SetUpTestSuite() {
     file_ = new MotionFile(load_motion_file(test::gui_test_motion_path()));
     OptimizeSettings s;
-    s.max_iterations = 3;
-    s.samples = 31;
+    s.set("max_iterations", 3);
+    s.set("samples", 31);
     options_ = new OptimizeOptions(to_optimize_options(s));
     result_ = new OptimizationResult(optimize_motion(file_->motion, file_->model, *options_));
     folder_ = (fs::temp_directory_path() / "saltus_gui_optimize_settings_M").string();
@@ -127,19 +171,20 @@ TEST_F(OptimizedMotion, ResultTableHasTheRequiredRows) {
 }
 
 TEST_F(OptimizedMotion, ReadsTheOutputFolderBack) {
-  const ResultFolder f = read_result_folder(folder_);
+  const ResultFolder f = read_optimization_folder(folder_);
   EXPECT_EQ(f.name, "saltus_gui_optimize_settings_M");
-  EXPECT_EQ(f.motion, file_->motion.name);
-  EXPECT_EQ(f.before.time.size(), 31u);
-  EXPECT_EQ(f.after.time.size(), 31u);
-  EXPECT_NEAR(f.avg_root_force_before, result_->before.metrics.avg_root_force, 1e-9);
-  EXPECT_NEAR(f.avg_root_force_after, result_->after.metrics.avg_root_force, 1e-9);
-  EXPECT_EQ(f.keyframe_times_after, result_->after.keyframe_times);
-  EXPECT_NEAR(f.after.component[0][10], result_->after.samples[10].root_wrench[0], 1e-12);
+  EXPECT_EQ(f.result.motion, file_->motion.name);
+  ASSERT_TRUE(f.after && f.result.optimization);
+  EXPECT_EQ(f.before.samples.size(), 31u);
+  EXPECT_EQ(f.after->samples.size(), 31u);
+  EXPECT_EQ(f.result.before.avg_root_force, result_->before.metrics.avg_root_force);
+  EXPECT_EQ(f.result.optimization->after.avg_root_force, result_->after.metrics.avg_root_force);
+  EXPECT_EQ(f.result.optimization->keyframe_times_after, result_->after.keyframe_times);
+  EXPECT_EQ(f.after->samples[10].root_wrench[0], result_->after.samples[10].root_wrench[0]);
 }
 
 TEST_F(OptimizedMotion, PaperFiguresAreNamedPerFolderWithASummary) {
-  const ResultFolder f = read_result_folder(folder_);
+  const ResultFolder f = read_optimization_folder(folder_);
   const std::vector<Figure> figures = paper_figures({f, f});
   ASSERT_EQ(figures.size(), 7u);
   EXPECT_EQ(figures[0].file_name, "saltus_gui_optimize_settings_M_root_force.png");
@@ -154,7 +199,7 @@ TEST_F(OptimizedMotion, PaperFiguresAreNamedPerFolderWithASummary) {
 }
 
 TEST(ResultFolder, RejectsFoldersThatAreNotOptimisationResults) {
-  EXPECT_THROW(read_result_folder("/nonexistent/folder"), InputError);
+  EXPECT_THROW(read_optimization_folder("/nonexistent/folder"), InputError);
   const fs::path eval = fs::temp_directory_path() / "saltus_gui_not_optimized";
   fs::remove_all(eval);
   const MotionFile file = load_motion_file(test::gui_test_motion_path());
@@ -163,7 +208,7 @@ TEST(ResultFolder, RejectsFoldersThatAreNotOptimisationResults) {
   write_evaluation_outputs(eval.string(), file, evaluate_motion(file.motion, file.model, options),
                            options);
   try {
-    read_result_folder(eval.string());
+    read_optimization_folder(eval.string());
     ADD_FAILURE() << "an evaluation folder was accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("/after"), std::string::npos) << e.what();

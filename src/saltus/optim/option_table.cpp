@@ -63,9 +63,7 @@ std::vector<OptionSpec> make_table() {
     o.name = "optimize_timing";
     o.flag = "--no-timing";
     o.label = "Optimise keyframe times";
-    o.help =
-        "the interior keyframe times are variables of the optimisation; off (--no-timing) "
-        "keeps the given times";
+    o.help = "the interior keyframe times are optimised too; --no-timing keeps the given times";
     o.kind = OptionKind::kSwitch;
     o.result_key = "timing_optimized";
     o.recorded = ResultRecord::kOptimization;
