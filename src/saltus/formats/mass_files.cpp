@@ -172,6 +172,48 @@ MassCsv parse_mass_csv(const CsvTable& table, const std::string& file) {
   return out;
 }
 
+namespace {
+
+std::vector<std::string> string_list(const JsonNode& node) {
+  node.require_array();
+  std::vector<std::string> list;
+  for (std::size_t i = 0; i < node.size(); ++i)
+    list.push_back(node.at(i).as_string());
+  return list;
+}
+
+/// result.json of a mass study; the folder's path, name and mass.csv are left to the caller.
+MassStudyFolder parse_mass_result(const nlohmann::json& document, const std::string& file) {
+  const JsonNode root(document, file);
+  root.require_object();
+  if (root.at("study").as_string() != "mass")
+    throw InputError(file, "/study", "not \"mass\" (not a `saltus study mass` folder)");
+  MassStudyFolder out;
+  out.motion = root.at("motion").as_string();
+  out.motion_file = root.at("motion_file").as_string();
+  out.factor = root.at("factor").as_double();
+  out.scaled_segments = string_list(root.at("scaled_segments"));
+  out.load_segments = string_list(root.at("load_segments"));
+  const JsonNode runs = root.at("runs");
+  runs.require_array();
+  if (runs.size() != 2)
+    throw InputError(file, runs.path_or_root(),
+                     "expected two runs (given and scaled), found " + std::to_string(runs.size()));
+  for (std::size_t r = 0; r < 2; ++r) {
+    const JsonNode run = runs.at(r);
+    MassStudyFolder::Run& to = out.runs[r];
+    to.label = run.at("label").as_string();
+    to.model = run.at("model").as_string();
+    to.status = run.at("status").as_string();
+    to.iterations = run.at("iterations").as_int();
+    to.avg_force_before_N = run.at("avg_force_before_N").as_double();
+    to.avg_force_after_N = run.at("avg_force_after_N").as_double();
+  }
+  return out;
+}
+
+}  // namespace
+
 bool is_mass_study_folder(const std::string& dir) {
   const std::filesystem::path result = std::filesystem::path(dir) / "result.json";
   if (!std::filesystem::is_regular_file(result)) return false;
@@ -184,51 +226,12 @@ bool is_mass_study_folder(const std::string& dir) {
 }
 
 MassStudyFolder read_mass_study_folder(const std::string& dir) {
-  namespace fs = std::filesystem;
-  const fs::path folder(dir);
-  if (!fs::is_directory(folder))
-    throw InputError(dir, "", "not a folder (expected a `saltus study mass` output folder)");
-  MassStudyFolder out;
+  const std::string what = "a `saltus study mass` output folder";
+  const std::string result_path = output_file(dir, "result.json", what);
+  MassStudyFolder out = parse_mass_result(read_json_file(result_path), result_path);
   out.path = dir;
   out.name = folder_name(dir);
-  const std::string result_path = (folder / "result.json").string();
-  if (!fs::exists(result_path))
-    throw InputError(result_path, "", "missing (not a `saltus study mass` output folder)");
-  const nlohmann::json document = read_json_file(result_path);
-  const JsonNode root(document, result_path);
-  root.require_object();
-  if (root.at("study").as_string() != "mass")
-    throw InputError(result_path, "/study", "not \"mass\" (not a `saltus study mass` folder)");
-  out.motion = root.at("motion").as_string();
-  out.motion_file = root.at("motion_file").as_string();
-  out.factor = root.at("factor").as_double();
-  auto strings = [](const JsonNode& node) {
-    node.require_array();
-    std::vector<std::string> list;
-    for (std::size_t i = 0; i < node.size(); ++i)
-      list.push_back(node.at(i).as_string());
-    return list;
-  };
-  out.scaled_segments = strings(root.at("scaled_segments"));
-  out.load_segments = strings(root.at("load_segments"));
-  const JsonNode runs = root.at("runs");
-  runs.require_array();
-  if (runs.size() != 2)
-    throw InputError(result_path, runs.path_or_root(),
-                     "expected two runs (given and scaled), found " + std::to_string(runs.size()));
-  for (std::size_t r = 0; r < 2; ++r) {
-    const JsonNode run = runs.at(r);
-    MassStudyFolder::Run& to = out.runs[r];
-    to.label = run.at("label").as_string();
-    to.model = run.at("model").as_string();
-    to.status = run.at("status").as_string();
-    to.iterations = run.at("iterations").as_int();
-    to.avg_force_before_N = run.at("avg_force_before_N").as_double();
-    to.avg_force_after_N = run.at("avg_force_after_N").as_double();
-  }
-  const std::string csv = (folder / "mass.csv").string();
-  if (!fs::exists(csv))
-    throw InputError(csv, "", "missing (not a `saltus study mass` output folder)");
+  const std::string csv = output_file(dir, "mass.csv", what);
   out.loads = read_mass_csv(csv);
   if (out.loads.load_segments != out.load_segments)
     throw InputError(csv, "line 1",

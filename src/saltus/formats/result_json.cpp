@@ -15,10 +15,21 @@
 
 namespace saltus {
 
+namespace {
+
+/// The keys of a before/after block (DESIGN §6) and the figures they hold.
+const std::pair<const char*, double ForceMetrics::*> kForceMetricKeys[6] = {
+    {"objective", &ForceMetrics::objective},     {"avg_root_force", &ForceMetrics::avg_root_force},
+    {"rms_force_N", &ForceMetrics::rms_force_N}, {"rms_moment_Nm", &ForceMetrics::rms_moment_Nm},
+    {"max_force_N", &ForceMetrics::max_force_N}, {"max_moment_Nm", &ForceMetrics::max_moment_Nm}};
+
+}  // namespace
+
 nlohmann::json force_metrics_to_json(const ForceMetrics& m) {
-  return {{"objective", m.objective},     {"avg_root_force", m.avg_root_force},
-          {"rms_force_N", m.rms_force_N}, {"rms_moment_Nm", m.rms_moment_Nm},
-          {"max_force_N", m.max_force_N}, {"max_moment_Nm", m.max_moment_Nm}};
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [key, field] : kForceMetricKeys)
+    j[key] = m.*field;
+  return j;
 }
 
 namespace {
@@ -78,6 +89,14 @@ ResultJson common_result(const MotionFile& file, ResultJson::Kind kind, const st
   return r;
 }
 
+/// The same for an evaluation or a simulation, with the options it records.
+ResultJson common_result(const MotionFile& file, ResultJson::Kind kind, const std::string& status,
+                         const EvaluateOptions& options) {
+  ResultJson r = common_result(file, kind, status, options.interpolation.knots_per_interval);
+  r.options = recorded_options(with_evaluation_options(options), false);
+  return r;
+}
+
 bool read_bool(const JsonNode& node) {
   if (!node.value().is_boolean()) node.fail("expected true or false");
   return node.value().get<bool>();
@@ -86,12 +105,8 @@ bool read_bool(const JsonNode& node) {
 ForceMetrics read_force_metrics(const JsonNode& node) {
   node.require_object();
   ForceMetrics m;
-  m.objective = node.at("objective").as_double();
-  m.avg_root_force = node.at("avg_root_force").as_double();
-  m.rms_force_N = node.at("rms_force_N").as_double();
-  m.rms_moment_Nm = node.at("rms_moment_Nm").as_double();
-  m.max_force_N = node.at("max_force_N").as_double();
-  m.max_moment_Nm = node.at("max_moment_Nm").as_double();
+  for (const auto& [key, field] : kForceMetricKeys)
+    m.*field = node.at(key).as_double();
   return m;
 }
 
@@ -259,9 +274,7 @@ ResultJson read_result_json(const std::string& path) {
 
 ResultJson evaluation_result(const MotionFile& file, const MotionEvaluation& e,
                              const EvaluateOptions& options) {
-  ResultJson r = common_result(file, ResultJson::Kind::kEvaluation, "evaluated",
-                               options.interpolation.knots_per_interval);
-  r.options = recorded_options(with_evaluation_options(options), false);
+  ResultJson r = common_result(file, ResultJson::Kind::kEvaluation, "evaluated", options);
   r.before = e.metrics;
   r.keyframe_times_before = e.keyframe_times;
   r.keyframe_errors = e.keyframe_errors;
@@ -271,9 +284,7 @@ ResultJson evaluation_result(const MotionFile& file, const MotionEvaluation& e,
 
 ResultJson simulation_result(const MotionFile& file, const SimulationResult& s,
                              const EvaluateOptions& options) {
-  ResultJson r = common_result(file, ResultJson::Kind::kSimulation, "simulated",
-                               options.interpolation.knots_per_interval);
-  r.options = recorded_options(with_evaluation_options(options), false);
+  ResultJson r = common_result(file, ResultJson::Kind::kSimulation, "simulated", options);
   r.before = s.metrics;
   for (const Keyframe& k : file.motion.keyframes)
     r.keyframe_times_before.push_back(k.time);
@@ -367,30 +378,25 @@ std::string folder_name(const std::string& dir) {
                                    : folder.filename().string();
 }
 
-ResultFolder read_result_folder(const std::string& dir) {
+std::string output_file(const std::string& dir, const std::string& name, const std::string& what) {
   namespace fs = std::filesystem;
-  const fs::path folder(dir);
-  if (!fs::is_directory(folder))
-    throw InputError(dir, "",
-                     "not a folder (expected a saltus evaluate, simulate or optimize "
-                     "output folder)");
+  if (!fs::is_directory(dir)) throw InputError(dir, "", "not a folder (expected " + what + ")");
+  const std::string path = (fs::path(dir) / name).string();
+  if (!fs::exists(path)) throw InputError(path, "", "missing (not " + what + ")");
+  return path;
+}
+
+ResultFolder read_result_folder(const std::string& dir) {
+  const std::string what = "a complete saltus evaluate, simulate or optimize folder";
   ResultFolder out;
   out.path = dir;
   out.name = folder_name(dir);
-  const std::string result_path = (folder / "result.json").string();
-  if (!fs::exists(result_path))
-    throw InputError(result_path, "", "missing (not a saltus result folder)");
-  out.result = read_result_json(result_path);
-  auto trajectory = [&](const char* name) {
-    const std::string csv = (folder / name).string();
-    if (!fs::exists(csv)) throw InputError(csv, "", "missing (not a complete result folder)");
-    return read_trajectory_csv(csv);
-  };
+  out.result = read_result_json(output_file(dir, "result.json", what));
   if (out.result.kind == ResultJson::Kind::kOptimization) {
-    out.before = trajectory("trajectory_before.csv");
-    out.after = trajectory("trajectory_after.csv");
+    out.before = read_trajectory_csv(output_file(dir, "trajectory_before.csv", what));
+    out.after = read_trajectory_csv(output_file(dir, "trajectory_after.csv", what));
   } else {
-    out.before = trajectory("trajectory.csv");
+    out.before = read_trajectory_csv(output_file(dir, "trajectory.csv", what));
   }
   return out;
 }

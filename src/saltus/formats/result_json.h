@@ -136,5 +136,8 @@ ResultFolder read_result_folder(const std::string& dir);
 
 /// The folder's own name ("out" for "a/out" and "a/out/").
 std::string folder_name(const std::string& dir);
+/// DIR/name, which must exist; throws InputError naming the folder or the file as not `what`
+/// ("a `saltus study mass` folder").
+std::string output_file(const std::string& dir, const std::string& name, const std::string& what);
 
 }  // namespace saltus

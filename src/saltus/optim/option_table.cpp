@@ -13,231 +13,164 @@ namespace {
 
 constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 
+/// An entry's name, flag and texts; the rest is set by the helpers below.
+OptionSpec entry(const char* name, const char* flag, const char* label, const char* unit,
+                 const char* help) {
+  OptionSpec o;
+  o.name = name;
+  o.flag = flag;
+  o.label = label;
+  o.unit = unit;
+  o.help = help;
+  return o;
+}
+
+/// A number in [min, max] (or (min, max] when min_exclusive).
+void range(OptionSpec& o, OptionKind kind, double min, double max, bool min_exclusive = false) {
+  o.kind = kind;
+  o.min = min;
+  o.max = max;
+  o.min_exclusive = min_exclusive;
+}
+
+/// The value is the field options.*part.*field (bool, int or double, as the option's kind).
+template <typename Part, typename T>
+void bind(OptionSpec& o, Part OptimizeOptions::*part, T Part::*field) {
+  o.read = [part, field](const OptimizeOptions& x) -> OptionValue { return x.*part.*field; };
+  o.write = [part, field](OptimizeOptions& x, const OptionValue& v) {
+    x.*part.*field = std::get<T>(v);
+  };
+}
+
+void record(OptionSpec& o, const char* key, ResultRecord recorded) {
+  o.result_key = key;
+  o.recorded = recorded;
+}
+
 /// The table. Ranges: `--samples` stops at 100000 because an optimisation there already holds
 /// 1.6 GB (the wrench Jacobian of every sample) and writes two 200 MB trajectories; the limit
 /// is the same for every verb, the app and the studies.
 std::vector<OptionSpec> make_table() {
+  constexpr auto nlp = &OptimizeOptions::nlp;
+  constexpr auto solver = &OptimizeOptions::solver;
   std::vector<OptionSpec> t;
-  {
-    OptionSpec o;
-    o.name = "formulation";
-    o.flag = "--formulation";
-    o.label = "Model";
-    o.help =
-        "relaxed: minimise the root force with the keyframes within tolerance (the paper's "
-        "model); strict: classic spacetime constraints, every root force and moment component "
-        "bounded by --epsilon at every sample";
-    o.kind = OptionKind::kChoice;
-    o.choices = {"relaxed", "strict"};
-    o.choice_labels = {"relaxed (paper)", "strict: |F_i| ≤ ε"};
-    o.result_key = "formulation";
-    o.recorded = ResultRecord::kOptimization;
-    o.read = [](const OptimizeOptions& x) -> OptionValue {
-      return std::string(x.nlp.formulation == Formulation::kStrict ? "strict" : "relaxed");
-    };
-    o.write = [](OptimizeOptions& x, const OptionValue& v) {
-      x.nlp.formulation =
-          std::get<std::string>(v) == "strict" ? Formulation::kStrict : Formulation::kRelaxed;
-    };
-    t.push_back(std::move(o));
-  }
-  {
-    OptionSpec o;
-    o.name = "epsilon";
-    o.flag = "--epsilon";
-    o.label = "ε (strict)";
-    o.unit = "N or N·m";
-    o.help = "the strict model's bound on each |F_i| at every sample";
-    o.min = 0.0;
-    o.min_exclusive = true;
-    o.max = kUnbounded;
-    o.result_key = "epsilon";
-    o.recorded = ResultRecord::kOptimization;
-    o.read = [](const OptimizeOptions& x) -> OptionValue { return x.nlp.epsilon; };
-    o.write = [](OptimizeOptions& x, const OptionValue& v) { x.nlp.epsilon = std::get<double>(v); };
-    o.applies = [](const OptimizeOptions& x) { return x.nlp.formulation == Formulation::kStrict; };
-    t.push_back(std::move(o));
-  }
-  {
-    OptionSpec o;
-    o.name = "optimize_timing";
-    o.flag = "--no-timing";
-    o.label = "Optimise keyframe times";
-    o.help = "the interior keyframe times are optimised too; --no-timing keeps the given times";
-    o.kind = OptionKind::kSwitch;
-    o.result_key = "timing_optimized";
-    o.recorded = ResultRecord::kOptimization;
-    o.read = [](const OptimizeOptions& x) -> OptionValue { return x.nlp.optimize_timing; };
-    o.write = [](OptimizeOptions& x, const OptionValue& v) {
-      x.nlp.optimize_timing = std::get<bool>(v);
-    };
-    t.push_back(std::move(o));
-  }
-  {
-    OptionSpec o;
-    o.name = "knots_per_interval";
-    o.flag = "--knots-per-interval";
-    o.label = "Knots per interval";
-    o.help =
-        "spline knot sub-intervals per keyframe interval (1 = knots at the keyframes, the "
-        "paper's resolution)";
-    o.kind = OptionKind::kInteger;
-    o.use = OptionUse::kEvaluation;
-    o.min = 1;
-    o.max = 50;
-    o.result_key = "knots_per_interval_requested";  // "knots_per_interval" is the K used
-    o.recorded = ResultRecord::kOptimization;
-    o.read = [](const OptimizeOptions& x) -> OptionValue { return x.nlp.knots_per_interval; };
-    o.write = [](OptimizeOptions& x, const OptionValue& v) {
-      x.nlp.knots_per_interval = std::get<int>(v);
-    };
-    t.push_back(std::move(o));
-  }
-  {
-    OptionSpec o;
-    o.name = "samples";
-    o.flag = "--samples";
-    o.label = "Samples";
-    o.help =
-        "time samples on [0, T], both ends included: the evaluation grid and the optimiser's "
-        "quadrature grid (fewer = faster)";
-    o.kind = OptionKind::kInteger;
-    o.use = OptionUse::kEvaluation;
-    o.min = 2;
-    o.max = 100000;
-    o.result_key = "samples";
-    o.recorded = ResultRecord::kEveryResult;
-    o.read = [](const OptimizeOptions& x) -> OptionValue { return x.nlp.samples; };
-    o.write = [](OptimizeOptions& x, const OptionValue& v) { x.nlp.samples = std::get<int>(v); };
-    t.push_back(std::move(o));
-  }
-  {
-    OptionSpec o;
-    o.name = "max_iterations";
-    o.flag = "--max-iter";
-    o.label = "Max iterations";
-    o.help = "Ipopt's iteration limit (0: only the starting point is evaluated)";
-    o.kind = OptionKind::kInteger;
-    o.min = 0;
-    o.max = 100000;
-    o.read = [](const OptimizeOptions& x) -> OptionValue { return x.solver.max_iterations; };
-    o.write = [](OptimizeOptions& x, const OptionValue& v) {
-      x.solver.max_iterations = std::get<int>(v);
-    };
-    t.push_back(std::move(o));
-  }
-  {
-    OptionSpec o;
-    o.name = "tolerance";
-    o.flag = "--tol";
-    o.label = "Tolerance";
-    o.help = "Ipopt's convergence tolerance: the NLP error of an optimal exit";
-    o.min = 0.0;
-    o.min_exclusive = true;
-    o.max = kUnbounded;
-    o.read = [](const OptimizeOptions& x) -> OptionValue { return x.solver.tolerance; };
-    o.write = [](OptimizeOptions& x, const OptionValue& v) {
-      x.solver.tolerance = std::get<double>(v);
-    };
-    t.push_back(std::move(o));
-  }
-  {
-    OptionSpec o;
-    o.name = "objective_change_tolerance";
-    o.flag = "--objective-change-tol";
-    o.label = "Objective change tolerance";
-    o.help =
-        "also stop (solved, Ipopt 'acceptable') once the objective changes by less than this "
-        "fraction for 3 iterations with the keyframes met; 0 = off";
-    o.min = 0.0;
-    o.max = kUnbounded;
-    o.read = [](const OptimizeOptions& x) -> OptionValue {
-      return x.solver.objective_change_tolerance;
-    };
-    o.write = [](OptimizeOptions& x, const OptionValue& v) {
-      x.solver.objective_change_tolerance = std::get<double>(v);
-    };
-    t.push_back(std::move(o));
-  }
-  {
-    OptionSpec o;
-    o.name = "max_time_shift";
-    o.flag = "--max-time-shift";
-    o.label = "Max time shift";
-    o.unit = "s";
-    o.help = "how far a keyframe time may move from the given one";
-    o.min = 0.0;
-    o.max = kUnbounded;
-    o.read = [](const OptimizeOptions& x) -> OptionValue { return x.nlp.max_time_shift; };
-    o.write = [](OptimizeOptions& x, const OptionValue& v) {
-      x.nlp.max_time_shift = std::get<double>(v);
-    };
-    o.applies = [](const OptimizeOptions& x) { return x.nlp.optimize_timing; };
-    t.push_back(std::move(o));
-  }
-  {
-    OptionSpec o;
-    o.name = "regularization";
-    o.flag = "--regularization";
-    o.label = "Regularization";
-    o.unit = "N²/rad²";
-    o.help =
-        "weight of the proximity term that keeps the joints near the interpolated motion (light "
-        "limbs would otherwise flail); 0 = none";
-    o.min = 0.0;
-    o.max = kUnbounded;
-    o.read = [](const OptimizeOptions& x) -> OptionValue { return x.nlp.regularization; };
-    o.write = [](OptimizeOptions& x, const OptionValue& v) {
-      x.nlp.regularization = std::get<double>(v);
-    };
-    t.push_back(std::move(o));
-  }
-  {
-    OptionSpec o;
-    o.name = "max_joint_turn";
-    o.flag = "--max-joint-turn";
-    o.label = "Max joint turn";
-    o.unit = "°";
-    o.help =
-        "soft limit on how far a joint turns relative to its parent between two spline control "
-        "points (where the interpolation itself turns further, that is the limit); 0 = none";
-    o.min = 0.0;
-    o.max = 360.0;
-    o.result_key = "joint_turn_limit_deg";
-    o.recorded = ResultRecord::kOptimization;
-    o.read = [](const OptimizeOptions& x) -> OptionValue {
-      return x.nlp.joint_turn_limit * kDegreesPerRadian;
-    };
-    o.write = [](OptimizeOptions& x, const OptionValue& v) {
-      x.nlp.joint_turn_limit = std::get<double>(v) / kDegreesPerRadian;
-    };
-    o.recorded_value = [](const OptimizeOptions& x) -> OptionValue {
-      return x.nlp.limits_joint_turns() ? x.nlp.joint_turn_limit * kDegreesPerRadian : 0.0;
-    };
-    t.push_back(std::move(o));
-  }
-  {
-    OptionSpec o;
-    o.name = "threads";
-    o.flag = "--threads";
-    o.label = "Threads";
-    o.help =
-        "threads that evaluate the root wrench and its derivatives (auto: one per hardware "
-        "thread, at most 4). The values do not depend on it, but their rounding does, and the "
-        "iterations can follow the rounding";
-    o.kind = OptionKind::kInteger;
-    o.min = 1;
-    o.max = 64;
-    o.word = "auto";
-    o.read = [](const OptimizeOptions& x) -> OptionValue {
-      if (x.nlp.threads == 0) return std::string("auto");
-      return x.nlp.threads;
-    };
-    o.write = [](OptimizeOptions& x, const OptionValue& v) {
-      x.nlp.threads = std::holds_alternative<std::string>(v) ? 0 : std::get<int>(v);
-    };
-    t.push_back(std::move(o));
-  }
+
+  OptionSpec o = entry("formulation", "--formulation", "Model", "",
+                       "relaxed: minimise the root force with the keyframes within tolerance (the "
+                       "paper's model); strict: classic spacetime constraints, every root force "
+                       "and moment component bounded by --epsilon at every sample");
+  o.kind = OptionKind::kChoice;
+  o.choices = {"relaxed", "strict"};
+  o.choice_labels = {"relaxed (paper)", "strict: |F_i| ≤ ε"};
+  record(o, "formulation", ResultRecord::kOptimization);
+  o.read = [](const OptimizeOptions& x) -> OptionValue {
+    return std::string(x.nlp.formulation == Formulation::kStrict ? "strict" : "relaxed");
+  };
+  o.write = [](OptimizeOptions& x, const OptionValue& v) {
+    x.nlp.formulation =
+        std::get<std::string>(v) == "strict" ? Formulation::kStrict : Formulation::kRelaxed;
+  };
+  t.push_back(o);
+
+  o = entry("epsilon", "--epsilon", "ε (strict)", "N or N·m",
+            "the strict model's bound on each |F_i| at every sample");
+  range(o, OptionKind::kReal, 0.0, kUnbounded, true);
+  record(o, "epsilon", ResultRecord::kOptimization);
+  bind(o, nlp, &MotionNlpOptions::epsilon);
+  o.applies = [](const OptimizeOptions& x) { return x.nlp.formulation == Formulation::kStrict; };
+  t.push_back(o);
+
+  o = entry("optimize_timing", "--no-timing", "Optimise keyframe times", "",
+            "the interior keyframe times are optimised too; --no-timing keeps the given times");
+  o.kind = OptionKind::kSwitch;
+  record(o, "timing_optimized", ResultRecord::kOptimization);
+  bind(o, nlp, &MotionNlpOptions::optimize_timing);
+  t.push_back(o);
+
+  o = entry("knots_per_interval", "--knots-per-interval", "Knots per interval", "",
+            "spline knot sub-intervals per keyframe interval (1 = knots at the keyframes, the "
+            "paper's resolution)");
+  range(o, OptionKind::kInteger, 1, 50);
+  o.use = OptionUse::kEvaluation;
+  // "knots_per_interval" records the K used, which may be finer (optimize_motion).
+  record(o, "knots_per_interval_requested", ResultRecord::kOptimization);
+  bind(o, nlp, &MotionNlpOptions::knots_per_interval);
+  t.push_back(o);
+
+  o = entry("samples", "--samples", "Samples", "",
+            "time samples on [0, T], both ends included: the evaluation grid and the optimiser's "
+            "quadrature grid (fewer = faster)");
+  range(o, OptionKind::kInteger, 2, 100000);
+  o.use = OptionUse::kEvaluation;
+  record(o, "samples", ResultRecord::kEveryResult);
+  bind(o, nlp, &MotionNlpOptions::samples);
+  t.push_back(o);
+
+  o = entry("max_iterations", "--max-iter", "Max iterations", "",
+            "Ipopt's iteration limit (0: only the starting point is evaluated)");
+  range(o, OptionKind::kInteger, 0, 100000);
+  bind(o, solver, &SolverOptions::max_iterations);
+  t.push_back(o);
+
+  o = entry("tolerance", "--tol", "Tolerance", "",
+            "Ipopt's convergence tolerance: the NLP error of an optimal exit");
+  range(o, OptionKind::kReal, 0.0, kUnbounded, true);
+  bind(o, solver, &SolverOptions::tolerance);
+  t.push_back(o);
+
+  o = entry("objective_change_tolerance", "--objective-change-tol", "Objective change tolerance",
+            "",
+            "also stop (solved, Ipopt 'acceptable') once the objective changes by less than this "
+            "fraction for 3 iterations with the keyframes met; 0 = off");
+  range(o, OptionKind::kReal, 0.0, kUnbounded);
+  bind(o, solver, &SolverOptions::objective_change_tolerance);
+  t.push_back(o);
+
+  o = entry("max_time_shift", "--max-time-shift", "Max time shift", "s",
+            "how far a keyframe time may move from the given one");
+  range(o, OptionKind::kReal, 0.0, kUnbounded);
+  bind(o, nlp, &MotionNlpOptions::max_time_shift);
+  o.applies = [](const OptimizeOptions& x) { return x.nlp.optimize_timing; };
+  t.push_back(o);
+
+  o = entry("regularization", "--regularization", "Regularization", "N²/rad²",
+            "weight of the proximity term that keeps the joints near the interpolated motion "
+            "(light limbs would otherwise flail); 0 = none");
+  range(o, OptionKind::kReal, 0.0, kUnbounded);
+  bind(o, nlp, &MotionNlpOptions::regularization);
+  t.push_back(o);
+
+  o = entry("max_joint_turn", "--max-joint-turn", "Max joint turn", "°",
+            "soft limit on how far a joint turns relative to its parent between two spline "
+            "control points (where the interpolation itself turns further, that is the limit); "
+            "0 = none");
+  range(o, OptionKind::kReal, 0.0, 360.0);
+  record(o, "joint_turn_limit_deg", ResultRecord::kOptimization);
+  o.read = [](const OptimizeOptions& x) -> OptionValue {
+    return x.nlp.joint_turn_limit * kDegreesPerRadian;
+  };
+  o.write = [](OptimizeOptions& x, const OptionValue& v) {
+    x.nlp.joint_turn_limit = std::get<double>(v) / kDegreesPerRadian;
+  };
+  o.recorded_value = [](const OptimizeOptions& x) -> OptionValue {
+    return x.nlp.limits_joint_turns() ? x.nlp.joint_turn_limit * kDegreesPerRadian : 0.0;
+  };
+  t.push_back(o);
+
+  o = entry("threads", "--threads", "Threads", "",
+            "threads that evaluate the root wrench and its derivatives (auto: one per hardware "
+            "thread, at most 4). The values do not depend on it, but their rounding does, and "
+            "the iterations can follow the rounding");
+  range(o, OptionKind::kInteger, 1, 64);
+  o.word = "auto";
+  o.read = [](const OptimizeOptions& x) -> OptionValue {
+    if (x.nlp.threads == 0) return std::string("auto");
+    return x.nlp.threads;
+  };
+  o.write = [](OptimizeOptions& x, const OptionValue& v) {
+    x.nlp.threads = std::holds_alternative<std::string>(v) ? 0 : std::get<int>(v);
+  };
+  t.push_back(o);
   return t;
 }
 

@@ -11,59 +11,23 @@
 #include <sstream>
 
 #include "saltus/base/input_error.h"
-#include "saltus/evaluation/evaluate.h"
-#include "saltus/formats/motion_file.h"
+#include "support/mass_study_fixture.h"
 
 namespace saltus {
 namespace {
 
 namespace fs = std::filesystem;
 
-/// A mass study without the optimisations (too slow for a unit test): each run's "after" is the
-/// interpolated motion evaluated with that run's model, which is all the writer reads.
-class MassFilesTest : public ::testing::Test {
+class MassFilesTest : public test::MassStudyFolderFixture {
  protected:
   static void SetUpTestSuite() {
-    file_ = new MotionFile(load_motion_file(std::string(SALTUS_EXAMPLES_DIR) +
-                                            "/motions/M1-straight-back-somersault.motion.json"));
-    options_ = new MassStudyOptions();
-    options_->load_segments = {"thigh_r", "upper_arm_r", "foot_l"};
-    study_ = new MassStudyResult();
-    study_->load_segments = options_->load_segments;
-    EvaluateOptions evaluate;
-    evaluate.samples = 23;
-    BodyModel scaled = file_->model;
-    for (const std::string& s : options_->scaled_segments)
-      scaled = scale_segment_mass(scaled, s, options_->factor);
-    for (const BodyModel* model : {&file_->model, &scaled}) {
-      MassStudyRun run;
-      run.label = model == &scaled ? "thighs x1.5" : "table2";
-      run.model = *model;
-      run.result.before = run.result.after = evaluate_motion(file_->motion, *model, evaluate);
-      run.result.solve.status = "not run";
-      run.result.solve.iterations = model == &scaled ? 7 : 5;
-      study_->runs.push_back(std::move(run));
-    }
-    folder_ = new fs::path(fs::temp_directory_path() / "saltus_mass_files_test");
-    fs::remove_all(*folder_);
-    write_mass_outputs(folder_->string(), *file_, *study_, *options_);
+    MassStudyOptions options;
+    options.load_segments = {"thigh_r", "upper_arm_r", "foot_l"};
+    write_folder(
+        std::string(SALTUS_EXAMPLES_DIR) + "/motions/M1-straight-back-somersault.motion.json",
+        options, 23, "saltus_mass_files_test");
   }
-  static void TearDownTestSuite() {
-    fs::remove_all(*folder_);
-    delete folder_;
-    delete study_;
-    delete options_;
-    delete file_;
-  }
-  static MotionFile* file_;
-  static MassStudyOptions* options_;
-  static MassStudyResult* study_;
-  static fs::path* folder_;
 };
-MotionFile* MassFilesTest::file_ = nullptr;
-MassStudyOptions* MassFilesTest::options_ = nullptr;
-MassStudyResult* MassFilesTest::study_ = nullptr;
-fs::path* MassFilesTest::folder_ = nullptr;
 
 /// Equal to the ten significant digits mass.csv keeps.
 void expect_ten_digits(double read, double written) {
@@ -71,10 +35,10 @@ void expect_ten_digits(double read, double written) {
 }
 
 TEST_F(MassFilesTest, FolderReadsBack) {
-  ASSERT_TRUE(is_mass_study_folder(folder_->string()));
+  ASSERT_TRUE(is_mass_study_folder(folder_.string()));
   EXPECT_FALSE(is_mass_study_folder("/nonexistent/folder"));
   EXPECT_FALSE(is_mass_study_folder(SALTUS_EXAMPLES_DIR));
-  const MassStudyFolder f = read_mass_study_folder(folder_->string() + "/");
+  const MassStudyFolder f = read_mass_study_folder(folder_.string() + "/");
   EXPECT_EQ(f.name, "saltus_mass_files_test");
   EXPECT_EQ(f.motion, file_->motion.name);
   EXPECT_EQ(f.motion_file, file_->path);
