@@ -133,6 +133,14 @@ std::vector<OptionSpec> make_table() {
   o.applies = [](const OptimizeOptions& x) { return x.nlp.optimize_timing; };
   t.push_back(o);
 
+  o = entry("min_time_gap", "--min-time-gap", "Min keyframe gap", "s",
+            "the least time between consecutive keyframes (paper eq. 4), at most half the "
+            "shortest given interval");
+  range(o, OptionKind::kReal, 0.0, kUnbounded, true);
+  bind(o, nlp, &MotionNlpOptions::min_time_gap);
+  o.applies = [](const OptimizeOptions& x) { return x.nlp.optimize_timing; };
+  t.push_back(o);
+
   o = entry("regularization", "--regularization", "Regularization", "N²/rad²",
             "weight of the proximity term that keeps the joints near the interpolated motion "
             "(light limbs would otherwise flail); 0 = none");

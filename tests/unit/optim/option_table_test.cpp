@@ -87,6 +87,7 @@ TEST(OptionTable, DefaultsAreTheLibrarysOwn) {
             SolverOptions{}.objective_change_tolerance);
   EXPECT_EQ(defaults.real("epsilon"), MotionNlpOptions{}.epsilon);
   EXPECT_EQ(defaults.real("max_time_shift"), MotionNlpOptions{}.max_time_shift);
+  EXPECT_EQ(defaults.real("min_time_gap"), MotionNlpOptions{}.min_time_gap);
   EXPECT_EQ(defaults.real("regularization"), MotionNlpOptions{}.regularization);
   EXPECT_EQ(defaults.real("max_joint_turn"), 180.0);  // half a turn, exactly
   EXPECT_EQ(defaults.integer("threads"), MotionNlpOptions{}.threads);
@@ -143,6 +144,7 @@ TEST(OptionTable, OptionsLandInTheirFields) {
   v.set("tolerance", 1e-6);
   v.set("objective_change_tolerance", 0.0);
   v.set("max_time_shift", 0.1);
+  v.set("min_time_gap", 0.02);
   v.set("regularization", 2.5);
   v.set("max_joint_turn", 90.0);
   v.set("threads", std::string("auto"));
@@ -156,6 +158,7 @@ TEST(OptionTable, OptionsLandInTheirFields) {
   EXPECT_EQ(o.solver.tolerance, 1e-6);
   EXPECT_EQ(o.solver.objective_change_tolerance, 0.0);
   EXPECT_EQ(o.nlp.max_time_shift, 0.1);
+  EXPECT_EQ(o.nlp.min_time_gap, 0.02);
   EXPECT_EQ(o.nlp.regularization, 2.5);
   EXPECT_NEAR(o.nlp.joint_turn_limit, M_PI / 2, 1e-15);
   EXPECT_EQ(o.nlp.threads, 0);  // MotionNlpOptions: 0 = one per hardware thread
