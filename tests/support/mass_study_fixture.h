@@ -12,6 +12,7 @@
 #include "saltus/formats/mass_files.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/studies/mass_study.h"
+#include "support/temp_path.h"
 
 namespace saltus::test {
 
@@ -38,8 +39,8 @@ inline MassStudyResult evaluated_mass_study(const MotionFile& file, const MassSt
   return study;
 }
 
-/// The evaluated mass study of a motion, written by write_mass_outputs into a folder under the
-/// system's temporary folder once per test suite (SetUpTestSuite calls write_folder).
+/// The evaluated mass study of a motion, written by write_mass_outputs into a folder private to
+/// the test process (temp_path) once per test suite (SetUpTestSuite calls write_folder).
 class MassStudyFolderFixture : public ::testing::Test {
  protected:
   static void write_folder(const std::string& motion_path, const MassStudyOptions& options,
@@ -47,7 +48,7 @@ class MassStudyFolderFixture : public ::testing::Test {
     file_ = std::make_unique<MotionFile>(load_motion_file(motion_path));
     options_ = std::make_unique<MassStudyOptions>(options);
     study_ = std::make_unique<MassStudyResult>(evaluated_mass_study(*file_, options, samples));
-    folder_ = std::filesystem::temp_directory_path() / folder_name;
+    folder_ = temp_path(folder_name);
     std::filesystem::remove_all(folder_);
     write_mass_outputs(folder_.string(), *file_, *study_, *options_);
   }

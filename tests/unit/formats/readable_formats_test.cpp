@@ -13,6 +13,7 @@
 #include "saltus/formats/model_file.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/formats/result_json.h"
+#include "support/temp_path.h"
 
 namespace saltus {
 namespace {
@@ -45,7 +46,7 @@ TEST(ReadableFormats, PatternsMatchLikeFileDialogs) {
 }
 
 TEST(ReadableFormats, PathsAreRecognisedByNameAndContent) {
-  const fs::path dir = fs::temp_directory_path() / "saltus_readable_formats_test";
+  const fs::path dir = test::temp_path("saltus_readable_formats_test");
   fs::remove_all(dir);
   fs::create_directories(dir);
   const std::string m1 =

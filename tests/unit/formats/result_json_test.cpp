@@ -14,6 +14,7 @@
 
 #include "saltus/base/input_error.h"
 #include "saltus/formats/motion_file.h"
+#include "support/temp_path.h"
 
 namespace saltus {
 namespace {
@@ -24,11 +25,9 @@ std::string m1_path() {
   return std::string(SALTUS_EXAMPLES_DIR) + "/motions/M1-straight-back-somersault.motion.json";
 }
 
-/// A fresh folder under the system's temporary folder, removed afterwards.
+/// A fresh folder private to the test process, removed afterwards.
 struct TempDir {
-  explicit TempDir(const std::string& name) : path(fs::temp_directory_path() / name) {
-    fs::remove_all(path);
-  }
+  explicit TempDir(const std::string& name) : path(test::temp_path(name)) { fs::remove_all(path); }
   ~TempDir() { fs::remove_all(path); }
   fs::path path;
 };
