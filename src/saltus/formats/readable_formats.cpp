@@ -35,29 +35,39 @@ std::string json_format_tag(const std::string& path) {
   return "";
 }
 
+/// The list. For a file format the last field is a content check (null: the name decides, and
+/// the format's reader then says what is wrong inside); for a folder, the whole test.
 std::vector<ReadableFormat> make_formats() {
-  std::vector<ReadableFormat> formats;
-  formats.push_back({ReadableKind::kModel, "Body models", {"*.json"}, false, nullptr});
-  formats.back().recognises = [patterns = formats.back().patterns](const std::string& path) {
-    return fs::is_regular_file(path) && name_matches(path, patterns) &&
-           json_format_tag(path) == kModelFormatTag;
-  };
-  // Any other JSON file is offered as a motion: the motion reader then says what is wrong.
-  formats.push_back(
-      {ReadableKind::kMotion, "Motions", {"*.motion.json", "*.json"}, false, nullptr});
-  formats.back().recognises = [patterns = formats.back().patterns](const std::string& path) {
-    return fs::is_regular_file(path) && name_matches(path, patterns);
-  };
-  formats.push_back(
-      {ReadableKind::kMassStudyFolder, "Mass study folders", {}, true, [](const std::string& path) {
-         return is_mass_study_folder(path);
-       }});
-  formats.push_back(
-      {ReadableKind::kResultFolder, "Result folders", {}, true, [](const std::string& path) {
+  std::vector<ReadableFormat> formats{
+      {ReadableKind::kModel,
+       "Body models",
+       {"*.json"},
+       false,
+       [](const std::string& path) { return json_format_tag(path) == kModelFormatTag; }},
+      // Any other JSON file is offered as a motion.
+      {ReadableKind::kMotion, "Motions", {"*.motion.json", "*.json"}, false, nullptr},
+      {ReadableKind::kCapture, "Motion captures (BVH)", {"*.bvh"}, false, nullptr},
+      {ReadableKind::kMassStudyFolder,
+       "Mass study folders",
+       {},
+       true,
+       [](const std::string& path) { return is_mass_study_folder(path); }},
+      {ReadableKind::kResultFolder,
+       "Result folders",
+       {},
+       true,
+       [](const std::string& path) {
          const fs::path result = fs::path(path) / "result.json";
          return fs::is_directory(path) && fs::is_regular_file(result) &&
                 json_format_tag(result.string()) == kResultFormatTag;
-       }});
+       }},
+  };
+  for (ReadableFormat& f : formats)
+    if (!f.folder)
+      f.recognises = [patterns = f.patterns, content = f.recognises](const std::string& path) {
+        return fs::is_regular_file(path) && name_matches(path, patterns) &&
+               (!content || content(path));
+      };
   return formats;
 }
 

@@ -1,5 +1,6 @@
 #include "saltus/formats/result_json.h"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -8,6 +9,7 @@
 #include "saltus/base/constants.h"
 #include "saltus/base/input_error.h"
 #include "saltus/base/json_reader.h"
+#include "saltus/base/text_format.h"
 #include "saltus/formats/model_file.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/formats/output_folder.h"
@@ -97,6 +99,26 @@ ResultJson common_result(const MotionFile& file, ResultJson::Kind kind, const st
   return r;
 }
 
+/// How the reported residual figures were computed (DESIGN §6).
+ResultJson::ResidualCheck residual_check(const DenseCheck& check) {
+  ResultJson::ResidualCheck c;
+  c.rule = "Simpson's rule on every knot span, " + std::to_string(kCheckPointsPerSpan) +
+           " or more intervals per span, " + format_number("%g", kCheckMaxSpacing) +
+           " s apart or closer, and at least the samples over the flight";
+  c.points = check.points;
+  return c;
+}
+
+/// A before/after block with the optimiser's own objective beside the dense check's figures.
+nlohmann::json metrics_json(const ForceMetrics& metrics, const std::optional<double>& optimizer) {
+  nlohmann::json j = force_metrics_to_json(metrics);
+  if (optimizer) {
+    j["optimizer_objective"] = *optimizer;
+    j["optimizer_avg_root_force"] = std::sqrt(*optimizer / 6.0);
+  }
+  return j;
+}
+
 bool read_bool(const JsonNode& node) {
   if (!node.value().is_boolean()) node.fail("expected true or false");
   return node.value().get<bool>();
@@ -156,8 +178,13 @@ nlohmann::json result_to_json(const ResultJson& r) {
   j["keyframes"] = r.keyframes;
   for (const auto& [key, value] : r.options)
     j[key] = option_json(value);
-  j["before"] = force_metrics_to_json(r.before);
+  const auto& o = r.optimization;
+  j["before"] = metrics_json(r.before, o ? o->optimizer_objective_before : std::nullopt);
   j["keyframe_times_before"] = r.keyframe_times_before;
+  if (const auto& c = r.residual_check) {
+    j["residual_check"] = {{"rule", c->rule}, {"points", c->points}};
+    if (c->optimizer_agrees) j["residual_check"]["optimizer_agrees"] = *c->optimizer_agrees;
+  }
   const KeyframeErrors* e = r.keyframe_errors ? &*r.keyframe_errors : nullptr;
   j["max_translation_error_m"] = e ? nlohmann::json(e->max_translation_error_m) : nullptr;
   j["max_quaternion_error"] = e ? nlohmann::json(e->max_quaternion_error) : nullptr;
@@ -172,14 +199,16 @@ nlohmann::json result_to_json(const ResultJson& r) {
     j["landing"] = {{"root_error_deg", s->landing_root_error_deg},
                     {"joint_error_deg", joints},
                     {"com_error_m", s->landing_com_error_m}};
+    if (s->landing_root_vs_motion_deg)
+      j["landing"]["root_vs_motion_deg"] = *s->landing_root_vs_motion_deg;
+    if (s->angular_momentum_spread) j["angular_momentum_spread"] = *s->angular_momentum_spread;
   }
-  const auto& o = r.optimization;
   // Evaluations and simulations keep the optimiser's DESIGN §6 fields, as null.
   j["iterations"] = o ? nlohmann::json(o->iterations) : nullptr;
   j["solve_seconds"] = o ? nlohmann::json(o->solve_seconds) : nullptr;
   j["variables"] = o ? nlohmann::json(o->variables) : nullptr;
   j["constraints"] = o ? nlohmann::json(o->constraints) : nullptr;
-  j["after"] = o ? force_metrics_to_json(o->after) : nullptr;
+  j["after"] = o ? metrics_json(o->after, o->optimizer_objective_after) : nullptr;
   j["keyframe_times_after"] = o ? nlohmann::json(o->keyframe_times_after) : nullptr;
   if (o && o->ipopt_status) j["ipopt_status"] = *o->ipopt_status;
   if (o && o->restarts) j["restarts"] = *o->restarts;
@@ -222,6 +251,14 @@ ResultJson parse_result_json(const nlohmann::json& document, const std::string& 
         r.options.emplace_back(spec.result_key, read_option(spec, *node));
   r.before = read_force_metrics(root.at("before"));
   r.keyframe_times_before = root.at("keyframe_times_before").as_double_array();
+  if (const auto check = root.find("residual_check")) {
+    ResultJson::ResidualCheck c;
+    c.rule = check->at("rule").as_string();
+    c.points = check->at("points").as_int();
+    if (const auto agrees = check->find("optimizer_agrees"))
+      c.optimizer_agrees = read_bool(*agrees);
+    r.residual_check = c;
+  }
   if (const auto translation = root.find("max_translation_error_m")) {
     KeyframeErrors e;
     e.max_translation_error_m = translation->as_double();
@@ -242,6 +279,10 @@ ResultJson parse_result_json(const nlohmann::json& document, const std::string& 
     joints.require_object();
     for (const auto& [name, node] : joints.members())
       s.landing_joint_error_deg[name] = node.as_double();
+    if (const auto vs_motion = landing.find("root_vs_motion_deg"))
+      s.landing_root_vs_motion_deg = vs_motion->as_double();
+    if (const auto spread = root.find("angular_momentum_spread"))
+      s.angular_momentum_spread = spread->as_double();
     r.simulation = std::move(s);
   }
   if (r.kind == ResultJson::Kind::kOptimization) {
@@ -251,6 +292,10 @@ ResultJson parse_result_json(const nlohmann::json& document, const std::string& 
     o.variables = root.at("variables").as_int();
     o.constraints = root.at("constraints").as_int();
     o.after = read_force_metrics(root.at("after"));
+    if (const auto objective = root.at("before").find("optimizer_objective"))
+      o.optimizer_objective_before = objective->as_double();
+    if (const auto objective = root.at("after").find("optimizer_objective"))
+      o.optimizer_objective_after = objective->as_double();
     o.keyframe_times_after = root.at("keyframe_times_after").as_double_array();
     if (const auto status = root.find("ipopt_status")) o.ipopt_status = status->as_string();
     if (const auto restarts = root.find("restarts")) o.restarts = restarts->as_int();
@@ -277,6 +322,7 @@ ResultJson evaluation_result(const MotionFile& file, const MotionEvaluation& e,
   ResultJson r = common_result(file, ResultJson::Kind::kEvaluation, "evaluated", options);
   r.before = e.metrics;
   r.keyframe_times_before = e.keyframe_times;
+  r.residual_check = residual_check(e.check);
   r.keyframe_errors = e.keyframe_errors;
   r.takeoff_angular_momentum = e.samples.front().angular_momentum;
   return r;
@@ -290,7 +336,10 @@ ResultJson simulation_result(const MotionFile& file, const SimulationResult& s,
     r.keyframe_times_before.push_back(k.time);
   r.takeoff_angular_momentum = s.angular_momentum;
   ResultJson::Simulation sim;
-  sim.angular_momentum_source = s.angular_momentum_from_file ? "motion file" : "keyframes";
+  sim.angular_momentum_source =
+      s.angular_momentum_from_file ? "motion file" : "best constant fit to the motion's L(t)";
+  sim.angular_momentum_spread = s.angular_momentum_spread;
+  sim.landing_root_vs_motion_deg = s.landing_vs_motion_deg;
   sim.landing_root_error_deg = s.landing_root_error_deg;
   sim.landing_joint_error_deg = s.landing_joint_error_deg;
   sim.landing_com_error_m = s.landing_com_error_m;
@@ -306,8 +355,12 @@ ResultJson optimization_result(const MotionFile& file, const OptimizationResult&
   r.options = recorded_options(options, true);
   r.before = result.before.metrics;
   r.keyframe_times_before = result.before.keyframe_times;
+  r.residual_check = residual_check(result.after.check);
+  r.residual_check->optimizer_agrees = optimizer_agrees_with_check(result);
   r.keyframe_errors = result.after.keyframe_errors;
   ResultJson::Optimization o;
+  o.optimizer_objective_before = result.optimizer_objective_before;
+  o.optimizer_objective_after = result.optimizer_objective_after;
   o.iterations = result.solve.iterations;
   o.solve_seconds = result.solve.seconds;
   o.variables = result.variables;

@@ -43,15 +43,25 @@ struct ResultJson {
   std::vector<std::pair<std::string, OptionValue>> options;
   ForceMetrics before;  ///< the evaluated, simulated or interpolated ("before") motion
   std::vector<double> keyframe_times_before;
+  /// How the residual figures were computed (the dense check); evaluations and optimisations.
+  struct ResidualCheck {
+    std::string rule;
+    int points = 0;
+    std::optional<bool> optimizer_agrees;  ///< optimisations: its quadrature agrees with it
+  };
+  std::optional<ResidualCheck> residual_check;
   /// Of the evaluated or the optimised motion; none for simulations (null in the file).
   std::optional<KeyframeErrors> keyframe_errors;
   std::optional<Eigen::Vector3d> takeoff_angular_momentum;  ///< evaluations and simulations
 
   struct Simulation {
-    std::string angular_momentum_source;  ///< "motion file" or "keyframes"
+    /// "motion file", or "best constant fit to the motion's L(t)" ("keyframes" in older files)
+    std::string angular_momentum_source;
+    std::optional<double> angular_momentum_spread;  ///< kg·m²/s, RMS of L(t) about it
     double landing_root_error_deg = 0.0;
     std::map<std::string, double> landing_joint_error_deg;  ///< joint name -> degrees
     double landing_com_error_m = 0.0;
+    std::optional<double> landing_root_vs_motion_deg;
   };
   std::optional<Simulation> simulation;
 
@@ -61,6 +71,9 @@ struct ResultJson {
     int variables = 0;
     int constraints = 0;
     ForceMetrics after;
+    /// J by the optimiser's own quadrature at the start and the end, written into "before"
+    /// and "after" with its average root force.
+    std::optional<double> optimizer_objective_before, optimizer_objective_after;
     std::vector<double> keyframe_times_after;
     std::optional<std::string> ipopt_status;
     std::optional<int> restarts;

@@ -47,18 +47,17 @@ MotionNlp::MotionNlp(const Motion& motion, const BodyModel& model,
   time_gap_ = std::min(options.min_time_gap, 0.5 * shortest);
 
   sample_times_ = uniform_times(duration_, options.samples);
-  std::vector<double> weights(options.samples, 0.0);  // trapezoid weights / T
-  for (int s = 0; s + 1 < options.samples; ++s) {
-    const double half = 0.5 * (sample_times_[s + 1] - sample_times_[s]) / duration_;
-    weights[s] += half;
-    weights[s + 1] += half;
-  }
+  if (options.quadrature_nodes < 1 || !(options.quadrature_spacing > 0))
+    throw std::invalid_argument("the quadrature needs at least one node per knot span");
 
   int threads = options.threads > 0
                     ? options.threads
                     : std::min(4, static_cast<int>(std::thread::hardware_concurrency()));
-  // A thread below ~20 samples costs more to start than it saves.
-  threads = std::max(1, std::min(threads, options.samples / 20));
+  // A thread below ~20 evaluations costs more to start than it saves.
+  const int evaluations =
+      std::max(options.samples, std::max((layout_.control_count() - 3) * options.quadrature_nodes,
+                                         static_cast<int>(duration_ / options.quadrature_spacing)));
+  threads = std::max(1, std::min(threads, evaluations / 20));
   at_ = std::make_unique<NlpEvaluations>(model, layout_, reference_, threads);
   band_ = HessianBand(layout_);
   targets_ = std::make_unique<KeyframeTargets>(motion, model);
@@ -69,7 +68,9 @@ MotionNlp::MotionNlp(const Motion& motion, const BodyModel& model,
     objective_.push_back(term.get());
     owned_terms_.push_back(std::move(term));
   };
-  auto root_wrench = std::make_unique<RootWrenchTerm>(sample_times_, std::move(weights), &damping_);
+  auto root_wrench = std::make_unique<RootWrenchTerm>(
+      SpanQuadrature(layout_, initial.knots, options.quadrature_nodes, options.quadrature_spacing),
+      duration_, &damping_);
   root_wrench_ = root_wrench.get();
   if (relaxed) {
     add_term(std::move(root_wrench));

@@ -60,9 +60,13 @@ struct MotionNlpOptions {
   double epsilon = 100.0;         ///< strict: bound on each |F_i(t_s)|, N or N·m
   bool optimize_timing = true;    ///< interior keyframe times are variables
   int knots_per_interval = 1;     ///< spline refinement K (1 = the paper's resolution)
-  int samples = kDefaultSamples;  ///< quadrature grid on [0, T], ends included
-  double min_time_gap = 0.05;     ///< s, eq. (4)'s gap (capped at half the shortest interval)
-  double max_time_shift = 0.25;   ///< s, how far a keyframe time may move from the given one
+  int samples = kDefaultSamples;  ///< strict model: the times of its force bounds on [0, T]
+  /// The relaxed objective's integral (RootWrenchTerm): Gauss–Legendre nodes on every knot
+  /// span, at least quadrature_nodes and at most quadrature_spacing apart (s).
+  int quadrature_nodes = 4;
+  double quadrature_spacing = 0.02;
+  double min_time_gap = 0.05;    ///< s, eq. (4)'s gap (capped at half the shortest interval)
+  double max_time_shift = 0.25;  ///< s, how far a keyframe time may move from the given one
   /// Levenberg-Marquardt damping of the Gauss-Newton Hessian: μ·J(x)·I is added (Yamashita &
   /// Fukushima 2001: damping ∝ ‖F‖² keeps fast local convergence at a zero residual).
   /// Light segments (feet, forearms) barely change the root force, so undamped Gauss-Newton
@@ -157,7 +161,7 @@ class MotionNlp : public Nlp {
   /// The damping factor μ the next Hessian will use.
   double damping_factor() const { return damping_.factor(); }
 
-  /// Relaxed objective J at x on the quadrature grid (also defined for the strict model).
+  /// Relaxed objective J at x by the span quadrature (also defined for the strict model).
   double force_objective(const double* x);
 
  private:

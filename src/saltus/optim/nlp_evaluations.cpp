@@ -1,6 +1,10 @@
 #include "saltus/optim/nlp_evaluations.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
+
+#include "saltus/math/gauss_legendre.h"
 
 namespace saltus {
 
@@ -69,6 +73,56 @@ const std::vector<LocalJacobian<6>>& WrenchSamples::jacobians(NlpEvaluations& at
     for (int s = begin; s < end; ++s) {
       evaluator.wrench_jacobian(times_[s], jacobians_[s]);
       values_[s] = jacobians_[s].value;
+    }
+  });
+  values_generation_ = jacobians_generation_ = at.generation();
+  return jacobians_;
+}
+
+SpanQuadrature::SpanQuadrature(const TrajectoryLayout& layout, const std::vector<double>& knots,
+                               int min_nodes, double max_spacing) {
+  // Spans 3 .. control_count − 1 are the clamped knot vector's spans of positive length.
+  for (int span = 3; span < layout.control_count(); ++span) {
+    const double length = knots.at(span + 1) - knots.at(span);
+    const int count = std::max(min_nodes, static_cast<int>(std::ceil(length / max_spacing - 1e-9)));
+    const QuadratureRule rule = gauss_legendre(count);
+    for (int q = 0; q < count; ++q)
+      nodes_.push_back({span, rule.nodes[q], rule.weights[q]});
+  }
+  values_.resize(nodes_.size());
+  jacobians_.resize(nodes_.size());
+  span_length_rates_.resize(nodes_.size());
+}
+
+double SpanQuadrature::span_length(NlpEvaluations& at, int node) const {
+  const std::vector<double>& knots = at.evaluator().knots();
+  const int s = nodes_[node].span;
+  return knots[s + 1] - knots[s];
+}
+
+double SpanQuadrature::time(NlpEvaluations& at, int node) const {
+  const std::vector<double>& knots = at.evaluator().knots();
+  const int s = nodes_[node].span;
+  return knots[s] + nodes_[node].xi * (knots[s + 1] - knots[s]);
+}
+
+const std::vector<Vector6d>& SpanQuadrature::values(NlpEvaluations& at) {
+  if (values_generation_ == at.generation()) return values_;
+  at.for_each_range(size(), [this](int, RootWrenchDerivatives& evaluator, int begin, int end) {
+    for (int n = begin; n < end; ++n)
+      values_[n] = evaluator.wrench_on_span(nodes_[n].span, nodes_[n].xi);
+  });
+  values_generation_ = at.generation();
+  return values_;
+}
+
+const std::vector<LocalJacobian<6>>& SpanQuadrature::jacobians(NlpEvaluations& at) {
+  if (jacobians_generation_ == at.generation()) return jacobians_;
+  at.for_each_range(size(), [this](int, RootWrenchDerivatives& evaluator, int begin, int end) {
+    for (int n = begin; n < end; ++n) {
+      evaluator.wrench_jacobian_on_span(nodes_[n].span, nodes_[n].xi, jacobians_[n],
+                                        span_length_rates_[n]);
+      values_[n] = jacobians_[n].value;
     }
   });
   values_generation_ = jacobians_generation_ = at.generation();

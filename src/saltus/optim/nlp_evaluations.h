@@ -95,4 +95,42 @@ class WrenchSamples {
   long values_generation_ = -1, jacobians_generation_ = -1;
 };
 
+/// The root wrench at Gauss–Legendre nodes on every knot span (nodes that move with the knots
+/// when the keyframe times move) and, on demand, its derivatives, cached per point. A node's
+/// quadrature weight is (k_{s+1} − k_s)·ω / T; span_length_rates() gives how the span length
+/// k_{s+1} − k_s moves with the keyframe times in each node's time slots.
+class SpanQuadrature {
+ public:
+  struct Node {
+    int span = 3;         ///< knot span s
+    double xi = 0.5;      ///< t = k_s + ξ·(k_{s+1} − k_s)
+    double weight = 1.0;  ///< the rule's weight on [0, 1]
+  };
+  /// Gauss–Legendre nodes on every knot span of positive length: at least `min_nodes`, and
+  /// enough that they are at most `max_spacing` apart on the span's length in `knots` (the
+  /// starting knots: the nodes stay fixed in number while the knots move).
+  SpanQuadrature(const TrajectoryLayout& layout, const std::vector<double>& knots, int min_nodes,
+                 double max_spacing);
+
+  const std::vector<Node>& nodes() const { return nodes_; }
+  int size() const { return static_cast<int>(nodes_.size()); }
+  /// Node n's time at the current point of `at` (s).
+  double time(NlpEvaluations& at, int node) const;
+  /// Node n's span length at the current point (s).
+  double span_length(NlpEvaluations& at, int node) const;
+  const std::vector<Vector6d>& values(NlpEvaluations& at);
+  const std::vector<LocalJacobian<6>>& jacobians(NlpEvaluations& at);
+  /// d(span length)/dτ per node, in the time slots of its jacobian (valid after jacobians()).
+  const std::vector<Eigen::Matrix<double, 1, kMaxLocalTimes>>& span_length_rates() const {
+    return span_length_rates_;
+  }
+
+ private:
+  std::vector<Node> nodes_;
+  std::vector<Vector6d> values_;
+  std::vector<LocalJacobian<6>> jacobians_;
+  std::vector<Eigen::Matrix<double, 1, kMaxLocalTimes>> span_length_rates_;
+  long values_generation_ = -1, jacobians_generation_ = -1;
+};
+
 }  // namespace saltus

@@ -24,6 +24,7 @@ TEST(ReadableFormats, DialogFiltersComeFromTheEntries) {
   EXPECT_EQ(dialog_filter(ReadableKind::kMotion), "Motions (*.motion.json *.json)");
   EXPECT_EQ(save_dialog_filter(ReadableKind::kMotion), "Motions (*.motion.json)");
   EXPECT_EQ(dialog_filter(ReadableKind::kModel), "Body models (*.json)");
+  EXPECT_EQ(dialog_filter(ReadableKind::kCapture), "Motion captures (BVH) (*.bvh)");
   for (const ReadableFormat& f : readable_formats()) {
     EXPECT_EQ(&readable_format(f.kind), &f);
     EXPECT_EQ(f.folder, f.patterns.empty()) << f.name;
@@ -71,6 +72,9 @@ TEST(ReadableFormats, PathsAreRecognisedByNameAndContent) {
   fs::create_directories(dir / "broken");
   std::ofstream((dir / "broken/result.json").string()) << "{ not json";
   EXPECT_EQ(identify_readable((dir / "broken").string()), std::nullopt);
+  // A capture, by its extension (the BVH reader says what is wrong inside).
+  std::ofstream((dir / "jump.BVH").string()) << "HIERARCHY";
+  EXPECT_EQ(identify_readable((dir / "jump.BVH").string()), ReadableKind::kCapture);
   // Any other .json is offered as a motion, so the motion reader can say what is wrong with it.
   std::ofstream((dir / "other.json").string()) << "{\"format\": \"something/1\"}";
   EXPECT_EQ(identify_readable((dir / "other.json").string()), ReadableKind::kMotion);

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -44,8 +45,11 @@ auto fields(const Tolerances& t) {
   return std::tie(t.translation_m, t.quaternion);
 }
 auto fields(const ResultJson::Simulation& s) {
-  return std::tie(s.angular_momentum_source, s.landing_root_error_deg, s.landing_joint_error_deg,
-                  s.landing_com_error_m);
+  return std::tie(s.angular_momentum_source, s.angular_momentum_spread, s.landing_root_error_deg,
+                  s.landing_joint_error_deg, s.landing_com_error_m, s.landing_root_vs_motion_deg);
+}
+auto fields(const ResultJson::ResidualCheck& c) {
+  return std::tie(c.rule, c.points, c.optimizer_agrees);
 }
 auto fields(const ResultJson::Optimization& o) {
   return std::make_tuple(o.iterations, o.solve_seconds, o.variables, o.constraints, fields(o.after),
@@ -65,6 +69,7 @@ void expect_same(const ResultJson& a, const ResultJson& b) {
             std::tie(b.knots_per_interval, b.flight_time_s, b.keyframes, b.options));
   EXPECT_TRUE(fields(a.before) == fields(b.before));
   EXPECT_EQ(a.keyframe_times_before, b.keyframe_times_before);
+  EXPECT_TRUE(optional_fields(a.residual_check) == optional_fields(b.residual_check));
   EXPECT_TRUE(optional_fields(a.keyframe_errors) == optional_fields(b.keyframe_errors));
   EXPECT_EQ(a.takeoff_angular_momentum, b.takeoff_angular_momentum);
   EXPECT_TRUE(optional_fields(a.simulation) == optional_fields(b.simulation));
@@ -113,13 +118,20 @@ ResultJson random_result(ResultJson::Kind kind, std::mt19937& rng) {
   r.options = recorded_options(values.optimize_options(), kind == ResultJson::Kind::kOptimization);
   r.before = metrics();
   r.keyframe_times_before = times(r.keyframes);
-  if (kind != ResultJson::Kind::kSimulation)
+  if (kind != ResultJson::Kind::kSimulation) {
     r.keyframe_errors = KeyframeErrors{positive(rng), positive(rng), positive(rng)};
+    r.residual_check = ResultJson::ResidualCheck{"rule " + std::to_string(rng()),
+                                                 static_cast<int>(rng() % 1000), std::nullopt};
+    if (kind == ResultJson::Kind::kOptimization) r.residual_check->optimizer_agrees = rng() % 2;
+  }
   if (kind != ResultJson::Kind::kOptimization)
     r.takeoff_angular_momentum = Eigen::Vector3d(any(rng), any(rng), any(rng));
   if (kind == ResultJson::Kind::kSimulation) {
     ResultJson::Simulation s;
-    s.angular_momentum_source = rng() % 2 ? "motion file" : "keyframes";
+    s.angular_momentum_source =
+        rng() % 2 ? "motion file" : "best constant fit to the motion's L(t)";
+    s.angular_momentum_spread = positive(rng);
+    s.landing_root_vs_motion_deg = positive(rng);
     s.landing_root_error_deg = positive(rng);
     s.landing_com_error_m = positive(rng);
     for (const char* joint : {"root", "hip_l", "knee_r"})
@@ -133,6 +145,8 @@ ResultJson random_result(ResultJson::Kind kind, std::mt19937& rng) {
     o.variables = count(rng) * 30;
     o.constraints = count(rng) * 7;
     o.after = metrics();
+    o.optimizer_objective_before = positive(rng);
+    o.optimizer_objective_after = positive(rng);
     o.keyframe_times_after = times(r.keyframes);
     o.ipopt_status = "acceptable";
     o.restarts = static_cast<int>(rng() % 3);
@@ -182,9 +196,10 @@ TEST(ResultJson, KeysAreThoseOfDesignSection6) {
                           "max_translation_error_m",
                           "max_quaternion_error",
                           "max_rotation_error_deg",
-                          "takeoff_angular_momentum"})
+                          "takeoff_angular_momentum",
+                          "residual_check"})
     EXPECT_TRUE(e.contains(key)) << key;
-  EXPECT_EQ(e.size(), 21u) << e.dump();
+  EXPECT_EQ(e.size(), 22u) << e.dump();
   EXPECT_TRUE(e["after"].is_null());
   EXPECT_TRUE(e["iterations"].is_null());
   EXPECT_TRUE(e["samples"].is_number_integer());
@@ -194,6 +209,15 @@ TEST(ResultJson, KeysAreThoseOfDesignSection6) {
         "timing_optimized", "tolerances", "joint_turn_limit_deg", "largest_joint_turn_deg"})
     EXPECT_TRUE(o.contains(key)) << key;
   EXPECT_FALSE(o.contains("takeoff_angular_momentum"));
+  EXPECT_TRUE(o["residual_check"].contains("optimizer_agrees"));
+  for (const char* stage : {"before", "after"})
+    EXPECT_EQ(o[stage]["optimizer_avg_root_force"].get<double>(),
+              std::sqrt(o[stage]["optimizer_objective"].get<double>() / 6.0));
+  const nlohmann::json s = result_to_json(random_result(ResultJson::Kind::kSimulation, rng));
+  for (const char* key : {"takeoff_angular_momentum_source", "angular_momentum_spread", "landing"})
+    EXPECT_TRUE(s.contains(key)) << key;
+  EXPECT_TRUE(s["landing"].contains("root_vs_motion_deg"));
+  EXPECT_FALSE(s.contains("residual_check"));
   EXPECT_EQ(o.contains("epsilon"), o["formulation"] == "strict");
   EXPECT_TRUE(o["iterations"].is_number_integer());
   EXPECT_TRUE(o["joint_turn_limit_deg"].is_number_float());
@@ -204,13 +228,18 @@ TEST(ResultJson, OlderOptimisationResultsWithoutTheLaterKeysStillRead) {
   nlohmann::json j = result_to_json(random_result(ResultJson::Kind::kOptimization, rng));
   for (const char* key : {"restarts", "tolerances", "largest_joint_turn_deg", "ipopt_status",
                           "knots_per_interval_requested", "joint_turn_limit_deg", "formulation",
-                          "timing_optimized", "epsilon"})
+                          "timing_optimized", "epsilon", "residual_check"})
     j.erase(key);
+  for (const char* stage : {"before", "after"})
+    for (const char* key : {"optimizer_objective", "optimizer_avg_root_force"})
+      j[stage].erase(key);
   const ResultJson r = parse_result_json(j, "old.json");
   EXPECT_EQ(r.kind, ResultJson::Kind::kOptimization);
   ASSERT_TRUE(r.optimization);
   EXPECT_FALSE(r.optimization->restarts);
   EXPECT_FALSE(r.optimization->tolerances);
+  EXPECT_FALSE(r.optimization->optimizer_objective_after);
+  EXPECT_FALSE(r.residual_check);
   EXPECT_FALSE(r.option("formulation"));
   ASSERT_TRUE(r.option("samples"));
   EXPECT_EQ(result_to_json(r), j);

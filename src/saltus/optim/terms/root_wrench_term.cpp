@@ -4,48 +4,63 @@
 
 namespace saltus {
 
-RootWrenchTerm::RootWrenchTerm(std::vector<double> times, std::vector<double> weights,
+RootWrenchTerm::RootWrenchTerm(SpanQuadrature nodes, double duration,
                                const AdaptiveDamping* damping)
-    : samples_(std::move(times)), weights_(std::move(weights)), damping_(damping) {}
+    : nodes_(std::move(nodes)), duration_(duration), damping_(damping) {}
+
+double RootWrenchTerm::weight(NlpEvaluations& at, int node) const {
+  return nodes_.span_length(at, node) * nodes_.nodes()[node].weight / duration_;
+}
+
+std::vector<double> RootWrenchTerm::times(NlpEvaluations& at) const {
+  std::vector<double> t;
+  for (int n = 0; n < nodes_.size(); ++n)
+    t.push_back(nodes_.time(at, n));
+  return t;
+}
 
 double RootWrenchTerm::value(NlpEvaluations& at) {
-  const std::vector<Vector6d>& wrench = samples_.values(at);
+  const std::vector<Vector6d>& wrench = nodes_.values(at);
   double j = 0.0;
-  for (std::size_t s = 0; s < wrench.size(); ++s)
-    j += weights_[s] * wrench[s].squaredNorm();
+  for (int n = 0; n < nodes_.size(); ++n)
+    j += weight(at, n) * wrench[n].squaredNorm();
   return j;
 }
 
 void RootWrenchTerm::add_gradient(NlpEvaluations& at, double* gradient) {
-  const std::vector<LocalJacobian<6>>& jacobians = samples_.jacobians(at);
-  const std::vector<Vector6d>& wrench = samples_.values(at);
-  for (std::size_t s = 0; s < jacobians.size(); ++s) {
-    const LocalJacobian<6>& jac = jacobians[s];
-    const Eigen::Matrix<double, 1, 6> w = 2.0 * weights_[s] * wrench[s].transpose();
+  // ∇(w‖F‖²) = 2w·Fᵀ∇F + ‖F‖²·∇w, the weight moving with its span's length.
+  const std::vector<LocalJacobian<6>>& jacobians = nodes_.jacobians(at);
+  const std::vector<Vector6d>& wrench = nodes_.values(at);
+  for (int n = 0; n < nodes_.size(); ++n) {
+    const LocalJacobian<6>& jac = jacobians[n];
+    const Eigen::Matrix<double, 1, 6> w = 2.0 * weight(at, n) * wrench[n].transpose();
     Eigen::Map<Eigen::RowVectorXd>(gradient + jac.first_control_variable, jac.control.cols()) +=
         w * jac.control;
+    const double weight_rate = nodes_.nodes()[n].weight / duration_ * wrench[n].squaredNorm();
     for (int p = 0; p < jac.time_count; ++p)
-      gradient[jac.time_variable[p]] += w * jac.time.col(p);
+      gradient[jac.time_variable[p]] +=
+          w * jac.time.col(p) + weight_rate * nodes_.span_length_rates()[n][p];
   }
 }
 
 std::vector<double> RootWrenchTerm::residuals(NlpEvaluations& at) {
-  const std::vector<Vector6d>& wrench = samples_.values(at);
+  const std::vector<Vector6d>& wrench = nodes_.values(at);
   std::vector<double> r;
-  for (std::size_t s = 0; s < wrench.size(); ++s)
+  for (int n = 0; n < nodes_.size(); ++n)
     for (int c = 0; c < 6; ++c)
-      r.push_back(std::sqrt(weights_[s]) * wrench[s][c]);
+      r.push_back(std::sqrt(weight(at, n)) * wrench[n][c]);
   return r;
 }
 
 void RootWrenchTerm::add_curvature(NlpEvaluations& at, double factor, const HessianBand& band,
                                    double* values) {
-  // 2·factor·Σ w_s J_sᵀJ_s. Samples on one knot span share their columns (the span's control
-  // block and time slots), so their sum is one symmetric rank-k update of the stacked, weighted
-  // rows and one scatter into the band, instead of a dense product and a scatter per sample.
-  // The spans' blocks are computed in parallel and scattered in span order, so the sums do not
+  // 2·factor·Σ_n ∇r_nᵀ∇r_n with r_n = √w_n·F_n, ∇r_n = √w_n·(∇F_n + F_n·∇w_n/(2w_n)). Nodes on
+  // one knot span share their columns (the span's control block and time slots), so their sum
+  // is one symmetric rank-k update of the stacked rows and one scatter into the band. The
+  // spans' blocks are computed in parallel and scattered in span order, so the sums do not
   // depend on the thread count.
-  const std::vector<LocalJacobian<6>>& jacobians = samples_.jacobians(at);
+  const std::vector<LocalJacobian<6>>& jacobians = nodes_.jacobians(at);
+  const std::vector<Vector6d>& wrench = nodes_.values(at);
   const double scale = 2.0 * factor;
   const std::size_t n = jacobians.size();
   spans_.clear();
@@ -72,10 +87,15 @@ void RootWrenchTerm::add_curvature(NlpEvaluations& at, double factor, const Hess
           const int times = first.time_count;
           stacked.resize(6 * (end - begin), width + times);
           for (int s = begin; s < end; ++s) {
-            const double root_weight = std::sqrt(scale * weights_[s]);
+            const double w = weight(at, s);
+            const double root_weight = std::sqrt(scale * w);
             const int row = 6 * (s - begin);
             stacked.block(row, 0, 6, width) = root_weight * jacobians[s].control;
-            stacked.block(row, width, 6, times) = root_weight * jacobians[s].time.leftCols(times);
+            const double relative_rate = nodes_.nodes()[s].weight / duration_ / (2.0 * w);
+            stacked.block(row, width, 6, times) =
+                root_weight *
+                (jacobians[s].time.leftCols(times) +
+                 relative_rate * wrench[s] * nodes_.span_length_rates()[s].leftCols(times));
           }
           Eigen::MatrixXd& block = span_blocks_[index];
           block.setZero(width + times, width + times);
