@@ -24,6 +24,18 @@ std::string times_text(const std::vector<double>& times) {
   }
   return out;
 }
+
+/// The knot spans per keyframe interval used: K when every interval has K, else each one's.
+std::string spans_text(const OptimizationResult& r) {
+  bool uniform = true;
+  for (int s : r.subdivisions)
+    uniform = uniform && s == r.knots_per_interval;
+  if (uniform) return std::to_string(r.knots_per_interval);
+  std::string out;
+  for (std::size_t i = 0; i < r.subdivisions.size(); ++i)
+    out += (i ? ", " : "") + std::to_string(r.subdivisions[i]);
+  return out;
+}
 }  // namespace
 
 OptimizeOptions to_optimize_options(const OptimizeSettings& settings) {
@@ -106,10 +118,13 @@ std::vector<ResultRow> result_table(const OptimizationResult& r, const OptimizeO
       {"model", "", strict ? "strict, ε = " + number("%g", options.nlp.epsilon) : "relaxed"});
   rows.push_back({"keyframes", std::to_string(r.before.keyframe_times.size()),
                   std::to_string(r.after.keyframe_times.size())});
-  // K before is the one asked for; after, the one used (optimize_motion refines the knots when
-  // the interpolation cannot pass through the keyframes).
-  rows.push_back({"knots per keyframe interval K", std::to_string(options.nlp.knots_per_interval),
-                  std::to_string(r.knots_per_interval)});
+  // K before is the one asked for ("auto": the automatic resolution, relaxed model); after, the
+  // spans per interval used (optimize_motion refines the knots when the interpolation cannot
+  // pass through the keyframes, and the automatic resolution where the residual lives).
+  const bool automatic = options.automatic_resolution && !strict;
+  rows.push_back({"knots per keyframe interval K",
+                  automatic ? "auto" : std::to_string(options.nlp.knots_per_interval),
+                  spans_text(r)});
   rows.push_back({"variables", "", std::to_string(r.variables)});
   rows.push_back({"constraints", "", std::to_string(r.constraints)});
   rows.push_back({"objective J (N²)", number("%.4g", b.objective), number("%.4g", a.objective)});

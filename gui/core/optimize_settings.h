@@ -43,7 +43,8 @@ struct ResultRow {
   std::string after;
 };
 
-/// Keyframes, knot refinement (asked/used), variables, constraints, objective and average root
+/// Keyframes, knot spans per interval (asked: K or auto; used: K, or each interval's),
+/// variables, constraints, objective and average root
 /// force before/after, iterations (and restarts), seconds, status, RMS/peak force and moment,
 /// keyframe times and errors.
 std::vector<ResultRow> result_table(const OptimizationResult& result,

@@ -42,13 +42,18 @@ struct CommonArgs {
   saltus::cli::OptionFlags options;  ///< the option table's flags of the verb
 };
 
-/// MOTION, --out, --model, --quiet and the flags of the options named (option table).
-void add_common(CLI::App* cmd, CommonArgs& args, const std::vector<std::string>& options) {
+/// MOTION, --out, --model, --quiet and the option table's flags for runs of `runs` (evaluate and
+/// simulate: the evaluation options; optimize: all).
+void add_common(CLI::App* cmd, CommonArgs& args, saltus::OptionUse runs) {
   cmd->add_option("MOTION", args.motion_path, "motion file (*.motion.json) or capture (*.bvh)")
       ->required();
   cmd->add_option("--out", args.out_dir, "output folder (replaced if it holds an earlier result)")
       ->required();
-  args.options.add(cmd, options);
+  args.options.add(cmd,
+                   runs == saltus::OptionUse::kEvaluation
+                       ? saltus::cli::option_names(saltus::OptionUse::kEvaluation)
+                       : saltus::cli::all_option_names(),
+                   runs);
   cmd->add_option("--model", args.model_override,
                   "body model (name under resources/models or path), overrides the motion's");
   cmd->add_flag("--quiet,-q", args.quiet, "print nothing on success");
@@ -155,12 +160,22 @@ int run_optimize(const CommonArgs& args) {
                 std::get<std::string>(values.get("formulation")).c_str(), result.variables,
                 result.constraints, result.solve.status.c_str(), result.solve.ipopt_status.c_str(),
                 result.solve.iterations, result.solve.seconds);
-    if (result.knots_per_interval != options.nlp.knots_per_interval)
+    if (options.automatic_resolution) {
+      std::printf("  automatic resolution:");
+      for (const auto& level : result.levels) {
+        std::printf(" [");
+        for (std::size_t i = 0; i < level.subdivisions.size(); ++i)
+          std::printf("%s%d", i ? "," : "", level.subdivisions[i]);
+        std::printf("] %.3g N;", level.avg_root_force);
+      }
+      std::printf(" knot spans per keyframe interval, true average root force\n");
+    } else if (result.knots_per_interval != options.nlp.knots_per_interval) {
       std::printf(
           "  knots refined to %d per keyframe interval: on %d the interpolation misses the "
           "keyframes by more than their tolerance (a turn of more than 180 deg between control "
           "points)\n",
           result.knots_per_interval, options.nlp.knots_per_interval);
+    }
     if (result.solve.restarts > 0)
       std::printf("  the solver restarted %d time(s) from its best feasible iterate\n",
                   result.solve.restarts);
@@ -215,7 +230,10 @@ void add_study_common(CLI::App* cmd, StudyArgs& args) {
 }
 
 saltus::OptimizeOptions study_optimize_options(const StudyArgs& args) {
-  return args.options.values().optimize_options();
+  saltus::OptimizeOptions o = args.options.values().optimize_options();
+  // The studies reproduce the paper's protocol at its resolution (knots at the keyframes).
+  o.automatic_resolution = false;
+  return o;
 }
 
 struct ConvergenceArgs {
@@ -382,14 +400,14 @@ int main(int argc, char** argv) {
       "evaluate",
       "Interpolate the keyframes (paper §5) and compute the root force and moment the motion "
       "needs (inverse dynamics); writes result.json, trajectory.csv, model.json");
-  add_common(evaluate, evaluate_args, saltus::cli::option_names(saltus::OptionUse::kEvaluation));
+  add_common(evaluate, evaluate_args, saltus::OptionUse::kEvaluation);
 
   CommonArgs simulate_args;
   CLI::App* simulate = app.add_subcommand(
       "simulate",
       "Free flight: the joints follow the keyframed motion, the body's orientation and position "
       "follow Newton's laws; reports how far the landing is from the last keyframe");
-  add_common(simulate, simulate_args, saltus::cli::option_names(saltus::OptionUse::kEvaluation));
+  add_common(simulate, simulate_args, saltus::OptionUse::kEvaluation);
 
   CommonArgs optimize_args;
   CLI::App* optimize = app.add_subcommand(
@@ -398,7 +416,7 @@ int main(int argc, char** argv) {
       "keyframes within tolerance (paper eqs. 1-4), keyframe times included; writes before/after "
       "trajectories, result.json and optimized.motion.json. Exit status 3 if Ipopt does not "
       "converge (results are still written)");
-  add_common(optimize, optimize_args, saltus::cli::all_option_names());
+  add_common(optimize, optimize_args, saltus::OptionUse::kOptimization);
 
   CLI::App* study = app.add_subcommand(
       "study", "The paper's experiments: the convergence study (§3.4) and the mass study (§6.1)");

@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "support/cli_runner.h"
 
@@ -73,6 +75,28 @@ TEST(OptionFlags, EveryOptionParsesThroughTheTable) {
   EXPECT_TRUE(flags.given().empty());
 }
 
+TEST(OptionFlags, EvaluationCommandsTakeNumberedKnotsOnly) {
+  // auto knots are the optimiser's; evaluate and simulate start from the interpolation's K.
+  CLI::App app;
+  cli::OptionFlags flags;
+  flags.add(&app, cli::option_names(OptionUse::kEvaluation), OptionUse::kEvaluation);
+  EXPECT_EQ(flags.values(), OptionValues(OptionUse::kEvaluation));
+  EXPECT_EQ(flags.values().integer("knots_per_interval"),
+            EvaluateOptions{}.interpolation.knots_per_interval);
+  try {
+    app.parse(std::vector<std::string>{"auto", "--knots-per-interval"});
+    ADD_FAILURE() << "an evaluation command took auto knots";
+  } catch (const CLI::ParseError& e) {
+    EXPECT_NE(std::string(e.what()).find("--knots-per-interval"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("optimisations only"), std::string::npos) << e.what();
+  }
+  CLI::App numbered;
+  cli::OptionFlags given;
+  given.add(&numbered, cli::option_names(OptionUse::kEvaluation), OptionUse::kEvaluation);
+  numbered.parse(std::vector<std::string>{"5", "--knots-per-interval"});
+  EXPECT_EQ(given.values().evaluate_options().interpolation.knots_per_interval, 5);
+}
+
 TEST(CliOptions, HelpListsTheTablesFlagsWithTheirDefaults) {
   const auto optimize = test::run_cli("optimize --help");
   EXPECT_EQ(optimize.status, 0);
@@ -85,8 +109,11 @@ TEST(CliOptions, HelpListsTheTablesFlagsWithTheirDefaults) {
   EXPECT_NE(optimize.output.find("--samples INT=101"), std::string::npos) << optimize.output;
   EXPECT_NE(optimize.output.find("--max-joint-turn FLOAT=180"), std::string::npos);
   EXPECT_NE(optimize.output.find("--threads INT|auto=2"), std::string::npos);
+  EXPECT_NE(optimize.output.find("--knots-per-interval INT|auto=auto"), std::string::npos);
   const auto evaluate = test::run_cli("evaluate --help");
-  EXPECT_NE(evaluate.output.find("--knots-per-interval"), std::string::npos);
+  EXPECT_NE(evaluate.output.find("--knots-per-interval INT=1"), std::string::npos)
+      << evaluate.output;
+  EXPECT_EQ(evaluate.output.find("1-50 or auto"), std::string::npos) << evaluate.output;
   EXPECT_EQ(evaluate.output.find("--max-iter"), std::string::npos) << "an optimiser option";
   const auto study = test::run_cli("study mass --help");
   EXPECT_NE(study.output.find("--max-iter INT=300"), std::string::npos) << study.output;
@@ -95,12 +122,18 @@ TEST(CliOptions, HelpListsTheTablesFlagsWithTheirDefaults) {
 
 TEST(CliOptions, BadValuesExitWithTwoNamingTheFlagAndWriteNothing) {
   test::TempDir dir;
-  const std::vector<std::string> bad{
-      "evaluate M --samples 100001", "simulate M --knots-per-interval 0",
-      "optimize M --epsilon 0",      "optimize M --formulation loose",
-      "optimize M --threads none",   "optimize M --max-joint-turn 400",
-      "optimize M --tol -1",         "study mass M --samples 1",
-      "study mass M --max-iter -1"};
+  const std::vector<std::string> bad{"evaluate M --samples 100001",
+                                     "simulate M --knots-per-interval 0",
+                                     "evaluate M --knots-per-interval auto",
+                                     "optimize M --knots-per-interval 51",
+                                     "optimize M --knots-per-interval automatic",
+                                     "optimize M --epsilon 0",
+                                     "optimize M --formulation loose",
+                                     "optimize M --threads none",
+                                     "optimize M --max-joint-turn 400",
+                                     "optimize M --tol -1",
+                                     "study mass M --samples 1",
+                                     "study mass M --max-iter -1"};
   for (std::string command : bad) {
     const std::string flag =
         command.substr(command.rfind("--"), command.rfind(' ') - command.rfind("--"));
@@ -122,6 +155,44 @@ TEST(CliOptions, StudiesAndThreadsTakeTheTablesValues) {
                                      " --samples 21 --max-iter 1 --threads auto --quiet");
   EXPECT_TRUE(threads.status == 0 || threads.status == 3) << threads.output;
   EXPECT_TRUE(fs::exists(dir / "o/result.json"));
+}
+
+/// The `variables` of a result.json, or of the CSV row of `formulation`.
+int variables_in(const std::string& text, const std::string& formulation = "") {
+  if (formulation.empty()) return nlohmann::json::parse(text)["variables"].get<int>();
+  std::istringstream csv(text);
+  std::string line;
+  std::getline(csv, line);  // header: ...,variables,... is the 11th column
+  while (std::getline(csv, line)) {
+    std::vector<std::string> cells;
+    std::istringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');)
+      cells.push_back(cell);
+    if (cells.size() > 10 && cells[1] == formulation) return std::stoi(cells[10]);
+  }
+  return -1;
+}
+
+TEST(CliOptions, OptimizeChoosesItsKnotsAndTheStudiesKeepThePapers) {
+  // optimize's default is the automatic resolution, finer than the paper's knots on M1; the
+  // studies run at the paper's resolution (knots at the keyframes) whatever the default.
+  test::TempDir dir;
+  const std::string settings = " --samples 21 --max-iter 1 --quiet";
+  for (const auto& [name, knots] :
+       {std::pair<std::string, std::string>{"o", ""}, {"o1", " --knots-per-interval 1"}}) {
+    const auto run =
+        test::run_cli("optimize " + test::m1_path() + " --out " + (dir / name) + settings + knots);
+    EXPECT_TRUE(run.status == 0 || run.status == 3) << run.output;
+  }
+  const nlohmann::json automatic = nlohmann::json::parse(test::read_text(dir / "o/result.json"));
+  EXPECT_TRUE(automatic["resolution"]["automatic"].get<bool>());
+  const int paper = variables_in(test::read_text(dir / "o1/result.json"));
+  EXPECT_GT(automatic["variables"].get<int>(), paper) << "M1's automatic knots are finer";
+  const auto study =
+      test::run_cli("study convergence " + test::m1_path() + " --out " + (dir / "c") + settings +
+                    " --epsilons 100 --mass-errors 0 --timing-errors 0");
+  EXPECT_EQ(study.status, 0) << study.output;
+  EXPECT_EQ(variables_in(test::read_text(dir / "c/convergence.csv"), "relaxed"), paper);
 }
 
 }  // namespace

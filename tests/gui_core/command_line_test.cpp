@@ -91,6 +91,12 @@ TEST(CommandLine, TakesEveryOptimiserOptionOfTheTable) {
   changed.set("max_iterations", 9);
   changed.set("threads", std::string("auto"));
   EXPECT_EQ(some.applied_to(panel), changed);
+  // Knots: a number, or auto (the automatic resolution) over a panel that had a number.
+  OptimizeSettings numbered = panel;
+  numbered.set("knots_per_interval", 3);
+  const CommandLine automatic = parse_command_line({"m.json", "--knots-per-interval", "auto"});
+  EXPECT_TRUE(automatic.applied_to(numbered).optimize_options().automatic_resolution);
+  EXPECT_EQ(automatic.applied_to(numbered), panel);
   // The help text lists the table's flags with their defaults.
   const std::string usage = usage_text();
   for (const OptionSpec& spec : option_table())

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -151,13 +152,41 @@ TEST_F(OptimizedMotion, ResultTableHasTheRequiredRows) {
   EXPECT_EQ(find("variables")->after, std::to_string(result_->variables));
   EXPECT_EQ(find("iterations")->after, std::to_string(result_->solve.iterations));
   ASSERT_NE(find("knots per keyframe interval K"), nullptr);
+  // The panel's default is the automatic resolution.
+  ASSERT_TRUE(options_->automatic_resolution);
+  EXPECT_EQ(find("knots per keyframe interval K")->before, "auto");
+  std::string spans;
+  for (int s : result_->subdivisions)
+    spans += (spans.empty() ? "" : ", ") + std::to_string(s);
+  const bool uniform = std::all_of(result_->subdivisions.begin(), result_->subdivisions.end(),
+                                   [&](int s) { return s == result_->knots_per_interval; });
   EXPECT_EQ(find("knots per keyframe interval K")->after,
-            std::to_string(result_->knots_per_interval));
+            uniform ? std::to_string(result_->knots_per_interval) : spans);
   EXPECT_EQ(find("keyframes")->before, std::to_string(file_->motion.keyframes.size()));
   const ResultRow* turn = find("largest joint turn between control points (°)");
   ASSERT_NE(turn, nullptr);
   EXPECT_NEAR(std::stod(turn->after),
               largest_control_turn(result_->after.trajectory, 1) * 180.0 / M_PI, 0.5);
+}
+
+TEST_F(OptimizedMotion, KnotRowNamesEachIntervalsSpansWhenTheyDiffer) {
+  auto knot_row = [](const OptimizationResult& r, const OptimizeOptions& o) {
+    for (const ResultRow& row : result_table(r, o))
+      if (row.quantity == "knots per keyframe interval K") return row;
+    return ResultRow{};
+  };
+  OptimizationResult r = *result_;
+  r.subdivisions = {2, 3, 2};
+  r.knots_per_interval = 3;
+  EXPECT_EQ(knot_row(r, *options_).after, "2, 3, 2");
+  r.subdivisions = {3, 3, 3};
+  EXPECT_EQ(knot_row(r, *options_).after, "3");
+  OptimizeSettings uniform;
+  uniform.set("knots_per_interval", 2);
+  EXPECT_EQ(knot_row(r, to_optimize_options(uniform)).before, "2");
+  OptimizeSettings strict;
+  strict.set("formulation", std::string("strict"));  // no automatic resolution: K = 1
+  EXPECT_EQ(knot_row(r, to_optimize_options(strict)).before, "1");
 }
 
 TEST_F(OptimizedMotion, ReadsTheOutputFolderBack) {

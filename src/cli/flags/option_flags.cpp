@@ -4,22 +4,22 @@ namespace saltus::cli {
 
 namespace {
 
-std::string description(const OptionSpec& spec) {
+std::string description(const OptionSpec& spec, OptionUse runs) {
   std::string out = spec.help;
   if (spec.kind == OptionKind::kSwitch || spec.kind == OptionKind::kChoice) return out;
   out += " (";
   if (!spec.unit.empty()) out += spec.unit + "; ";
-  return out + option_range_text(spec) + ")";
+  return out + option_range_text(spec, runs) + ")";
 }
 
-std::string type_name(const OptionSpec& spec) {
+std::string type_name(const OptionSpec& spec, OptionUse runs) {
   switch (spec.kind) {
     case OptionKind::kChoice:
-      return option_range_text(spec);
+      return option_range_text(spec, runs);
     case OptionKind::kInteger:
-      return spec.word.empty() ? "INT" : "INT|" + spec.word;
+      return spec.takes_word(runs) ? "INT|" + spec.word : "INT";
     case OptionKind::kReal:
-      return spec.word.empty() ? "FLOAT" : "FLOAT|" + spec.word;
+      return spec.takes_word(runs) ? "FLOAT|" + spec.word : "FLOAT";
     case OptionKind::kSwitch:
       break;
   }
@@ -42,25 +42,26 @@ std::vector<std::string> all_option_names() {
   return out;
 }
 
-void OptionFlags::add(CLI::App* command, const std::vector<std::string>& names) {
+void OptionFlags::add(CLI::App* command, const std::vector<std::string>& names, OptionUse runs) {
+  if (runs != values_.runs()) values_ = OptionValues(runs);
   for (const std::string& name : names) {
     const OptionSpec& spec = option_spec(name);
     if (spec.kind == OptionKind::kSwitch) {
       // The flag turns the option away from its default (--no-timing).
-      const bool flagged = !std::get<bool>(spec.default_value());
+      const bool flagged = !std::get<bool>(values_.get(name));
       command->add_flag_function(
           spec.flag,
           [this, name, flagged](std::int64_t) {
             values_.set(name, flagged);
             given_.emplace_back(name, flagged);
           },
-          description(spec));
+          description(spec, runs));
       continue;
     }
     CLI::Validator check(
-        [&spec](std::string& text) -> std::string {
+        [&spec, runs](std::string& text) -> std::string {
           try {
-            parse_option_value(spec, text);
+            parse_option_value(spec, text, runs);
           } catch (const OptionValueError& e) {
             return e.problem();
           }
@@ -70,15 +71,15 @@ void OptionFlags::add(CLI::App* command, const std::vector<std::string>& names) 
     command
         ->add_option(
             spec.flag,
-            [this, &spec](const CLI::results_t& results) {
-              const OptionValue value = parse_option_value(spec, results.front());
+            [this, &spec, runs](const CLI::results_t& results) {
+              const OptionValue value = parse_option_value(spec, results.front(), runs);
               values_.set(spec.name, value);
               given_.emplace_back(spec.name, value);
               return true;
             },
-            description(spec))
-        ->type_name(type_name(spec))
-        ->default_str(option_value_text(spec.default_value()))
+            description(spec, runs))
+        ->type_name(type_name(spec, runs))
+        ->default_str(option_value_text(values_.get(name)))
         ->check(check);
   }
 }

@@ -27,8 +27,10 @@ class OptionFlags {
   OptionFlags& operator=(const OptionFlags&) = delete;
 
   /// Adds the flags of the options named, in the order named: "--samples INT" with the
-  /// option's help, unit, range and default.
-  void add(CLI::App* command, const std::vector<std::string>& names);
+  /// option's help, unit, range and default. `runs`: the command's (kEvaluation for evaluate and
+  /// simulate: their defaults, and no words that only optimisations take).
+  void add(CLI::App* command, const std::vector<std::string>& names,
+           OptionUse runs = OptionUse::kOptimization);
 
   const OptionValues& values() const { return values_; }
   /// The options given on the command line, by name.

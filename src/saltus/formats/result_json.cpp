@@ -119,6 +119,19 @@ nlohmann::json metrics_json(const ForceMetrics& metrics, const std::optional<dou
   return j;
 }
 
+nlohmann::json resolution_json(const ResultJson::Optimization::Resolution& resolution) {
+  nlohmann::json levels = nlohmann::json::array();
+  for (const OptimizationResult::Level& level : resolution.levels)
+    levels.push_back({{"subdivisions", level.subdivisions},
+                      {"avg_root_force", level.avg_root_force},
+                      {"iterations", level.iterations},
+                      {"status", level.status}});
+  return {{"automatic", resolution.automatic},
+          {"subdivisions", resolution.subdivisions},
+          {"knots", resolution.knots},
+          {"levels", levels}};
+}
+
 bool read_bool(const JsonNode& node) {
   if (!node.value().is_boolean()) node.fail("expected true or false");
   return node.value().get<bool>();
@@ -151,6 +164,39 @@ OptionValue read_option(const OptionSpec& spec, const JsonNode& node) {
   } catch (const OptionValueError& e) {
     node.fail(e.problem());
   }
+}
+
+/// An array of whole numbers, each at least `min` ("subdivisions": spans per interval).
+std::vector<int> read_int_array(const JsonNode& node, int min) {
+  node.require_array();
+  std::vector<int> out;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const JsonNode item = node.at(i);
+    out.push_back(item.as_int());
+    if (out.back() < min) item.fail("expected a whole number of at least " + std::to_string(min));
+  }
+  return out;
+}
+
+ResultJson::Optimization::Resolution read_resolution(const JsonNode& node) {
+  node.require_object();
+  ResultJson::Optimization::Resolution r;
+  r.automatic = read_bool(node.at("automatic"));
+  r.subdivisions = read_int_array(node.at("subdivisions"), 1);
+  r.knots = node.at("knots").as_double_array();
+  const JsonNode levels = node.at("levels");
+  levels.require_array();
+  for (std::size_t i = 0; i < levels.size(); ++i) {
+    const JsonNode level = levels.at(i);
+    level.require_object();
+    OptimizationResult::Level l;
+    l.subdivisions = read_int_array(level.at("subdivisions"), 1);
+    l.avg_root_force = level.at("avg_root_force").as_double();
+    l.iterations = level.at("iterations").as_int();
+    l.status = level.at("status").as_string();
+    r.levels.push_back(std::move(l));
+  }
+  return r;
 }
 
 bool records(const OptionSpec& spec, ResultJson::Kind kind) {
@@ -215,6 +261,7 @@ nlohmann::json result_to_json(const ResultJson& r) {
   if (o && o->tolerances)
     j["tolerances"] = {{"translation_m", o->tolerances->translation_m},
                        {"quaternion", o->tolerances->quaternion}};
+  if (o && o->resolution) j["resolution"] = resolution_json(*o->resolution);
   if (o && o->largest_joint_turn_deg)
     j["largest_joint_turn_deg"] = {{"before", o->largest_joint_turn_deg->first},
                                    {"after", o->largest_joint_turn_deg->second}};
@@ -305,6 +352,8 @@ ResultJson parse_result_json(const nlohmann::json& document, const std::string& 
       t.quaternion = tolerances->at("quaternion").as_double();
       o.tolerances = t;
     }
+    if (const auto resolution = root.find("resolution"))
+      o.resolution = read_resolution(*resolution);
     if (const auto turn = root.find("largest_joint_turn_deg"))
       o.largest_joint_turn_deg =
           std::make_pair(turn->at("before").as_double(), turn->at("after").as_double());
@@ -370,6 +419,14 @@ ResultJson optimization_result(const MotionFile& file, const OptimizationResult&
   o.ipopt_status = result.solve.ipopt_status;
   o.restarts = result.solve.restarts;
   o.tolerances = file.motion.tolerances;
+  ResultJson::Optimization::Resolution resolution;
+  resolution.automatic =
+      options.automatic_resolution && options.nlp.formulation == Formulation::kRelaxed;
+  resolution.subdivisions = result.subdivisions;
+  if (!result.after.trajectory.rotations.empty())
+    resolution.knots = result.after.trajectory.rotations.front().knots();
+  resolution.levels = result.levels;
+  o.resolution = std::move(resolution);
   o.largest_joint_turn_deg =
       std::make_pair(largest_control_turn(result.before.trajectory, 1) * kDegreesPerRadian,
                      largest_control_turn(result.after.trajectory, 1) * kDegreesPerRadian);

@@ -80,6 +80,15 @@ struct ResultJson {
     std::optional<Tolerances> tolerances;
     /// Largest joint turn between two control points (°), before and after.
     std::optional<std::pair<double, double>> largest_joint_turn_deg;
+    /// The knots the optimised motion lives on and how the automatic resolution chose them
+    /// (OptimizationResult::subdivisions, levels); missing from files before it.
+    struct Resolution {
+      bool automatic = false;         ///< chosen automatically (relaxed model, `auto` knots)
+      std::vector<int> subdivisions;  ///< knot spans per keyframe interval
+      std::vector<double> knots;      ///< of the optimised motion's splines (s)
+      std::vector<OptimizationResult::Level> levels;  ///< each level tried, in order
+    };
+    std::optional<Resolution> resolution;
   };
   std::optional<Optimization> optimization;
 

@@ -88,13 +88,27 @@ std::vector<OptionSpec> make_table() {
   t.push_back(o);
 
   o = entry("knots_per_interval", "--knots-per-interval", "Knots per interval", "",
-            "spline knot sub-intervals per keyframe interval (1 = knots at the keyframes, the "
-            "paper's resolution)");
+            "knot spans per keyframe interval: a number (1 = knots at the keyframes, the paper's "
+            "resolution) or, for optimize, auto (chosen from how far the body turns, then "
+            "refined where the residual lives; relaxed model)");
   range(o, OptionKind::kInteger, 1, 50);
   o.use = OptionUse::kEvaluation;
-  // "knots_per_interval" records the K used, which may be finer (optimize_motion).
+  o.word = "auto";
+  o.word_use = OptionUse::kOptimization;
+  // "knots_per_interval" records the K used, which may be finer (optimize_motion), and
+  // "resolution" whether it was automatic; this key keeps the number as it always did.
   record(o, "knots_per_interval_requested", ResultRecord::kOptimization);
-  bind(o, nlp, &MotionNlpOptions::knots_per_interval);
+  o.read = [](const OptimizeOptions& x) -> OptionValue {
+    if (x.automatic_resolution) return std::string("auto");
+    return x.nlp.knots_per_interval;
+  };
+  o.write = [](OptimizeOptions& x, const OptionValue& v) {
+    x.automatic_resolution = std::holds_alternative<std::string>(v);
+    x.nlp.knots_per_interval = x.automatic_resolution ? 1 : std::get<int>(v);
+  };
+  o.recorded_value = [](const OptimizeOptions& x) -> OptionValue {
+    return x.nlp.knots_per_interval;
+  };
   t.push_back(o);
 
   o = entry("samples", "--samples", "Samples", "",
@@ -212,37 +226,43 @@ const OptionSpec& option_spec(std::string_view name) {
   return option_table()[index_of(name)];
 }
 
-OptionValue parse_option_value(const OptionSpec& spec, const std::string& text) {
+OptionValue OptionSpec::default_value(OptionUse runs) const {
+  return read(runs == OptionUse::kEvaluation ? with_evaluation_options(EvaluateOptions{})
+                                             : OptimizeOptions{});
+}
+
+OptionValue parse_option_value(const OptionSpec& spec, const std::string& text, OptionUse runs) {
   switch (spec.kind) {
     case OptionKind::kSwitch:
       if (text == "true" || text == "on" || text == "1") return true;
       if (text == "false" || text == "off" || text == "0") return false;
       reject(spec, quoted(text) + " is not true or false");
     case OptionKind::kChoice:
-      return checked_option_value(spec, text);
+      return checked_option_value(spec, text, runs);
     case OptionKind::kInteger:
     case OptionKind::kReal:
       break;
   }
-  if (!spec.word.empty() && text == spec.word) return text;
+  if (!spec.word.empty() && text == spec.word) return checked_option_value(spec, text, runs);
   const char* first = text.data();
   const char* last = first + text.size();
   if (spec.kind == OptionKind::kInteger) {
     int value = 0;
     const auto [end, error] = std::from_chars(first, last, value);
     if (error != std::errc() || end != last || text.empty())
-      reject(spec,
-             quoted(text) + " is not a whole number (allowed: " + option_range_text(spec) + ")");
-    return checked_option_value(spec, value);
+      reject(spec, quoted(text) +
+                       " is not a whole number (allowed: " + option_range_text(spec, runs) + ")");
+    return checked_option_value(spec, value, runs);
   }
   double value = 0.0;  // from_chars: the same text gives the same number in every locale
   const auto [end, error] = std::from_chars(first, last, value);
   if (error != std::errc() || end != last || text.empty() || !std::isfinite(value))
-    reject(spec, quoted(text) + " is not a number (allowed: " + option_range_text(spec) + ")");
-  return checked_option_value(spec, value);
+    reject(spec,
+           quoted(text) + " is not a number (allowed: " + option_range_text(spec, runs) + ")");
+  return checked_option_value(spec, value, runs);
 }
 
-OptionValue checked_option_value(const OptionSpec& spec, const OptionValue& value) {
+OptionValue checked_option_value(const OptionSpec& spec, const OptionValue& value, OptionUse runs) {
   const auto* word = std::get_if<std::string>(&value);
   switch (spec.kind) {
     case OptionKind::kSwitch:
@@ -253,14 +273,18 @@ OptionValue checked_option_value(const OptionSpec& spec, const OptionValue& valu
         for (const std::string& choice : spec.choices)
           if (*word == choice) return value;
       reject(spec, (word ? quoted(*word) : std::string("the value")) + " is not one of " +
-                       option_range_text(spec));
+                       option_range_text(spec, runs));
     case OptionKind::kInteger:
     case OptionKind::kReal:
       break;
   }
   if (word) {
-    if (!spec.word.empty() && *word == spec.word) return value;
-    reject(spec, quoted(*word) + " is not allowed (allowed: " + option_range_text(spec) + ")");
+    if (spec.takes_word(runs) && *word == spec.word) return value;
+    if (!spec.word.empty() && *word == spec.word)
+      reject(spec, quoted(*word) + " is for optimisations only (allowed here: " +
+                       option_range_text(spec, runs) + ")");
+    reject(spec,
+           quoted(*word) + " is not allowed (allowed: " + option_range_text(spec, runs) + ")");
   }
   double number = 0.0;
   if (const auto* i = std::get_if<int>(&value))
@@ -268,12 +292,12 @@ OptionValue checked_option_value(const OptionSpec& spec, const OptionValue& valu
   else if (const auto* d = std::get_if<double>(&value))
     number = *d;
   else
-    reject(spec, "expected a number (allowed: " + option_range_text(spec) + ")");
+    reject(spec, "expected a number (allowed: " + option_range_text(spec, runs) + ")");
   if (spec.kind == OptionKind::kInteger && !std::holds_alternative<int>(value))
     reject(spec, option_value_text(value) + " is not a whole number");
   if (!std::isfinite(number) || !in_range(spec, number))
     reject(spec, option_value_text(value) +
-                     " is out of range (allowed: " + option_range_text(spec) + ")");
+                     " is out of range (allowed: " + option_range_text(spec, runs) + ")");
   if (spec.kind == OptionKind::kReal) return number;
   return value;
 }
@@ -287,7 +311,7 @@ std::string option_value_text(const OptionValue& value) {
   return std::string(buffer, end);
 }
 
-std::string option_range_text(const OptionSpec& spec) {
+std::string option_range_text(const OptionSpec& spec, OptionUse runs) {
   if (spec.kind == OptionKind::kSwitch) return "true|false";
   if (spec.kind == OptionKind::kChoice) {
     std::string out;
@@ -306,13 +330,16 @@ std::string option_range_text(const OptionSpec& spec) {
           option_value_text(spec.kind == OptionKind::kInteger
                                 ? OptionValue(static_cast<int>(spec.max))
                                 : OptionValue(spec.max));
-  if (!spec.word.empty()) out += " or " + spec.word;
+  if (spec.takes_word(runs)) out += " or " + spec.word;
   return out;
 }
 
-OptionValues::OptionValues() : OptionValues(OptimizeOptions{}) {}
+OptionValues::OptionValues(OptionUse runs)
+    : OptionValues(runs == OptionUse::kEvaluation ? with_evaluation_options(EvaluateOptions{})
+                                                  : OptimizeOptions{},
+                   runs) {}
 
-OptionValues::OptionValues(const OptimizeOptions& options) {
+OptionValues::OptionValues(const OptimizeOptions& options, OptionUse runs) : runs_(runs) {
   for (const OptionSpec& spec : option_table())
     values_.push_back(spec.read(options));
 }
@@ -335,12 +362,12 @@ bool OptionValues::on(std::string_view name) const {
 
 void OptionValues::set(std::string_view name, const OptionValue& value) {
   const std::size_t i = index_of(name);
-  values_[i] = checked_option_value(option_table()[i], value);
+  values_[i] = checked_option_value(option_table()[i], value, runs_);
 }
 
 void OptionValues::set_text(std::string_view name, const std::string& text) {
   const std::size_t i = index_of(name);
-  values_[i] = parse_option_value(option_table()[i], text);
+  values_[i] = parse_option_value(option_table()[i], text, runs_);
 }
 
 OptimizeOptions OptionValues::optimize_options() const {
@@ -369,6 +396,7 @@ EvaluateOptions evaluation_options(const OptimizeOptions& options) {
 
 OptimizeOptions with_evaluation_options(const EvaluateOptions& options) {
   OptimizeOptions o;
+  o.automatic_resolution = false;
   o.nlp.samples = options.samples;
   o.nlp.knots_per_interval = options.interpolation.knots_per_interval;
   return o;

@@ -54,7 +54,10 @@ struct OptionSpec {
   std::vector<std::string> choices;        ///< kChoice: the words
   std::vector<std::string> choice_labels;  ///< kChoice: what a form shows for each word
   std::string word;                        ///< numbers: a word taken instead of a number, or ""
-  std::string result_key;                  ///< result.json key, "" when not recorded
+  /// The runs that take the word: kEvaluation, every run the option is for; kOptimization,
+  /// optimisations only ("auto" knots: the automatic resolution is the optimiser's).
+  OptionUse word_use = OptionUse::kEvaluation;
+  std::string result_key;  ///< result.json key, "" when not recorded
   ResultRecord recorded = ResultRecord::kNone;
   /// The option's value in `options`, and writing a (checked) value into them.
   std::function<OptionValue(const OptimizeOptions&)> read;
@@ -65,7 +68,14 @@ struct OptionSpec {
   /// What result.json records when that differs from `read`; null = `read`.
   std::function<OptionValue(const OptimizeOptions&)> recorded_value;
 
-  OptionValue default_value() const { return read(OptimizeOptions{}); }
+  /// The default of an optimisation, or (kEvaluation) of `saltus evaluate` and `simulate`:
+  /// read from with_evaluation_options(EvaluateOptions{}).
+  OptionValue default_value(OptionUse runs = OptionUse::kOptimization) const;
+  /// Whether runs of `runs` take `word`.
+  bool takes_word(OptionUse runs) const {
+    return !word.empty() &&
+           (word_use == OptionUse::kEvaluation || runs == OptionUse::kOptimization);
+  }
 };
 
 /// Every option, in the order forms and help list them.
@@ -85,23 +95,27 @@ class OptionValueError : public std::invalid_argument {
 };
 
 /// Reads text given for `spec` (a flag's value, a form field, a stored setting): a number, the
-/// option's word, a choice, or for switches true/false. Throws OptionValueError for anything
-/// else or a value out of range.
-OptionValue parse_option_value(const OptionSpec& spec, const std::string& text);
-/// Throws OptionValueError when `value` is of the wrong type or range. Returns the value as stored
-/// (an integer given for a real option becomes a double).
-OptionValue checked_option_value(const OptionSpec& spec, const OptionValue& value);
+/// option's word (if runs of `runs` take it), a choice, or for switches true/false. Throws
+/// OptionValueError for anything else or a value out of range.
+OptionValue parse_option_value(const OptionSpec& spec, const std::string& text,
+                               OptionUse runs = OptionUse::kOptimization);
+/// Throws OptionValueError when `value` is of the wrong type or range for runs of `runs`.
+/// Returns the value as stored (an integer given for a real option becomes a double).
+OptionValue checked_option_value(const OptionSpec& spec, const OptionValue& value,
+                                 OptionUse runs = OptionUse::kOptimization);
 /// Text that parse_option_value reads back to the same value (reals in the shortest such form).
 std::string option_value_text(const OptionValue& value);
 /// The allowed values, e.g. "2-100000", "> 0", ">= 0", "relaxed|strict", "1-64 or auto".
-std::string option_range_text(const OptionSpec& spec);
+std::string option_range_text(const OptionSpec& spec, OptionUse runs = OptionUse::kOptimization);
 
-/// A value for every option of the table, each at its default until set.
+/// A value for every option of the table, each at its default until set. The values of an
+/// optimisation, or (OptionUse::kEvaluation) of `saltus evaluate` and `simulate`: their
+/// defaults, and words only optimisations take refused.
 class OptionValues {
  public:
-  OptionValues();
+  explicit OptionValues(OptionUse runs = OptionUse::kOptimization);
   /// The values in `options`.
-  explicit OptionValues(const OptimizeOptions& options);
+  explicit OptionValues(const OptimizeOptions& options, OptionUse runs = OptionUse::kOptimization);
 
   const OptionValue& get(std::string_view name) const;
   int integer(std::string_view name) const;  ///< std::bad_variant_access if not a number
@@ -118,14 +132,20 @@ class OptionValues {
   /// OptionSpec::applies at these values.
   bool applies(std::string_view name) const;
 
-  bool operator==(const OptionValues& other) const { return values_ == other.values_; }
+  OptionUse runs() const { return runs_; }
+
+  bool operator==(const OptionValues& other) const {
+    return runs_ == other.runs_ && values_ == other.values_;
+  }
   bool operator!=(const OptionValues& other) const { return !(*this == other); }
 
  private:
+  OptionUse runs_;
   std::vector<OptionValue> values_;  ///< in table order
 };
 
-/// The evaluation part of optimiser options (samples, knots per interval), and back.
+/// The evaluation part of optimiser options (samples, knots per interval; automatic
+/// resolution evaluates at one knot span per interval), and back (no automatic resolution).
 EvaluateOptions evaluation_options(const OptimizeOptions& options);
 OptimizeOptions with_evaluation_options(const EvaluateOptions& options);
 

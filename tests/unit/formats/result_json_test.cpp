@@ -51,11 +51,22 @@ auto fields(const ResultJson::Simulation& s) {
 auto fields(const ResultJson::ResidualCheck& c) {
   return std::tie(c.rule, c.points, c.optimizer_agrees);
 }
+auto fields(const OptimizationResult::Level& l) {
+  return std::tie(l.subdivisions, l.avg_root_force, l.iterations, l.status);
+}
+auto fields(const ResultJson::Optimization::Resolution& r) {
+  std::vector<decltype(fields(r.levels.front()))> levels;
+  for (const OptimizationResult::Level& l : r.levels)
+    levels.push_back(fields(l));
+  return std::make_tuple(r.automatic, r.subdivisions, r.knots, levels);
+}
 auto fields(const ResultJson::Optimization& o) {
   return std::make_tuple(o.iterations, o.solve_seconds, o.variables, o.constraints, fields(o.after),
+                         o.optimizer_objective_before, o.optimizer_objective_after,
                          o.keyframe_times_after, o.ipopt_status, o.restarts,
                          o.tolerances ? std::optional(fields(*o.tolerances)) : std::nullopt,
-                         o.largest_joint_turn_deg);
+                         o.largest_joint_turn_deg,
+                         o.resolution ? std::optional(fields(*o.resolution)) : std::nullopt);
 }
 template <typename T>
 auto optional_fields(const std::optional<T>& x) {
@@ -110,7 +121,10 @@ ResultJson random_result(ResultJson::Kind kind, std::mt19937& rng) {
   // The options through the table, at seeded values.
   OptionValues values;
   values.set("samples", static_cast<int>(2 + rng() % 5000));
-  values.set("knots_per_interval", static_cast<int>(1 + rng() % 50));
+  if (rng() % 4 == 0)
+    values.set("knots_per_interval", std::string("auto"));
+  else
+    values.set("knots_per_interval", static_cast<int>(1 + rng() % 50));
   values.set("formulation", std::string(rng() % 2 ? "strict" : "relaxed"));
   values.set("epsilon", positive(rng));
   values.set("optimize_timing", rng() % 2 == 0);
@@ -152,6 +166,15 @@ ResultJson random_result(ResultJson::Kind kind, std::mt19937& rng) {
     o.restarts = static_cast<int>(rng() % 3);
     o.tolerances = Tolerances{positive(rng), positive(rng)};
     o.largest_joint_turn_deg = std::make_pair(positive(rng), positive(rng));
+    ResultJson::Optimization::Resolution resolution;
+    resolution.automatic = rng() % 2;
+    for (int i = 1; i < r.keyframes; ++i)
+      resolution.subdivisions.push_back(1 + static_cast<int>(rng() % 8));
+    resolution.knots = times(count(rng) + 7);
+    for (int level = 0; resolution.automatic && level < 1 + static_cast<int>(rng() % 3); ++level)
+      resolution.levels.push_back({resolution.subdivisions, positive(rng), count(rng),
+                                   rng() % 2 ? "solved" : "acceptable"});
+    o.resolution = resolution;
     r.optimization = o;
   }
   return r;
@@ -204,10 +227,15 @@ TEST(ResultJson, KeysAreThoseOfDesignSection6) {
   EXPECT_TRUE(e["iterations"].is_null());
   EXPECT_TRUE(e["samples"].is_number_integer());
   const nlohmann::json o = result_to_json(random_result(ResultJson::Kind::kOptimization, rng));
-  for (const char* key :
-       {"knots_per_interval_requested", "ipopt_status", "restarts", "formulation",
-        "timing_optimized", "tolerances", "joint_turn_limit_deg", "largest_joint_turn_deg"})
+  for (const char* key : {"knots_per_interval_requested", "ipopt_status", "restarts", "formulation",
+                          "timing_optimized", "tolerances", "joint_turn_limit_deg",
+                          "largest_joint_turn_deg", "resolution"})
     EXPECT_TRUE(o.contains(key)) << key;
+  for (const char* key : {"automatic", "subdivisions", "knots", "levels"})
+    EXPECT_TRUE(o["resolution"].contains(key)) << key;
+  EXPECT_TRUE(o["resolution"]["automatic"].is_boolean());
+  EXPECT_TRUE(o["resolution"]["levels"].is_array());
+  EXPECT_FALSE(e.contains("resolution"));
   EXPECT_FALSE(o.contains("takeoff_angular_momentum"));
   EXPECT_TRUE(o["residual_check"].contains("optimizer_agrees"));
   for (const char* stage : {"before", "after"})
@@ -228,7 +256,7 @@ TEST(ResultJson, OlderOptimisationResultsWithoutTheLaterKeysStillRead) {
   nlohmann::json j = result_to_json(random_result(ResultJson::Kind::kOptimization, rng));
   for (const char* key : {"restarts", "tolerances", "largest_joint_turn_deg", "ipopt_status",
                           "knots_per_interval_requested", "joint_turn_limit_deg", "formulation",
-                          "timing_optimized", "epsilon", "residual_check"})
+                          "timing_optimized", "epsilon", "residual_check", "resolution"})
     j.erase(key);
   for (const char* stage : {"before", "after"})
     for (const char* key : {"optimizer_objective", "optimizer_avg_root_force"})
@@ -239,6 +267,7 @@ TEST(ResultJson, OlderOptimisationResultsWithoutTheLaterKeysStillRead) {
   EXPECT_FALSE(r.optimization->restarts);
   EXPECT_FALSE(r.optimization->tolerances);
   EXPECT_FALSE(r.optimization->optimizer_objective_after);
+  EXPECT_FALSE(r.optimization->resolution);
   EXPECT_FALSE(r.residual_check);
   EXPECT_FALSE(r.option("formulation"));
   ASSERT_TRUE(r.option("samples"));
@@ -278,6 +307,18 @@ TEST(ResultJson, BadDocumentsNameTheField) {
   j = good;
   j["keyframe_times_before"] = "0, 1";
   expect_error(j, "/keyframe_times_before");
+  j = good;
+  j["resolution"]["subdivisions"] = {1, 0, 2};
+  expect_error(j, "/resolution/subdivisions/1");
+  j = good;
+  j["resolution"]["automatic"] = "auto";
+  expect_error(j, "/resolution/automatic");
+  j = good;
+  j["resolution"]["levels"] = {{{"subdivisions", {1}}, {"avg_root_force", 1.0}}};
+  expect_error(j, "/resolution/levels/0");
+  j = good;
+  j["resolution"].erase("knots");
+  expect_error(j, "/resolution");
   expect_error(nlohmann::json::array(), "bad.json");
 }
 
@@ -344,9 +385,51 @@ TEST(ResultFolder, OptimisationFolderReadsBack) {
   expect_trajectory(f.before, result.before.samples, file.model);
   expect_trajectory(*f.after, result.after.samples, file.model);
 
+  // The strict model has no automatic resolution: its knots are the uniform ones.
+  ASSERT_TRUE(f.result.optimization->resolution);
+  EXPECT_FALSE(f.result.optimization->resolution->automatic);
+  EXPECT_EQ(f.result.optimization->resolution->knots,
+            result.after.trajectory.rotations.front().knots());
+
   fs::remove(dir.path / "trajectory_after.csv");
   EXPECT_THROW(read_result_folder(dir.path.string()), InputError);
   EXPECT_THROW(read_result_folder((dir.path / "nothing").string()), InputError);
+}
+
+TEST(ResultFolder, ResolutionReadsBackAutomaticOrUniform) {
+  const MotionFile file = load_motion_file(m1_path());
+  const int intervals = static_cast<int>(file.motion.keyframes.size()) - 1;
+  for (const std::string knots : {"auto", "2"}) {
+    SCOPED_TRACE(knots);
+    OptionValues values;
+    values.set("samples", 21);
+    values.set("max_iterations", 2);
+    values.set_text("knots_per_interval", knots);
+    const OptimizeOptions options = values.optimize_options();
+    const OptimizationResult result = optimize_motion(file.motion, file.model, options);
+    TempDir dir("saltus_result_json_test_resolution_" + knots);
+    write_optimization_outputs(dir.path.string(), file, result, options);
+    const ResultFolder f = read_result_folder(dir.path.string());
+    expect_same(f.result, optimization_result(file, result, options));
+    ASSERT_TRUE(f.result.optimization->resolution);
+    const auto& r = *f.result.optimization->resolution;
+    EXPECT_EQ(r.automatic, knots == "auto");
+    ASSERT_EQ(r.subdivisions.size(), static_cast<std::size_t>(intervals));
+    // The knots are those of the optimised motion, one clamped cubic over the spans.
+    EXPECT_EQ(r.knots, result.after.trajectory.rotations.front().knots());
+    int spans = 0;
+    for (int s : r.subdivisions)
+      spans += s;
+    EXPECT_EQ(r.knots.size(), static_cast<std::size_t>(spans + 7));
+    if (knots == "auto") {
+      ASSERT_FALSE(r.levels.empty());
+      EXPECT_EQ(r.levels.back().subdivisions.size(), r.subdivisions.size());
+    } else {
+      EXPECT_EQ(r.subdivisions, std::vector<int>(intervals, 2));
+    }
+    EXPECT_EQ(f.result.option("knots_per_interval_requested"),
+              OptionValue(knots == "auto" ? 1 : 2));
+  }
 }
 
 }  // namespace

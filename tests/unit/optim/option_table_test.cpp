@@ -80,7 +80,14 @@ TEST(OptionTable, EveryEntryIsComplete) {
 TEST(OptionTable, DefaultsAreTheLibrarysOwn) {
   const OptionValues defaults;
   EXPECT_EQ(defaults.integer("samples"), kDefaultSamples);
-  EXPECT_EQ(defaults.integer("knots_per_interval"), InterpolationOptions{}.knots_per_interval);
+  // Optimisations choose their knots (automatic resolution); evaluations take the
+  // interpolation's own default.
+  ASSERT_TRUE(OptimizeOptions{}.automatic_resolution);
+  EXPECT_EQ(defaults.get("knots_per_interval"), OptionValue(std::string("auto")));
+  EXPECT_EQ(OptionValues(OptionUse::kEvaluation).integer("knots_per_interval"),
+            InterpolationOptions{}.knots_per_interval);
+  EXPECT_EQ(option_spec("knots_per_interval").default_value(OptionUse::kEvaluation),
+            OptionValue(InterpolationOptions{}.knots_per_interval));
   EXPECT_EQ(defaults.integer("max_iterations"), SolverOptions{}.max_iterations);
   EXPECT_EQ(defaults.real("tolerance"), SolverOptions{}.tolerance);
   EXPECT_EQ(defaults.real("objective_change_tolerance"),
@@ -102,6 +109,8 @@ TEST(OptionTable, DefaultsAreTheLibrarysOwn) {
   EXPECT_EQ(applied.solver.tolerance, plain.solver.tolerance);
   EXPECT_EQ(applied.nlp.formulation, plain.nlp.formulation);
   EXPECT_EQ(applied.nlp.threads, plain.nlp.threads);
+  EXPECT_EQ(applied.automatic_resolution, plain.automatic_resolution);
+  EXPECT_EQ(applied.nlp.knots_per_interval, plain.nlp.knots_per_interval);
   const EvaluateOptions evaluate = defaults.evaluate_options();
   EXPECT_EQ(evaluate.samples, EvaluateOptions{}.samples);
   EXPECT_EQ(evaluate.interpolation.knots_per_interval,
@@ -153,6 +162,7 @@ TEST(OptionTable, OptionsLandInTheirFields) {
   EXPECT_EQ(o.nlp.epsilon, 40.0);
   EXPECT_FALSE(o.nlp.optimize_timing);
   EXPECT_EQ(o.nlp.knots_per_interval, 3);
+  EXPECT_FALSE(o.automatic_resolution);  // a number: the uniform knots of the paper's style
   EXPECT_EQ(o.nlp.samples, 51);
   EXPECT_EQ(o.solver.max_iterations, 0);
   EXPECT_EQ(o.solver.tolerance, 1e-6);
@@ -170,6 +180,57 @@ TEST(OptionTable, OptionsLandInTheirFields) {
   EXPECT_FALSE(v.applies("max_time_shift"));        // times fixed
 }
 
+TEST(OptionTable, KnotsPerIntervalIsAutoOrANumberAndAutoIsTheOptimisersOnly) {
+  const OptionSpec& knots = option_spec("knots_per_interval");
+  // auto: the automatic resolution, starting from one span per interval.
+  OptionValues v;
+  v.set("knots_per_interval", 4);
+  v.set_text("knots_per_interval", "auto");
+  OptimizeOptions o = v.optimize_options();
+  EXPECT_TRUE(o.automatic_resolution);
+  EXPECT_EQ(o.nlp.knots_per_interval, 1);
+  EXPECT_EQ(v.evaluate_options().interpolation.knots_per_interval, 1);
+  // Every number 1-50: uniform knots, no automatic resolution, the same K for evaluations.
+  for (int k = 1; k <= 50; ++k) {
+    v.set_text("knots_per_interval", std::to_string(k));
+    o = v.optimize_options();
+    EXPECT_FALSE(o.automatic_resolution) << k;
+    EXPECT_EQ(o.nlp.knots_per_interval, k);
+    EXPECT_EQ(v.evaluate_options().interpolation.knots_per_interval, k);
+    EXPECT_EQ(OptionValues(o).get("knots_per_interval"), OptionValue(k));
+  }
+  // Options from elsewhere read back as they are.
+  OptimizeOptions automatic;
+  automatic.nlp.knots_per_interval = 1;
+  EXPECT_EQ(OptionValues(automatic).get("knots_per_interval"), OptionValue(std::string("auto")));
+  automatic.automatic_resolution = false;
+  EXPECT_EQ(OptionValues(automatic).get("knots_per_interval"), OptionValue(1));
+  // Evaluations have no automatic resolution: the word is refused there, naming the flag.
+  EXPECT_EQ(option_range_text(knots), "1-50 or auto");
+  EXPECT_EQ(option_range_text(knots, OptionUse::kEvaluation), "1-50");
+  EXPECT_EQ(option_range_text(option_spec("threads"), OptionUse::kEvaluation), "1-64 or auto");
+  try {
+    parse_option_value(knots, "auto", OptionUse::kEvaluation);
+    ADD_FAILURE() << "an evaluation took auto knots";
+  } catch (const OptionValueError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "--knots-per-interval: \"auto\" is for optimisations only (allowed here: 1-50)");
+  }
+  OptionValues evaluation(OptionUse::kEvaluation);
+  EXPECT_THROW(evaluation.set_text("knots_per_interval", "auto"), OptionValueError);
+  EXPECT_EQ(evaluation, OptionValues(OptionUse::kEvaluation));
+  evaluation.set_text("knots_per_interval", "7");
+  EXPECT_EQ(evaluation.evaluate_options().interpolation.knots_per_interval, 7);
+  EXPECT_FALSE(with_evaluation_options(EvaluateOptions{}).automatic_resolution);
+  // result.json's requested K stays the number the optimiser starts from (main's writer).
+  v.set_text("knots_per_interval", "auto");
+  for (const auto& [key, value] : recorded_options(v.optimize_options(), true)) {
+    if (key == "knots_per_interval_requested") {
+      EXPECT_EQ(value, OptionValue(1));
+    }
+  }
+}
+
 TEST(OptionTable, ValuesOutsideTheOptionAreRejectedNamingTheFlag) {
   const std::vector<std::pair<std::string, std::string>> bad{
       {"samples", "1"},
@@ -180,7 +241,8 @@ TEST(OptionTable, ValuesOutsideTheOptionAreRejectedNamingTheFlag) {
       {"samples", "auto"},
       {"knots_per_interval", "0"},
       {"knots_per_interval", "51"},
-      {"knots_per_interval", "auto"},
+      {"knots_per_interval", "Auto"},
+      {"knots_per_interval", "2.0"},
       {"max_iterations", "-1"},
       {"max_iterations", "1e3"},
       {"epsilon", "0"},
@@ -229,7 +291,8 @@ TEST(OptionTable, ValuesOutsideTheOptionAreRejectedNamingTheFlag) {
 }
 
 /// result.json's option keys as the writer recorded them before the table existed
-/// (formats/result_json.cpp at aa271c3).
+/// (formats/result_json.cpp at aa271c3; at fecac7f the requested K is still the number the
+/// optimiser starts from, 1 with automatic resolution).
 std::map<std::string, OptionValue> recorded_before_the_table(const OptimizeOptions& o) {
   std::map<std::string, OptionValue> r;
   r["samples"] = o.nlp.samples;
