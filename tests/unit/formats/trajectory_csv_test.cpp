@@ -105,18 +105,5 @@ TEST(TrajectoryCsv, MisplacedColumnsAreNamed) {
   EXPECT_THROW(read_trajectory_csv("/nonexistent/t.csv"), InputError);
 }
 
-TEST(CsvTable, NumbersAndErrors) {
-  std::stringstream good("a,b\n1,-2.5e-3\n\n3,4\n");
-  const CsvTable t = parse_csv_table(good, "x.csv");
-  EXPECT_EQ(t.columns, (std::vector<std::string>{"a", "b"}));
-  EXPECT_EQ(t.rows, (std::vector<std::vector<double>>{{1, -2.5e-3}, {3, 4}}));
-  EXPECT_EQ(t.column_values("b", "x.csv"), (std::vector<double>{-2.5e-3, 4}));
-  EXPECT_THROW(t.column_values("c", "x.csv"), InputError);
-  for (const char* bad : {"a\n1,2\n", "a\nnan\n", "a\n1.5x\n", "a\n\"1\"\n", "a\n,\n", ""}) {
-    std::stringstream in(bad);
-    EXPECT_THROW(parse_csv_table(in, "x.csv"), InputError) << bad;
-  }
-}
-
 }  // namespace
 }  // namespace saltus
