@@ -78,7 +78,20 @@ const LegacySetting kLegacySettings[] = {
      [](const std::string& t) -> std::optional<std::string> { return t; }},
     {"optimize/max_joint_turn_deg", "max_joint_turn",
      [](const std::string& t) -> std::optional<std::string> { return t; }},
+    // A build of the app stored the automatic resolution as knots 0.
+    {"optimize/knots", "knots_per_interval",
+     [](const std::string& t) -> std::optional<std::string> {
+       return t == "0" ? std::string("auto") : t;
+     }},
 };
+
+/// The key an option is stored under: "optimize/<name>", except where an earlier version's
+/// value under that name must not be read. "optimize/knots_per_interval" held the paper's 1 as
+/// a default nobody chose before the automatic resolution (auto) became the default.
+std::string settings_key(const OptionSpec& spec) {
+  if (spec.name == "knots_per_interval") return std::string(kSettingsPrefix) + "knots";
+  return kSettingsPrefix + spec.name;
+}
 
 }  // namespace
 
@@ -86,7 +99,7 @@ std::vector<std::pair<std::string, std::string>> settings_entries(
     const OptimizeSettings& settings) {
   std::vector<std::pair<std::string, std::string>> out;
   for (const OptionSpec& spec : option_table())
-    out.emplace_back(kSettingsPrefix + spec.name, option_value_text(settings.get(spec.name)));
+    out.emplace_back(settings_key(spec), option_value_text(settings.get(spec.name)));
   return out;
 }
 
@@ -104,7 +117,7 @@ OptimizeSettings settings_from_entries(
     if (const auto text = stored(legacy.key))
       if (const auto converted = legacy.convert(*text)) take(legacy.option, *converted);
   for (const OptionSpec& spec : option_table())
-    if (const auto text = stored(kSettingsPrefix + spec.name)) take(spec.name, *text);
+    if (const auto text = stored(settings_key(spec))) take(spec.name, *text);
   return settings;
 }
 

@@ -29,11 +29,13 @@ std::string first_changed_option(const OptimizeSettings& before, const OptimizeS
 /// A form's tooltip for an option: its help, then unit and range, then the CLI flag.
 std::string option_tooltip(const OptionSpec& spec);
 
-/// The values as stored settings: ("optimize/<name>", text) per option.
+/// The values as stored settings: ("optimize/<name>", text) per option ("optimize/knots" for
+/// knots_per_interval: the older key held a default nobody chose, see settings_key).
 std::vector<std::pair<std::string, std::string>> settings_entries(const OptimizeSettings& settings);
 /// Stored settings back (`stored` gives a key's text, or none). A value that no longer reads
 /// (another version's range, a hand edit) keeps the default. Keys of earlier versions
-/// ("optimize/strict", "optimize/timing", "optimize/max_joint_turn_deg") still read.
+/// ("optimize/strict", "optimize/timing", "optimize/max_joint_turn_deg") still read;
+/// "optimize/knots_per_interval" (always 1 before the automatic resolution) does not.
 OptimizeSettings settings_from_entries(
     const std::function<std::optional<std::string>(const std::string& key)>& stored);
 

@@ -97,6 +97,19 @@ TEST(OptimizeSettings, StoredSettingsReadBackAndOldKeysStillRead) {
   EXPECT_EQ(old.integer("samples"), kDefaultSamples);
   EXPECT_EQ(old.integer("max_iterations"), 40);
   EXPECT_EQ(from({}), OptimizeSettings{});
+  // Knots: the key of the versions before the automatic resolution held their default 1, which
+  // must not turn the new default (auto) off; a chosen number, or auto, is kept.
+  EXPECT_EQ(from({{"optimize/knots_per_interval", "1"}}).get("knots_per_interval"),
+            OptionValue(std::string("auto")));
+  EXPECT_EQ(from({{"optimize/knots", "3"}}).get("knots_per_interval"), OptionValue(3));
+  EXPECT_EQ(from({{"optimize/knots", "0"}}).get("knots_per_interval"),
+            OptionValue(std::string("auto")));
+  OptimizeSettings numbered;
+  numbered.set("knots_per_interval", 2);
+  for (const auto& [key, text] : settings_entries(numbered))
+    stored[key] = text;
+  EXPECT_EQ(stored.count("optimize/knots_per_interval"), 0u);
+  EXPECT_EQ(from(stored).get("knots_per_interval"), OptionValue(2));
 }
 
 TEST(OptimizeSettings, ProgressTextNamesIterationAndObjective) {
