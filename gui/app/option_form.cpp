@@ -102,6 +102,7 @@ OptionForm::OptionForm(QWidget* parent) : QWidget(parent) {
       }
     }
     row.field->setToolTip(tip);
+    row.field->setObjectName(qstr(spec.name));  // for tests and style sheets
     if (spec.kind == OptionKind::kChoice || spec.kind == OptionKind::kInteger) {
       form->addRow(qstr(spec.label), row.field);
     } else if (spec.kind == OptionKind::kReal) {

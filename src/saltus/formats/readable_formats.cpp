@@ -46,7 +46,8 @@ std::vector<ReadableFormat> make_formats() {
        [](const std::string& path) { return json_format_tag(path) == kModelFormatTag; }},
       // Any other JSON file is offered as a motion.
       {ReadableKind::kMotion, "Motions", {"*.motion.json", "*.json"}, false, nullptr},
-      {ReadableKind::kCapture, "Motion captures (BVH)", {"*.bvh"}, false, nullptr},
+      // Both cases for the file dialogs, whose filters are case-sensitive on Linux.
+      {ReadableKind::kCapture, "Motion captures", {"*.bvh", "*.BVH"}, false, nullptr},
       {ReadableKind::kMassStudyFolder,
        "Mass study folders",
        {},

@@ -24,7 +24,7 @@ TEST(ReadableFormats, DialogFiltersComeFromTheEntries) {
   EXPECT_EQ(dialog_filter(ReadableKind::kMotion), "Motions (*.motion.json *.json)");
   EXPECT_EQ(save_dialog_filter(ReadableKind::kMotion), "Motions (*.motion.json)");
   EXPECT_EQ(dialog_filter(ReadableKind::kModel), "Body models (*.json)");
-  EXPECT_EQ(dialog_filter(ReadableKind::kCapture), "Motion captures (BVH) (*.bvh)");
+  EXPECT_EQ(dialog_filter(ReadableKind::kCapture), "Motion captures (*.bvh *.BVH)");
   for (const ReadableFormat& f : readable_formats()) {
     EXPECT_EQ(&readable_format(f.kind), &f);
     EXPECT_EQ(f.folder, f.patterns.empty()) << f.name;
