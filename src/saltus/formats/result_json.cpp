@@ -256,6 +256,10 @@ nlohmann::json result_to_json(const ResultJson& r) {
   j["constraints"] = o ? nlohmann::json(o->constraints) : nullptr;
   j["after"] = o ? metrics_json(o->after, o->optimizer_objective_after) : nullptr;
   j["keyframe_times_after"] = o ? nlohmann::json(o->keyframe_times_after) : nullptr;
+  if (o && o->keyframe_time_spreads) {
+    j["keyframe_time_spread_s"] = *o->keyframe_time_spreads;
+    j["keyframe_times_undetermined"] = o->keyframe_times_undetermined;
+  }
   if (o && o->ipopt_status) j["ipopt_status"] = *o->ipopt_status;
   if (o && o->restarts) j["restarts"] = *o->restarts;
   if (o && o->tolerances)
@@ -344,6 +348,10 @@ ResultJson parse_result_json(const nlohmann::json& document, const std::string& 
     if (const auto objective = root.at("after").find("optimizer_objective"))
       o.optimizer_objective_after = objective->as_double();
     o.keyframe_times_after = root.at("keyframe_times_after").as_double_array();
+    if (const auto spreads = root.find("keyframe_time_spread_s")) {
+      o.keyframe_time_spreads = spreads->as_double_array();
+      o.keyframe_times_undetermined = read_int_array(root.at("keyframe_times_undetermined"), 0);
+    }
     if (const auto status = root.find("ipopt_status")) o.ipopt_status = status->as_string();
     if (const auto restarts = root.find("restarts")) o.restarts = restarts->as_int();
     if (const auto tolerances = root.find("tolerances")) {
@@ -416,6 +424,12 @@ ResultJson optimization_result(const MotionFile& file, const OptimizationResult&
   o.constraints = result.constraints;
   o.after = result.after.metrics;
   o.keyframe_times_after = result.after.keyframe_times;
+  // How far each optimised time could move with the residual within kTimeSpreadForceRise:
+  // times beyond kDeterminedTimeSpread are not recovered, only chosen.
+  o.keyframe_time_spreads = result.keyframe_time_spreads;
+  for (std::size_t i = 0; i < result.keyframe_time_spreads.size(); ++i)
+    if (result.keyframe_time_spreads[i] > kDeterminedTimeSpread)
+      o.keyframe_times_undetermined.push_back(static_cast<int>(i));
   o.ipopt_status = result.solve.ipopt_status;
   o.restarts = result.solve.restarts;
   o.tolerances = file.motion.tolerances;

@@ -75,6 +75,11 @@ struct ResultJson {
     /// and "after" with its average root force.
     std::optional<double> optimizer_objective_before, optimizer_objective_after;
     std::vector<double> keyframe_times_after;
+    /// Per keyframe, how far its optimised time could move (s) before the residual rises by
+    /// kTimeSpreadForceRise, and the keyframes whose spread exceeds kDeterminedTimeSpread
+    /// (OptimizationResult::keyframe_time_spreads); missing from files before them.
+    std::optional<std::vector<double>> keyframe_time_spreads;
+    std::vector<int> keyframe_times_undetermined;
     std::optional<std::string> ipopt_status;
     std::optional<int> restarts;
     std::optional<Tolerances> tolerances;

@@ -1,11 +1,14 @@
-// result.json and result folders: what is written reads back the same (seeded documents of every
-// kind, and real evaluate / simulate / optimize folders), older files without the later keys
-// still read, and bad documents are refused naming the field.
+// result.json (formats/result_json.h): every kind written and read back field for field (seeded),
+// the keys of DESIGN §6, older files without later keys, bad documents naming the field; real
+// result folders read back; and the figures agree with the trajectory.csv written beside them —
+// J, RMS and peak root force recomputed here from the CSV's root wrench columns by the
+// trapezoidal rule — and the simulation's result names its momentum and landing.
 
 #include "saltus/formats/result_json.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -15,7 +18,10 @@
 
 #include "saltus/base/input_error.h"
 #include "saltus/formats/motion_file.h"
+#include "saltus/formats/trajectory_csv.h"
+#include "support/cli_runner.h"
 #include "support/temp_path.h"
+#include "support/test_motions.h"
 
 namespace saltus {
 namespace {
@@ -61,12 +67,12 @@ auto fields(const ResultJson::Optimization::Resolution& r) {
   return std::make_tuple(r.automatic, r.subdivisions, r.knots, levels);
 }
 auto fields(const ResultJson::Optimization& o) {
-  return std::make_tuple(o.iterations, o.solve_seconds, o.variables, o.constraints, fields(o.after),
-                         o.optimizer_objective_before, o.optimizer_objective_after,
-                         o.keyframe_times_after, o.ipopt_status, o.restarts,
-                         o.tolerances ? std::optional(fields(*o.tolerances)) : std::nullopt,
-                         o.largest_joint_turn_deg,
-                         o.resolution ? std::optional(fields(*o.resolution)) : std::nullopt);
+  return std::make_tuple(
+      o.iterations, o.solve_seconds, o.variables, o.constraints, fields(o.after),
+      o.optimizer_objective_before, o.optimizer_objective_after, o.keyframe_times_after,
+      o.keyframe_time_spreads, o.keyframe_times_undetermined, o.ipopt_status, o.restarts,
+      o.tolerances ? std::optional(fields(*o.tolerances)) : std::nullopt, o.largest_joint_turn_deg,
+      o.resolution ? std::optional(fields(*o.resolution)) : std::nullopt);
 }
 template <typename T>
 auto optional_fields(const std::optional<T>& x) {
@@ -162,6 +168,13 @@ ResultJson random_result(ResultJson::Kind kind, std::mt19937& rng) {
     o.optimizer_objective_before = positive(rng);
     o.optimizer_objective_after = positive(rng);
     o.keyframe_times_after = times(r.keyframes);
+    o.keyframe_time_spreads.emplace();
+    for (int i = 0; i < r.keyframes; ++i) {
+      const bool end = i == 0 || i + 1 == r.keyframes;
+      o.keyframe_time_spreads->push_back(end ? 0.0 : positive(rng) / 1e5);
+      if (o.keyframe_time_spreads->back() > kDeterminedTimeSpread)
+        o.keyframe_times_undetermined.push_back(i);
+    }
     o.ipopt_status = "acceptable";
     o.restarts = static_cast<int>(rng() % 3);
     o.tolerances = Tolerances{positive(rng), positive(rng)};
@@ -227,9 +240,10 @@ TEST(ResultJson, KeysAreThoseOfDesignSection6) {
   EXPECT_TRUE(e["iterations"].is_null());
   EXPECT_TRUE(e["samples"].is_number_integer());
   const nlohmann::json o = result_to_json(random_result(ResultJson::Kind::kOptimization, rng));
-  for (const char* key : {"knots_per_interval_requested", "ipopt_status", "restarts", "formulation",
-                          "timing_optimized", "tolerances", "joint_turn_limit_deg",
-                          "largest_joint_turn_deg", "resolution"})
+  for (const char* key :
+       {"knots_per_interval_requested", "ipopt_status", "restarts", "formulation",
+        "timing_optimized", "tolerances", "joint_turn_limit_deg", "largest_joint_turn_deg",
+        "resolution", "keyframe_time_spread_s", "keyframe_times_undetermined"})
     EXPECT_TRUE(o.contains(key)) << key;
   for (const char* key : {"automatic", "subdivisions", "knots", "levels"})
     EXPECT_TRUE(o["resolution"].contains(key)) << key;
@@ -256,7 +270,8 @@ TEST(ResultJson, OlderOptimisationResultsWithoutTheLaterKeysStillRead) {
   nlohmann::json j = result_to_json(random_result(ResultJson::Kind::kOptimization, rng));
   for (const char* key : {"restarts", "tolerances", "largest_joint_turn_deg", "ipopt_status",
                           "knots_per_interval_requested", "joint_turn_limit_deg", "formulation",
-                          "timing_optimized", "epsilon", "residual_check", "resolution"})
+                          "timing_optimized", "epsilon", "residual_check", "resolution",
+                          "keyframe_time_spread_s", "keyframe_times_undetermined"})
     j.erase(key);
   for (const char* stage : {"before", "after"})
     for (const char* key : {"optimizer_objective", "optimizer_avg_root_force"})
@@ -268,6 +283,7 @@ TEST(ResultJson, OlderOptimisationResultsWithoutTheLaterKeysStillRead) {
   EXPECT_FALSE(r.optimization->tolerances);
   EXPECT_FALSE(r.optimization->optimizer_objective_after);
   EXPECT_FALSE(r.optimization->resolution);
+  EXPECT_FALSE(r.optimization->keyframe_time_spreads);
   EXPECT_FALSE(r.residual_check);
   EXPECT_FALSE(r.option("formulation"));
   ASSERT_TRUE(r.option("samples"));
@@ -310,6 +326,9 @@ TEST(ResultJson, BadDocumentsNameTheField) {
   j = good;
   j["resolution"]["subdivisions"] = {1, 0, 2};
   expect_error(j, "/resolution/subdivisions/1");
+  j = good;
+  j["keyframe_times_undetermined"] = {1, -1};
+  expect_error(j, "/keyframe_times_undetermined/1");
   j = good;
   j["resolution"]["automatic"] = "auto";
   expect_error(j, "/resolution/automatic");
@@ -430,6 +449,79 @@ TEST(ResultFolder, ResolutionReadsBackAutomaticOrUniform) {
     EXPECT_EQ(f.result.option("knots_per_interval_requested"),
               OptionValue(knots == "auto" ? 1 : 2));
   }
+}
+
+MotionFile pike_file() {
+  MotionFile file;
+  file.model = test::bundled_model();
+  file.motion = test::pike_motion(file.model);
+  file.path = "pike.motion.json";
+  return file;
+}
+
+TEST(ResultJson, EvaluationFiguresAgreeWithTheTrajectoryCsv) {
+  const MotionFile file = pike_file();
+  EvaluateOptions options;
+  options.samples = 57;
+  const MotionEvaluation evaluation = evaluate_motion(file.motion, file.model, options);
+  test::TempDir dir;
+  const nlohmann::json written = write_evaluation_outputs(dir / "out", file, evaluation, options);
+  const nlohmann::json result = nlohmann::json::parse(test::read_text(dir / "out/result.json"));
+  EXPECT_EQ(result, written);
+  EXPECT_EQ(result["format"], "saltus-result/1");
+  EXPECT_EQ(result["samples"], 57);
+  EXPECT_EQ(result["keyframes"], 4);
+  EXPECT_EQ(result["motion_file"], "pike.motion.json");
+  EXPECT_TRUE(result["after"].is_null());
+  const CsvTable csv = read_csv_table(dir / "out/trajectory.csv");
+  ASSERT_EQ(csv.rows.size(), 57u);
+  const int t = csv.column("t"), f = csv.column("root_fx"), m = csv.column("root_mx");
+  double force = 0, moment = 0, peak = 0;
+  for (std::size_t k = 0; k < csv.rows.size(); ++k) {
+    const auto& row = csv.rows[k];
+    const double f2 = row[f] * row[f] + row[f + 1] * row[f + 1] + row[f + 2] * row[f + 2];
+    const double m2 = row[m] * row[m] + row[m + 1] * row[m + 1] + row[m + 2] * row[m + 2];
+    peak = std::max(peak, std::sqrt(f2));
+    if (k == 0) continue;
+    const auto& prev = csv.rows[k - 1];
+    const double pf2 = prev[f] * prev[f] + prev[f + 1] * prev[f + 1] + prev[f + 2] * prev[f + 2];
+    const double pm2 = prev[m] * prev[m] + prev[m + 1] * prev[m + 1] + prev[m + 2] * prev[m + 2];
+    force += 0.5 * (row[t] - prev[t]) * (f2 + pf2);
+    moment += 0.5 * (row[t] - prev[t]) * (m2 + pm2);
+  }
+  const double duration = csv.rows.back()[t];
+  const nlohmann::json& before = result["before"];
+  // The figures are the evaluation's dense check, written to the last digit; the CSV's 57
+  // samples integrate the same wrench more coarsely, so agree to a few per cent.
+  EXPECT_EQ(before["objective"].get<double>(), evaluation.metrics.objective);
+  EXPECT_EQ(before["rms_force_N"].get<double>(), evaluation.metrics.rms_force_N);
+  EXPECT_EQ(before["max_force_N"].get<double>(), evaluation.metrics.max_force_N);
+  EXPECT_NEAR(before["objective"].get<double>(), (force + moment) / duration,
+              0.03 * (force + moment) / duration);
+  EXPECT_NEAR(before["rms_force_N"].get<double>(), std::sqrt(force / duration),
+              0.03 * std::sqrt(force / duration));
+  EXPECT_NEAR(before["max_force_N"].get<double>(), peak, 0.03 * peak);
+  EXPECT_NEAR(before["avg_root_force"].get<double>(),
+              std::sqrt(before["objective"].get<double>() / 6), 1e-12);
+  std::vector<double> times;
+  for (const Keyframe& k : file.motion.keyframes)
+    times.push_back(k.time);
+  EXPECT_EQ(result["keyframe_times_before"].get<std::vector<double>>(), times);
+}
+
+TEST(ResultJson, SimulationNamesItsMomentumAndLanding) {
+  MotionFile file = pike_file();
+  file.motion.takeoff.angular_momentum = Eigen::Vector3d(25, 0, 0);
+  const SimulationResult simulation = simulate_motion(file.motion, file.model, {});
+  test::TempDir dir;
+  const nlohmann::json result = write_simulation_outputs(dir / "sim", file, simulation, {});
+  EXPECT_EQ(result["takeoff_angular_momentum_source"], "motion file");
+  EXPECT_EQ(result["takeoff_angular_momentum"], nlohmann::json::array({25.0, 0.0, 0.0}));
+  EXPECT_EQ(result["landing"]["joint_error_deg"].size(),
+            static_cast<std::size_t>(file.model.size()));
+  EXPECT_EQ(result["landing"]["root_error_deg"].get<double>(), simulation.landing_root_error_deg);
+  EXPECT_TRUE(result["max_quaternion_error"].is_null());
+  EXPECT_EQ(read_csv_table(dir / "sim/trajectory.csv").rows.size(), simulation.samples.size());
 }
 
 }  // namespace

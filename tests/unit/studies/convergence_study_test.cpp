@@ -1,7 +1,6 @@
-// The study machinery's pure parts: the factorial design, the seeded timing disturbance and the
-// tables. (Whole studies run in tests/cli/study_test.cpp.)
+// The convergence study's pure parts: the factorial design and the seeded timing disturbance.
+// (Its tables: unit/formats/convergence_files_test.cpp; whole studies: tests/cli/study_test.cpp.)
 
-#include "saltus/formats/convergence_files.h"
 #include "saltus/studies/convergence_study.h"
 
 #include <gtest/gtest.h>
@@ -75,27 +74,6 @@ TEST(ConvergenceStudyCases, IsTheFactorialDesignWithTheNominalMassOnce) {
   }
   EXPECT_EQ(relaxed, 2 * 5 * 2);
   EXPECT_EQ(nominal, 2 * 3 * 2);
-}
-
-TEST(ConvergenceTables, CountEveryCaseOnceInEachBreakdown) {
-  std::vector<StudyOutcome> outcomes;
-  for (int i = 0; i < 4; ++i) {
-    StudyOutcome o;
-    o.study_case.motion = i < 2 ? "M1" : "M7";
-    o.study_case.formulation = i % 2 ? Formulation::kStrict : Formulation::kRelaxed;
-    o.study_case.epsilon = i % 2 ? 10 : 0;
-    o.study_case.mass_segment = "all";
-    o.solved = i != 3;  // strict fails on M7
-    o.status = o.solved ? "solved" : "max_iterations";
-    outcomes.push_back(o);
-  }
-  const std::string md = convergence_markdown(outcomes);
-  EXPECT_NE(md.find("| relaxed | 2 | 2 (100 %)"), std::string::npos) << md;
-  EXPECT_NE(md.find("| strict ε=10 | 2 | 1 (50 %)"), std::string::npos) << md;
-  EXPECT_NE(md.find("| M7 | 1/1 | 0/1 |"), std::string::npos) << md;
-  const std::string csv = convergence_csv(outcomes);
-  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);  // header + 4 cases
-  EXPECT_NE(csv.find("M7,strict,10,all,0,0,max_iterations,0,"), std::string::npos) << csv;
 }
 
 }  // namespace

@@ -1,8 +1,9 @@
-// Tests for the body model: the bundled default model's anthropometry (checked against
-// independent expectations, not against numbers copied from the file) and the validation of
-// "saltus-model/1" documents, one test per kind of bad input.
+// Tests for body model files (formats/model_file.h): the bundled default model's anthropometry
+// (checked against independent expectations, not against numbers copied from the file), the
+// exact round trip, and the validation of "saltus-model/1" documents, one test per kind of bad
+// input. The BodyModel queries and mass scaling are tested in unit/body/body_model_test.cpp.
 
-#include "saltus/body/body_model.h"
+#include "saltus/formats/model_file.h"
 
 #include <gtest/gtest.h>
 
@@ -21,7 +22,7 @@
 
 #include "saltus/base/input_error.h"
 #include "saltus/base/json_reader.h"
-#include "saltus/formats/model_file.h"
+#include "saltus/body/body_model.h"
 
 namespace saltus {
 namespace {
@@ -202,7 +203,7 @@ TEST(BodyModelDefault, CentresOfMassLieInsideTheirSegments) {
 }
 
 // ----------------------------------------------------------------------------------------------
-// Serialisation and mass scaling.
+// Serialisation.
 
 void expect_same_model(const BodyModel& a, const BodyModel& b) {
   EXPECT_EQ(a.name, b.name);
@@ -260,41 +261,6 @@ TEST(BodyModelJson, OptionalFieldsMayBeLeftOut) {
   EXPECT_EQ(model.segments[0].joint_position, Eigen::Vector3d::Zero());
   EXPECT_EQ(model.segments[3].shape.length, 0.0);
   EXPECT_EQ(model.segments[3].shape.type, "capsule");
-}
-
-TEST(BodyModelScale, ScalesOneSegmentOrAll) {
-  const BodyModel model = load_body_model(kModelPath);
-  const int thigh = model.segment_index("thigh_l");
-  const BodyModel one = scale_segment_mass(model, "thigh_l", 1.5);
-  EXPECT_DOUBLE_EQ(one.segments[thigh].mass, 15.0);
-  EXPECT_TRUE(one.segments[thigh].inertia.isApprox(1.5 * model.segments[thigh].inertia));
-  EXPECT_EQ(one.segments[thigh].com, model.segments[thigh].com);
-  EXPECT_NEAR(one.total_mass(), 70.5, 1e-12);
-  for (int i = 0; i < model.size(); ++i) {
-    if (i == thigh) continue;
-    EXPECT_EQ(one.segments[i].mass, model.segments[i].mass);
-    EXPECT_EQ(one.segments[i].inertia, model.segments[i].inertia);
-  }
-
-  const BodyModel all = scale_segment_mass(model, "", 0.9);
-  EXPECT_NEAR(all.total_mass(), 0.9 * 65.5, 1e-12);
-  for (int i = 0; i < model.size(); ++i)
-    EXPECT_TRUE(all.segments[i].inertia.isApprox(0.9 * model.segments[i].inertia));
-  // The input is untouched.
-  EXPECT_DOUBLE_EQ(model.total_mass(), 65.5);
-}
-
-TEST(BodyModelScale, RejectsUnknownSegmentsAndNonPositiveFactors) {
-  const BodyModel model = load_body_model(kModelPath);
-  EXPECT_THROW(scale_segment_mass(model, "tail", 1.1), std::invalid_argument);
-  EXPECT_THROW(scale_segment_mass(model, "thigh_l", 0.0), std::invalid_argument);
-  EXPECT_THROW(scale_segment_mass(model, "", -1.0), std::invalid_argument);
-  EXPECT_THROW(scale_segment_mass(model, "", std::nan("")), std::invalid_argument);
-  try {
-    scale_segment_mass(model, "tail", 1.1);
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("tail"), std::string::npos);
-  }
 }
 
 // ----------------------------------------------------------------------------------------------

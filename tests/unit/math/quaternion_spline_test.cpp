@@ -1,6 +1,8 @@
-/// Tests of the cubic B-spline basis, the Kim-Kim-Shin quaternion splines and the R³ splines.
-/// Every derivative is cross-checked by an independent path (finite differences, a naive
-/// recursive Cox-de Boor, automatic differentiation) rather than against stored numbers.
+/// Tests of the Kim-Kim-Shin quaternion splines and their fit through keyframes (paper §5.2).
+/// Every derivative is cross-checked by an independent path (finite differences, automatic
+/// differentiation) rather than against stored numbers.
+
+#include "saltus/math/quaternion_spline.h"
 
 #include <gtest/gtest.h>
 
@@ -8,40 +10,18 @@
 #include <cmath>
 #include <random>
 #include <stdexcept>
-#include <unsupported/Eigen/AutoDiff>
 #include <vector>
 
-#include "saltus/math/bspline_basis.h"
 #include "saltus/math/quaternion.h"
-#include "saltus/math/quaternion_spline.h"
-#include "saltus/math/vector_spline.h"
+#include "support/spline_fixtures.h"
 
 namespace saltus {
 namespace {
 
-using AdFixed = Eigen::AutoDiffScalar<Eigen::Matrix<double, 3, 1>>;
-using AdDynamic = Eigen::AutoDiffScalar<Eigen::VectorXd>;
-
-const std::vector<double> kNonUniformTimes = {0.0, 0.31, 0.9, 1.2, 2.04};
-
-std::vector<double> knots_for(const std::vector<double>& times, int knots_per_interval) {
-  return clamped_cubic_knots(refine_breakpoints(times, knots_per_interval));
-}
-
-/// Naive recursive Cox-de Boor (de Boor 1972) on the whole knot vector, right-continuous, with
-/// the last non-empty span closed on the right: an independent path for the span algorithm.
-double naive_basis(const std::vector<double>& k, int i, int p, double t) {
-  if (p == 0) {
-    const int n = static_cast<int>(k.size()) - 4;
-    if (t == k[n]) return (i == n - 1) ? 1.0 : 0.0;
-    return (k[i] <= t && t < k[i + 1]) ? 1.0 : 0.0;
-  }
-  double result = 0.0;
-  if (k[i + p] != k[i]) result += (t - k[i]) / (k[i + p] - k[i]) * naive_basis(k, i, p - 1, t);
-  if (k[i + p + 1] != k[i + 1])
-    result += (k[i + p + 1] - t) / (k[i + p + 1] - k[i + 1]) * naive_basis(k, i + 1, p - 1, t);
-  return result;
-}
+using test::AdDynamic;
+using test::AdFixed;
+using test::kNonUniformTimes;
+using test::knots_for;
 
 Quat<double> axis_angle(double angle, const Eigen::Vector3d& axis) {
   return Quat<double>(Eigen::AngleAxisd(angle, axis.normalized()));
@@ -77,147 +57,6 @@ double max_rotation_error(const QuaternionSpline<double>& s, const std::vector<d
     worst = std::max(worst, rotation_angle_between(s.evaluate(times[i]).q, targets[i]));
   return worst;
 }
-
-// ---------------------------------------------------------------------------------------------
-// Basis
-
-TEST(BsplineBasis, KnotLayoutAndRefinement) {
-  const std::vector<double> b = refine_breakpoints(std::vector<double>{0.0, 1.0, 3.0}, 2);
-  ASSERT_EQ(b.size(), 5u);
-  EXPECT_DOUBLE_EQ(b[1], 0.5);
-  EXPECT_DOUBLE_EQ(b[3], 2.0);
-  const std::vector<double> k = clamped_cubic_knots(b);
-  ASSERT_EQ(k.size(), b.size() + 6);
-  EXPECT_EQ(control_count(k), static_cast<int>(b.size()) + 2);
-  for (int i = 0; i < 4; ++i) {
-    EXPECT_EQ(k[i], 0.0);
-    EXPECT_EQ(k[k.size() - 1 - i], 3.0);
-  }
-  EXPECT_THROW(refine_breakpoints(std::vector<double>{0.0, 1.0}, 0), std::invalid_argument);
-  EXPECT_THROW(clamped_cubic_knots(std::vector<double>{1.0}), std::invalid_argument);
-}
-
-TEST(BsplineBasis, FindSpanConventions) {
-  const std::vector<double> k = knots_for(kNonUniformTimes, 1);  // n = 7, spans 3..6
-  EXPECT_EQ(find_span(k, 0.0), 3);
-  EXPECT_EQ(find_span(k, -1.0), 3);
-  EXPECT_EQ(find_span(k, 0.30), 3);
-  EXPECT_EQ(find_span(k, 0.31), 4);  // an interior knot belongs to the span on its right
-  EXPECT_EQ(find_span(k, 1.0), 5);
-  EXPECT_EQ(find_span(k, 1.2), 6);
-  EXPECT_EQ(find_span(k, 2.04), 6);  // t = T uses the last span
-  EXPECT_EQ(find_span(k, 5.0), 6);
-  EXPECT_THROW(cubic_basis_on_span(k, 7, 1.0), std::out_of_range);
-  EXPECT_THROW(cubic_basis_on_span(k, 2, 1.0), std::out_of_range);
-}
-
-TEST(BsplineBasis, PartitionOfUnityAndCumulative) {
-  for (int refine = 1; refine <= 3; ++refine) {
-    const std::vector<double> k = knots_for(kNonUniformTimes, refine);
-    for (double t = 0.0; t <= 2.04; t += 0.0123) {
-      const SpanBasis<double> b = cubic_basis(k, t);
-      double sum[3] = {0, 0, 0};
-      for (int d = 0; d < 3; ++d)
-        for (int j = 0; j < 4; ++j)
-          sum[d] += b.value[d][j];
-      EXPECT_NEAR(sum[0], 1.0, 1e-14);
-      EXPECT_NEAR(sum[1], 0.0, 1e-11);
-      EXPECT_NEAR(sum[2], 0.0, 1e-9);
-      for (int j = 0; j < 4; ++j)
-        EXPECT_GE(b.value[0][j], -1e-15);
-      for (int d = 0; d < 3; ++d) {
-        for (int j = 0; j < 4; ++j) {
-          double tail = 0.0;
-          for (int i = j; i < 4; ++i)
-            tail += b.value[d][i];
-          EXPECT_NEAR(b.cumulative[d][j], tail, 1e-9 * (1 + std::abs(tail)));
-        }
-      }
-    }
-  }
-}
-
-TEST(BsplineBasis, MatchesNaiveRecursion) {
-  const std::vector<double> k = knots_for(kNonUniformTimes, 2);
-  const int n = control_count(k);
-  for (double t : {0.0, 0.05, 0.155, 0.31, 0.6, 0.899, 1.2, 1.7, 2.04}) {
-    const SpanBasis<double> b = cubic_basis(k, t);
-    for (int i = 0; i < n; ++i) {
-      const int j = i - b.first_control();
-      const double expected = naive_basis(k, i, 3, t);
-      const double got = (j >= 0 && j < 4) ? b.value[0][j] : 0.0;
-      EXPECT_NEAR(got, expected, 1e-14) << "i=" << i << " t=" << t;
-    }
-  }
-}
-
-TEST(BsplineBasis, TimeDerivativesMatchFiniteDifferences) {
-  const std::vector<double> k = knots_for(kNonUniformTimes, 3);
-  const double h = 1e-6;
-  for (double t = 0.013; t < 2.04; t += 0.0371) {
-    const SpanBasis<double> b = cubic_basis(k, t);
-    // Stay on the span: the polynomial piece is what the derivatives describe.
-    const SpanBasis<double> plus = cubic_basis_on_span(k, b.span, t + h);
-    const SpanBasis<double> minus = cubic_basis_on_span(k, b.span, t - h);
-    for (int d = 0; d < 2; ++d) {
-      for (int j = 0; j < 4; ++j) {
-        const double fd = (plus.value[d][j] - minus.value[d][j]) / (2 * h);
-        EXPECT_NEAR(b.value[d + 1][j], fd, 1e-6 * (1 + std::abs(fd))) << "d=" << d << " t=" << t;
-        const double fdc = (plus.cumulative[d][j] - minus.cumulative[d][j]) / (2 * h);
-        EXPECT_NEAR(b.cumulative[d + 1][j], fdc, 1e-6 * (1 + std::abs(fdc)));
-      }
-    }
-  }
-}
-
-TEST(BsplineBasis, DerivativeWithRespectToKeyframeTimeMatchesFiniteDifferences) {
-  // Differentiate through refine_breakpoints and clamped_cubic_knots, as timing optimisation
-  // does: the interior keyframe times are the AD variables.
-  for (int refine : {1, 3}) {
-    for (int which = 1; which <= 3; ++which) {
-      std::vector<AdDynamic> times;
-      for (std::size_t i = 0; i < kNonUniformTimes.size(); ++i) {
-        times.emplace_back(kNonUniformTimes[i]);
-        if (static_cast<int>(i) == which) times.back() = AdDynamic(kNonUniformTimes[i], 1, 0);
-      }
-      const std::vector<AdDynamic> k = clamped_cubic_knots(refine_breakpoints(times, refine));
-      const double h = 1e-6;
-      std::vector<double> plus_times = kNonUniformTimes, minus_times = kNonUniformTimes;
-      plus_times[which] += h;
-      minus_times[which] -= h;
-      const std::vector<double> kp = knots_for(plus_times, refine);
-      const std::vector<double> km = knots_for(minus_times, refine);
-      for (double t : {0.1, 0.35, 0.8, 1.05, 1.5, 1.99}) {
-        const SpanBasis<AdDynamic> b = cubic_basis(k, AdDynamic(t));
-        const SpanBasis<double> bp = cubic_basis_on_span(kp, b.span, t);
-        const SpanBasis<double> bm = cubic_basis_on_span(km, b.span, t);
-        for (int d = 0; d < 3; ++d) {
-          for (int j = 0; j < 4; ++j) {
-            const double fd = (bp.value[d][j] - bm.value[d][j]) / (2 * h);
-            const auto& der = b.value[d][j].derivatives();
-            const double ad = der.size() > 0 ? der[0] : 0.0;
-            EXPECT_NEAR(ad, fd, 1e-5 * (1 + std::abs(fd)))
-                << "refine=" << refine << " keyframe=" << which << " t=" << t << " d=" << d;
-          }
-        }
-      }
-    }
-  }
-}
-
-TEST(BsplineBasis, DerivativeOfBasisWithRespectToTimeByAd) {
-  const std::vector<double> kd = knots_for(kNonUniformTimes, 1);
-  std::vector<AdFixed> k(kd.begin(), kd.end());
-  for (double t = 0.02; t < 2.04; t += 0.1) {
-    const SpanBasis<AdFixed> b = cubic_basis(k, AdFixed(t, 3, 0));
-    for (int d = 0; d < 2; ++d)
-      for (int j = 0; j < 4; ++j)
-        EXPECT_NEAR(b.value[d][j].derivatives()[0], b.value[d + 1][j].value(), 1e-10);
-  }
-}
-
-// ---------------------------------------------------------------------------------------------
-// Quaternion splines
 
 QuaternionSpline<double> random_spline(int refine, unsigned seed, double max_step = 1.2) {
   const std::vector<double> k = knots_for(kNonUniformTimes, refine);
@@ -584,99 +423,6 @@ TEST(QuaternionFit, RejectsBadInput) {
   EXPECT_THROW(
       fit_quaternion_spline(std::vector<double>{0, 0, 0, 0, 1, 1, 1}, {0.0}, {c.targets[0]}),
       std::invalid_argument);
-}
-
-// ---------------------------------------------------------------------------------------------
-// R³ splines
-
-std::vector<Eigen::Vector3d> random_points(int n, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  std::vector<Eigen::Vector3d> p;
-  for (int i = 0; i < n; ++i)
-    p.emplace_back(uniform(rng), uniform(rng), uniform(rng));
-  return p;
-}
-
-TEST(VectorSpline, ConstructorChecksControlCount) {
-  const std::vector<double> k = knots_for(kNonUniformTimes, 1);
-  EXPECT_THROW(VectorSpline<double>(k, random_points(control_count(k) + 1, 1)),
-               std::invalid_argument);
-}
-
-TEST(VectorSpline, DerivativesMatchFiniteDifferences) {
-  const std::vector<double> k = knots_for(kNonUniformTimes, 2);
-  const VectorSpline<double> s(k, random_points(control_count(k), 3));
-  const double h = 1e-6;
-  for (double t = 0.017; t < 2.04 - h; t += 0.0531) {
-    const VectorSample<double> x = s.evaluate(t);
-    const VectorSample<double> p = s.evaluate(t + h), m = s.evaluate(t - h);
-    EXPECT_LT((x.velocity - (p.position - m.position) / (2 * h)).norm(),
-              1e-6 * (1 + x.velocity.norm()));
-    EXPECT_LT((x.acceleration - (p.velocity - m.velocity) / (2 * h)).norm(),
-              1e-5 * (1 + x.acceleration.norm()));
-  }
-  EXPECT_LT((s.evaluate(0.0).position - s.control().front()).norm(), 1e-15);
-  EXPECT_LT((s.evaluate(2.04).position - s.control().back()).norm(), 1e-15);
-}
-
-TEST(VectorSpline, FitReproducesCubicPolynomial) {
-  // A cubic polynomial lies in the spline space, so the fit must be exact.
-  const auto cubic = [](double t) {
-    return Eigen::Vector3d(1.0 - 2.0 * t + 0.5 * t * t * t, 0.3 + 4.0 * t - 4.905 * t * t,
-                           -0.2 + 0.7 * t * t - 0.1 * t * t * t);
-  };
-  const auto cubic_velocity = [](double t) {
-    return Eigen::Vector3d(-2.0 + 1.5 * t * t, 4.0 - 9.81 * t, 1.4 * t - 0.3 * t * t);
-  };
-  for (int refine = 1; refine <= 3; ++refine) {
-    const std::vector<double> k = knots_for(kNonUniformTimes, refine);
-    std::vector<double> times;
-    std::vector<Eigen::Vector3d> points;
-    for (int i = 0; i <= 200; ++i) {
-      times.push_back(2.04 * i / 200.0);
-      points.push_back(cubic(times.back()));
-    }
-    const VectorSpline<double> s(k, fit_vector_spline(k, times, points, 0.0));
-    for (double t = 0.0; t <= 2.04; t += 0.0097) {
-      EXPECT_LT((s.evaluate(t).position - cubic(t)).norm(), 1e-9);
-      EXPECT_LT((s.evaluate(t).velocity - cubic_velocity(t)).norm(), 1e-8);
-    }
-    // The default regulariser (1e-9) biases the fit by O(1e-9) only.
-    const VectorSpline<double> r(k, fit_vector_spline(k, times, points));
-    for (double t = 0.0; t <= 2.04; t += 0.0097)
-      EXPECT_LT((r.evaluate(t).position - cubic(t)).norm(), 1e-8);
-  }
-}
-
-TEST(VectorSpline, FitRejectsBadInput) {
-  const std::vector<double> k = knots_for(kNonUniformTimes, 1);
-  EXPECT_THROW(fit_vector_spline(k, {0.0, 1.0}, random_points(3, 1)), std::invalid_argument);
-  EXPECT_THROW(fit_vector_spline(k, {0.0, 3.0}, random_points(2, 1)), std::invalid_argument);
-  // Two samples cannot fix seven control points without the regulariser.
-  EXPECT_THROW(fit_vector_spline(k, {0.0, 1.0}, random_points(2, 1), 0.0), std::invalid_argument);
-}
-
-TEST(VectorSpline, AutoDiffWithRespectToControlPoint) {
-  const std::vector<double> k = knots_for(kNonUniformTimes, 1);
-  const std::vector<Eigen::Vector3d> c = random_points(control_count(k), 9);
-  std::vector<AdFixed> kad(k.begin(), k.end());
-  std::vector<Vec3<AdFixed>> cad;
-  for (std::size_t i = 0; i < c.size(); ++i) {
-    cad.push_back(c[i].cast<AdFixed>());
-    if (i == 3)
-      for (int a = 0; a < 3; ++a)
-        cad.back()[a] = AdFixed(c[i][a], 3, a);
-  }
-  const VectorSpline<AdFixed> s(kad, cad);
-  for (double t = 0.0; t <= 2.04; t += 0.1) {
-    const SpanBasis<double> b = cubic_basis(k, t);
-    const int j = 3 - b.first_control();
-    const double weight = (j >= 0 && j < 4) ? b.value[0][j] : 0.0;
-    const VectorSample<AdFixed> x = s.evaluate(AdFixed(t));
-    for (int a = 0; a < 3; ++a)
-      EXPECT_NEAR(x.position[a].derivatives()[a], weight, 1e-15);
-  }
 }
 
 }  // namespace

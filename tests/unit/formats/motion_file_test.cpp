@@ -464,5 +464,14 @@ TEST(MotionErrors, MissingModelFile) {
                      "model \"no-such-model-4f1c\" not found");
 }
 
+TEST(MotionLabel, IsTheSkillNumberOrTheFileNameWithoutItsSuffix) {
+  EXPECT_EQ(motion_label("examples/motions/M3-tucked-double-back.motion.json"), "M3");
+  EXPECT_EQ(motion_label("/a/b/M12-future.motion.json"), "M12");
+  EXPECT_EQ(motion_label("dive-5m-front-one-and-a-half-twists.motion.json"),
+            "dive-5m-front-one-and-a-half-twists");
+  EXPECT_EQ(motion_label("Mx-not-a-skill.motion.json"), "Mx-not-a-skill");
+  EXPECT_EQ(motion_label("plain.json"), "plain.json");
+}
+
 }  // namespace
 }  // namespace saltus

@@ -15,6 +15,7 @@
 #include "saltus/motion/interpolate.h"
 #include "saltus/optim/ipopt_solver.h"
 #include "saltus/optim/motion_nlp.h"
+#include "support/term_checks.h"
 #include "support/test_motions.h"
 
 namespace saltus {
@@ -469,6 +470,34 @@ TEST(IpoptDerivativeChecker, FindsNoErrorInGradientOrJacobian) {
     EXPECT_NE(text.find("Starting derivative checker"), std::string::npos) << text.substr(0, 500);
     EXPECT_NE(text.find("No errors detected by derivative checker"), std::string::npos)
         << text.substr(0, 4000);
+  }
+}
+
+TEST(MotionNlp, AssemblesEachFormulationFromItsTermsAndBlocks) {
+  auto names = [](const auto& parts) {
+    std::vector<std::string> out;
+    for (const auto* part : parts)
+      out.push_back(part->name());
+    return out;
+  };
+  test::RandomPoint relaxed(Formulation::kRelaxed), strict(Formulation::kStrict);
+  EXPECT_EQ(names(relaxed.nlp->objective_terms()),
+            (std::vector<std::string>{"root wrench", "proximity", "joint turn"}));
+  EXPECT_EQ(names(strict.nlp->objective_terms()),
+            (std::vector<std::string>{"keyframe distance", "proximity", "joint turn"}));
+  EXPECT_EQ(names(relaxed.nlp->constraint_blocks()),
+            (std::vector<std::string>{"keyframe translation", "keyframe rotation", "time order"}));
+  EXPECT_EQ(names(strict.nlp->constraint_blocks()),
+            (std::vector<std::string>{"keyframe translation", "keyframe rotation", "time order",
+                                      "force bounds"}));
+  // The NLP's objective is the sum of its terms' values.
+  for (test::RandomPoint* p : {&relaxed, &strict}) {
+    double sum = 0.0;
+    for (ObjectiveTerm* term : p->nlp->objective_terms()) {
+      p->nlp->evaluations().load(p->x.data());
+      sum += term->value(p->nlp->evaluations());
+    }
+    EXPECT_NEAR(p->nlp->objective(p->x.data()), sum, 1e-12 * sum);
   }
 }
 
