@@ -10,8 +10,7 @@ set(covered_elsewhere
     "optim/nlp=the interface, whose implementations are tested (unit/optim/ipopt_solver_test.cpp solves analytic ones)"
     "optim/terms/objective_term=the terms' interface, exercised by every unit/optim/terms/*_term_test.cpp"
     "optim/terms/constraint_block=the blocks' interface, exercised by every unit/optim/terms/*_block_test.cpp"
-    "studies/paper_report=runs every paper experiment: tests/paper/paper_report_test.cpp (label paper)"
-    "studies/exact_flights=flies and optimises the family: tests/integration/exact_flights_test.cpp")
+    "studies/paper_report=runs every paper experiment: tests/paper/paper_report_test.cpp (label paper)")
 
 set(problems "")
 file(GLOB_RECURSE sources RELATIVE ${SOURCE_DIR} ${SOURCE_DIR}/*.h ${SOURCE_DIR}/*.cpp)
