@@ -5,6 +5,7 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QListWidget>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QScrollArea>
@@ -34,10 +35,27 @@ OptimizePanel::OptimizePanel(QWidget* parent) : QWidget(parent) {
   layout->addLayout(buttons);
   bar_ = new QProgressBar(this);
   bar_->setTextVisible(true);
+  bar_->setRange(0, 1);
+  bar_->setValue(0);
+  bar_->setFormat(QString());
   status_ = new QLabel(tr("Open a motion to optimise it."), this);
   status_->setWordWrap(true);
   layout->addWidget(bar_);
   layout->addWidget(status_);
+
+  layout->addWidget(new QLabel(tr("Runs of this motion (the best solved one is shown):"), this));
+  runs_ = new QListWidget(this);
+  runs_->setMaximumHeight(110);
+  runs_->setWordWrap(true);
+  runs_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  runs_->setToolTip(
+      tr("Every run is kept. Choose one to show it; a cancelled or failed run "
+         "never replaces a solved one by itself."));
+  layout->addWidget(runs_);
+  connect(runs_, &QListWidget::currentRowChanged, this, [this](int row) {
+    // Row 0 is "interpolation only".
+    if (!setting_ && row >= 0) emit run_chosen(row - 1);
+  });
 
   table_ = new QTableWidget(0, 3, this);
   table_->setHorizontalHeaderLabels({tr("Quantity"), tr("Before"), tr("After")});
@@ -54,7 +72,9 @@ OptimizePanel::OptimizePanel(QWidget* parent) : QWidget(parent) {
 
   connect(run_, &QPushButton::clicked, this, &OptimizePanel::run_requested);
   connect(cancel_, &QPushButton::clicked, this, &OptimizePanel::cancel_requested);
+  connect(form_, &OptionForm::edited, this, &OptimizePanel::settings_edited);
   set_settings(OptimizeSettings{});
+  reset();
   update_enabled();
 }
 
@@ -77,21 +97,51 @@ void OptimizePanel::set_available(bool available) {
 void OptimizePanel::set_running(bool running) {
   running_ = running;
   if (running) {
-    bar_->setRange(0, std::max(1, form_->values().integer("max_iterations")));
-    bar_->setValue(0);
-    bar_->setFormat(tr("iteration %v of at most %m"));
+    // How many iterations a run needs is unknown (most solve far below the limit): a busy bar
+    // and the iteration count, not a fraction of the limit.
+    bar_->setRange(0, 0);
     status_->setText(tr("Building the problem (first derivatives)…"));
+  } else {
+    bar_->setRange(0, 1);
+    bar_->setValue(1);
   }
   update_enabled();
 }
 
 void OptimizePanel::show_progress(const ProgressInfo& progress) {
-  bar_->setValue(std::min(progress.iteration, bar_->maximum()));
+  bar_->setFormat(tr("iteration %1").arg(progress.iteration));
   status_->setText(QString::fromStdString(progress_text(progress)));
 }
 
 void OptimizePanel::show_message(const QString& message) {
   status_->setText(message);
+  if (!running_) bar_->setFormat(message.section(':', 0, 0));
+}
+
+QString OptimizePanel::message() const {
+  return status_->text();
+}
+
+void OptimizePanel::show_runs(const std::vector<std::string>& labels, int shown) {
+  setting_ = true;
+  runs_->clear();
+  runs_->addItem(tr("Interpolated keyframes only (no run shown)"));
+  for (const std::string& label : labels) {
+    runs_->addItem(QString::fromStdString(label));
+    runs_->item(runs_->count() - 1)->setToolTip(QString::fromStdString(label));
+  }
+  runs_->setCurrentRow(shown + 1);
+  runs_->setEnabled(!labels.empty());
+  setting_ = false;
+}
+
+void OptimizePanel::reset() {
+  clear_result();
+  show_runs({}, -1);
+  bar_->setRange(0, 1);
+  bar_->setValue(0);
+  bar_->setFormat(QString());
+  status_->setText(available_ ? tr("Ready.") : tr("Open a motion to optimise it."));
 }
 
 void OptimizePanel::show_result(const std::vector<ResultRow>& rows) {
@@ -109,7 +159,6 @@ void OptimizePanel::show_result(const std::vector<ResultRow>& rows) {
 
 void OptimizePanel::clear_result() {
   table_->setRowCount(0);
-  bar_->setValue(0);
 }
 
 void OptimizePanel::update_enabled() {

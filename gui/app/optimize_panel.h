@@ -1,7 +1,9 @@
 #pragma once
 /// @file
-/// The optimisation panel: the option table's options (OptionForm); Run and Cancel; live
-/// progress; the result table (before / after).
+/// The optimisation panel: the option table's options (OptionForm: one row each); Run and Cancel;
+/// live progress; the list of runs of this motion (each kept; choosing one shows it) and the result
+/// table of the run shown (before / after). It only asks: the run controller optimises, the edit
+/// controller makes option changes undoable.
 
 #include <QWidget>
 #include <vector>
@@ -9,6 +11,7 @@
 #include "core/optimize_settings.h"
 
 class QLabel;
+class QListWidget;
 class QProgressBar;
 class QPushButton;
 class QTableWidget;
@@ -32,12 +35,24 @@ class OptimizePanel : public QWidget {
   void show_progress(const ProgressInfo& progress);
   /// Ends the progress display with a message (finished, cancelled, failed).
   void show_message(const QString& message);
+  /// The message shown under the progress bar.
+  QString message() const;
   void show_result(const std::vector<ResultRow>& rows);
   void clear_result();
+  /// The run list: one line per run, `shown` highlighted (-1: none, the interpolation).
+  void show_runs(const std::vector<std::string>& labels, int shown);
+  QListWidget* run_list() const { return runs_; }
+  /// Clears the progress, the message, the list and the table (another motion was opened).
+  void reset();
 
  signals:
   void run_requested();
   void cancel_requested();
+  /// The user picked a run in the list (-1: "interpolation only").
+  void run_chosen(int index);
+  /// The user changed a value: what it was and what it is now (for undo).
+  void settings_edited(const saltus::gui::OptimizeSettings& before,
+                       const saltus::gui::OptimizeSettings& after);
 
  private:
   void update_enabled();
@@ -48,8 +63,10 @@ class OptimizePanel : public QWidget {
   QProgressBar* bar_ = nullptr;
   QLabel* status_ = nullptr;
   QTableWidget* table_ = nullptr;
+  QListWidget* runs_ = nullptr;
   bool available_ = false;
   bool running_ = false;
+  bool setting_ = false;  ///< show_runs is filling the list: no run_chosen
 };
 
 }  // namespace saltus::gui

@@ -7,15 +7,17 @@
 #include <stdexcept>
 
 #include "flags/option_flags.h"
+#include "saltus/base/text_format.h"
 
 namespace saltus::gui {
 
 namespace {
 
 constexpr const char* kDescription =
-    "Opens the desktop app, showing MOTION (*.motion.json) if given. With any of --screenshot,\n"
-    "--screenshot-view, --save-result, --export-figures or --benchmark-playback it runs without\n"
-    "user interaction: it renders (under an X display; use xvfb-run on a headless machine),\n"
+    "Opens the desktop app, showing MOTION (*.motion.json, or a .bvh capture imported onto the\n"
+    "model) if given. With any of --screenshot, --screenshot-view, --save-result,\n"
+    "--export-figures, --export-video or --benchmark-playback it runs without user\n"
+    "interaction: it renders (under an X display; use xvfb-run on a headless machine),\n"
     "writes the files and exits (status 0 ok, 2 bad input or usage, 1 other failure).\n"
     "--optimize takes the optimiser options of `saltus optimize` (the library's defaults in\n"
     "batch runs, the Optimise panel's values otherwise).";
@@ -27,6 +29,26 @@ const CLI::Validator kNotAFlag(
       return value.rfind("--", 0) == 0 ? "needs a value, not the flag " + value : "";
     },
     "", "not a flag");
+
+/// A number in [low, high] (low excluded when `low_open`), with a plain message.
+CLI::Validator interval_check(double low, double high, bool low_open) {
+  const std::string range =
+      (low_open ? "(" : "[") + format_number("%g", low) + ", " + format_number("%g", high) + "]";
+  return CLI::Validator(
+      [low, high, low_open, range](std::string& text) -> std::string {
+        double v = 0.0;
+        std::size_t used = 0;
+        try {
+          v = std::stod(text, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (used != text.size() || !std::isfinite(v)) return "\"" + text + "\" is not a number";
+        if ((low_open ? v <= low : v < low) || v > high) return "must be in " + range;
+        return "";
+      },
+      "", range);
+}
 
 /// A number check with a plain message (CLI11's own prints the whole double range).
 CLI::Validator number_check(bool allow_zero) {
@@ -54,7 +76,7 @@ std::unique_ptr<CLI::App> make_app(CommandLine& c, cli::OptionFlags& flags,
   auto app = std::make_unique<CLI::App>(kDescription, "saltus-gui");
   app->set_help_flag("-h,--help", "print this help and exit");
   app->add_flag("--version", c.version, "print the version and exit");
-  app->add_option("MOTION", c.motion, "motion file to open (*.motion.json)");
+  app->add_option("MOTION", c.motion, "motion file to open (*.motion.json) or capture (*.bvh)");
   app->add_flag("--optimize", c.optimize, "optimise the motion before anything else");
   flags.add(app.get(), cli::all_option_names());
   app->add_option("--time", c.time, "show time T (s) of the flight")
@@ -115,6 +137,23 @@ std::unique_ptr<CLI::App> make_app(CommandLine& c, cli::OptionFlags& flags,
       ->type_name("DIR RESULT_DIR")
       ->check(kNotAFlag)
       ->expected(1, CLI::detail::expected_max_vector_size);
+  app->add_option("--compare", c.compare,
+                  "with --screenshot: the compare window of MOTION against B (a motion file or a "
+                  "result folder) instead of the main window")
+      ->type_name("B")
+      ->check(kNotAFlag);
+  app->add_option("--export-video", c.export_video,
+                  "the 3D view's animation as .mp4 or .gif (time and residual in the picture; "
+                  "needs the ffmpeg program)")
+      ->type_name("FILE")
+      ->check(kNotAFlag);
+  app->add_option("--fps", c.video_fps, "frames per second of the video (default 30, GIF 20)")
+      ->type_name("F")
+      ->check(interval_check(0, 120, true));
+  app->add_option("--speed", c.video_speed,
+                  "motion seconds per video second (default 1; 0.5 = slow motion)")
+      ->type_name("S")
+      ->check(interval_check(0.05, 10, false));
   app->add_flag("--benchmark-playback", c.benchmark,
                 "play the motion for a few seconds and print frames per second");
   app->add_option("--seconds", c.benchmark_seconds, "length of the benchmark (default 5)")
@@ -154,8 +193,12 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
     if (c.result_dirs.empty())
       throw std::invalid_argument("--export-figures DIR needs at least one RESULT_DIR after it");
   }
+  if (!c.compare.empty() && c.screenshot.empty())
+    throw std::invalid_argument(
+        "--compare B needs --screenshot FILE (the compare window's picture)");
   const bool needs_motion = c.optimize || c.time || c.stage || !c.screenshot.empty() ||
-                            !c.screenshot_view.empty() || !c.save_result.empty() || c.benchmark;
+                            !c.screenshot_view.empty() || !c.save_result.empty() || c.benchmark ||
+                            !c.export_video.empty() || !c.compare.empty();
   if (needs_motion && c.motion.empty() && c.batch())
     throw std::invalid_argument("give a motion file to show (saltus-gui MOTION ...)");
   return c;

@@ -69,6 +69,33 @@ Eigen::Matrix3d parse_inertia(const JsonNode& node) {
             std::string("found ") + std::to_string(n) + " values");
 }
 
+/// One entry of "parts": {"name", "type": "ellipsoid", "center", "radii"} or {"name", "type":
+/// "capsule", "center", "length", "radius"}.
+ShapePart parse_shape_part(const JsonNode& node) {
+  node.require_object();
+  ShapePart part;
+  if (const auto name = node.find("name")) part.name = name->as_string();
+  const JsonNode type = node.at("type");
+  part.type = type.as_string();
+  part.center = node.at("center").as_vector3();
+  if (part.type == "ellipsoid") {
+    const JsonNode radii = node.at("radii");
+    part.radii = radii.as_vector3();
+    if (!(part.radii.minCoeff() > 0.0))
+      radii.fail("ellipsoid radii must be positive, found " +
+                 message_number(part.radii.minCoeff()));
+  } else if (part.type == "capsule") {
+    part.length = node.at("length").as_double();
+    const JsonNode radius = node.at("radius");
+    part.radius = radius.as_double();
+    if (!(part.radius > 0.0))
+      radius.fail("capsule radius must be positive, found " + message_number(part.radius));
+  } else {
+    type.fail("part type must be \"ellipsoid\" or \"capsule\", found " + in_quotes(part.type));
+  }
+  return part;
+}
+
 SegmentShape parse_shape(const JsonNode& node) {
   node.require_object();
   SegmentShape shape;
@@ -82,6 +109,11 @@ SegmentShape parse_shape(const JsonNode& node) {
   shape.radius = radius.as_double();
   if (shape.radius < 0.0)
     radius.fail("shape radius must not be negative, found " + message_number(shape.radius));
+  if (const auto parts = node.find("parts")) {
+    parts->require_array();
+    for (std::size_t i = 0; i < parts->size(); ++i)
+      shape.parts.push_back(parse_shape_part(parts->at(i)));
+  }
   return shape;
 }
 
@@ -194,6 +226,23 @@ nlohmann::json body_model_to_json(const BodyModel& model) {
   auto vector3 = [](const Eigen::Vector3d& v) {
     return nlohmann::json::array({v.x(), v.y(), v.z()});
   };
+  auto shape_json = [&vector3](const SegmentShape& shape) {
+    nlohmann::json out = {{"type", shape.type}, {"length", shape.length}, {"radius", shape.radius}};
+    if (shape.parts.empty()) return out;  // files without parts stay as they were
+    nlohmann::json parts = nlohmann::json::array();
+    for (const ShapePart& p : shape.parts) {
+      nlohmann::json part = {{"name", p.name}, {"type", p.type}, {"center", vector3(p.center)}};
+      if (p.type == "capsule") {
+        part["length"] = p.length;
+        part["radius"] = p.radius;
+      } else {
+        part["radii"] = vector3(p.radii);
+      }
+      parts.push_back(std::move(part));
+    }
+    out["parts"] = std::move(parts);
+    return out;
+  };
   nlohmann::json segments = nlohmann::json::array();
   for (const Segment& s : model.segments) {
     nlohmann::json parent = nullptr;
@@ -207,7 +256,7 @@ nlohmann::json body_model_to_json(const BodyModel& model) {
         {"mass", s.mass},
         {"com", vector3(s.com)},
         {"inertia", {I(0, 0), I(1, 1), I(2, 2), I(0, 1), I(0, 2), I(1, 2)}},
-        {"shape", {{"type", s.shape.type}, {"length", s.shape.length}, {"radius", s.shape.radius}}},
+        {"shape", shape_json(s.shape)},
     });
   }
   return {{"format", kModelFormat},

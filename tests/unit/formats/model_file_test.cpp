@@ -222,6 +222,17 @@ void expect_same_model(const BodyModel& a, const BodyModel& b) {
     EXPECT_EQ(x.shape.type, y.shape.type);
     EXPECT_EQ(x.shape.length, y.shape.length);
     EXPECT_EQ(x.shape.radius, y.shape.radius);
+    ASSERT_EQ(x.shape.parts.size(), y.shape.parts.size()) << x.name;
+    for (std::size_t k = 0; k < x.shape.parts.size(); ++k) {
+      const ShapePart& p = x.shape.parts[k];
+      const ShapePart& q = y.shape.parts[k];
+      EXPECT_EQ(p.name, q.name);
+      EXPECT_EQ(p.type, q.type);
+      EXPECT_EQ(p.center, q.center);
+      EXPECT_EQ(p.radii, q.radii);
+      EXPECT_EQ(p.length, q.length);
+      EXPECT_EQ(p.radius, q.radius);
+    }
   }
 }
 
@@ -392,6 +403,63 @@ TEST(BodyModelValidation, BadShape) {
   doc = good_document();
   doc["segments"][3]["shape"]["radius"] = -0.01;
   expect_input_error(doc, "/segments/3/shape/radius", "negative");
+}
+
+TEST(BodyModelValidation, BadShapePart) {
+  nlohmann::json doc = good_document();
+  const std::size_t thorax = 2;
+  ASSERT_EQ(doc["segments"][thorax]["name"], "thorax");
+  doc["segments"][thorax]["shape"]["parts"][2]["type"] = "cone";
+  expect_input_error(doc, "/segments/2/shape/parts/2/type", "cone");
+  doc = good_document();
+  doc["segments"][thorax]["shape"]["parts"][2]["radii"][1] = 0.0;
+  expect_input_error(doc, "/segments/2/shape/parts/2/radii", "positive");
+  doc = good_document();
+  doc["segments"][thorax]["shape"]["parts"][1]["radius"] = -0.05;
+  expect_input_error(doc, "/segments/2/shape/parts/1/radius", "positive");
+  doc = good_document();
+  doc["segments"][thorax]["shape"]["parts"][0].erase("center");
+  expect_input_error(doc, "/segments/2/shape/parts/0", "center");
+  doc = good_document();
+  doc["segments"][thorax]["shape"]["parts"] = "head";
+  expect_input_error(doc, "/segments/2/shape/parts", "array");
+}
+
+TEST(BodyModelJson, FilesWithoutShapePartsStillReadAndWriteAsBefore) {
+  nlohmann::json doc = good_document();
+  for (auto& segment : doc["segments"])
+    segment["shape"].erase("parts");
+  const BodyModel model = parse_body_model(doc, kBadFile);
+  for (const Segment& s : model.segments)
+    EXPECT_TRUE(s.shape.parts.empty()) << s.name;
+  // Written back, no "parts" key appears.
+  for (const auto& segment : body_model_to_json(model)["segments"])
+    EXPECT_FALSE(segment["shape"].contains("parts"));
+}
+
+TEST(BodyModelDefault, DrawsAHeadOnTopHandsAtTheArmsAndFeetBelowTheAnkles) {
+  // Drawing only, but it must sit where a person's head, hands and feet are: the head at the
+  // top of the thorax's extent, the hands beyond the forearm's end, the feet below the ankles.
+  const BodyModel model = load_body_model(kModelPath);
+  auto part = [&](const char* segment, const char* name) -> const ShapePart& {
+    const Segment& s = model.segments[static_cast<std::size_t>(segment_named(model, segment))];
+    for (const ShapePart& p : s.shape.parts)
+      if (p.name == name) return p;
+    ADD_FAILURE() << segment << " has no part " << name;
+    return s.shape.parts.front();
+  };
+  const Segment& thorax = model.segments[static_cast<std::size_t>(segment_named(model, "thorax"))];
+  const ShapePart& head = part("thorax", "head");
+  EXPECT_NEAR(head.center.y() + head.radii.y(), thorax.shape.length, 0.01);
+  EXPECT_GT(part("thorax", "nose").center.z(), head.center.z());  // the face looks along +z
+  for (const char* side : {"_l", "_r"}) {
+    const std::string forearm = std::string("forearm") + side;
+    const Segment& f = model.segments[static_cast<std::size_t>(segment_named(model, forearm))];
+    const ShapePart& hand = part(forearm.c_str(), "hand");
+    EXPECT_LT(hand.center.y(), f.shape.length + 0.05);  // beyond the wrist
+    const ShapePart& foot = part((std::string("foot") + side).c_str(), "foot");
+    EXPECT_LT(foot.center.y() - foot.radii.y(), -0.15);
+  }
 }
 
 TEST(BodyModelValidation, MissingMass) {
