@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "flags/option_flags.h"
 #include "saltus/base/input_error.h"
 #include "saltus/base/text_format.h"
 #include "saltus/formats/capture_files.h"
@@ -32,32 +33,24 @@ std::string absolute(const std::string& path) {
 }
 
 /// Settings shared by the study verbs and the report: the time grid and the iteration limit of
-/// every optimisation they run.
+/// every optimisation they run (option table).
 struct StudyArgs {
   std::string out_dir;
-  int samples = kDefaultSamples;
-  int max_iterations = SolverOptions{}.max_iterations;
   bool quiet = false;
+  OptionFlags options;
 };
 
 void add_study_common(CLI::App* cmd, StudyArgs& args) {
   cmd->add_option("--out", args.out_dir, "output folder (replaced if it holds an earlier result)")
       ->required();
-  cmd->add_option("--samples", args.samples, "time samples on [0, T] of every optimisation")
-      ->check(CLI::Range(2, 1000000))
-      ->capture_default_str();
-  cmd->add_option("--max-iter", args.max_iterations, "Ipopt iteration limit of every run")
-      ->check(CLI::Range(1, 100000))
-      ->capture_default_str();
+  args.options.add(cmd, {"samples", "max_iterations"});
   cmd->add_flag("--quiet,-q", args.quiet, "print nothing on success");
 }
 
 OptimizeOptions study_optimize_options(const StudyArgs& args) {
-  OptimizeOptions o;
+  OptimizeOptions o = args.options.values().optimize_options();
   // The studies reproduce the paper's protocol at its resolution (knots at the keyframes).
   o.automatic_resolution = false;
-  o.nlp.samples = args.samples;
-  o.solver.max_iterations = args.max_iterations;
   return o;
 }
 
