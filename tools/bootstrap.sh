@@ -15,7 +15,8 @@ cd "$root"
 packages=(build-essential cmake pkg-config clang-format
           libeigen3-dev coinor-libipopt-dev libopenblas0-serial nlohmann-json3-dev libcli11-dev
           libgtest-dev libbenchmark-dev
-          libvtk9-qt-dev libvtk9-dev qtbase5-dev xvfb xauth libgl1-mesa-dri ffmpeg)
+          libvtk9-qt-dev libvtk9-dev qtbase5-dev xvfb xauth libgl1-mesa-dri ffmpeg
+          slurm-wlm munge parallel)
 
 missing=()
 for p in "${packages[@]}"; do

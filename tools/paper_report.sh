@@ -21,6 +21,15 @@ bin="${SALTUS_BIN:-$root/build/release/bin}"
 
 "$bin/saltus" paper "$root/examples/motions" --out "$out" "$@"
 
+# A shard or a Slurm script is not the report yet: its figures come after `saltus study merge`.
+for arg in "$@"; do
+  case "$arg" in
+    --shard|--shard=*|--emit-slurm|--emit-slurm=*)
+      echo "no figures yet: merge the shards (saltus study merge), then saltus-gui --export-figures REPORT/figures REPORT/M1 ..." >&2
+      exit 0 ;;
+  esac
+done
+
 if [ ! -x "$bin/saltus-gui" ]; then
   echo "saltus-gui not built: $out/report.md has no figures" >&2
   exit 0

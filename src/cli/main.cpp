@@ -19,14 +19,11 @@
 #include "saltus/evaluation/force_metrics.h"
 #include "saltus/evaluation/simulate.h"
 #include "saltus/formats/capture_files.h"
-#include "saltus/formats/convergence_files.h"
-#include "saltus/formats/mass_files.h"
 #include "saltus/formats/motion_file.h"
-#include "saltus/formats/paper_report_files.h"
 #include "saltus/formats/result_json.h"
 #include "saltus/motion/motion.h"
 #include "saltus/optim/optimize.h"
-#include "saltus/studies/mass_study.h"
+#include "study_verbs.h"
 
 namespace {
 
@@ -226,177 +223,6 @@ int run_optimize(const CommonArgs& args) {
   return result.solve.solved ? 0 : kExitNotSolved;
 }
 
-/// Settings shared by the study verbs and the report: the time grid and the iteration limit of
-/// every optimisation they run (option table).
-struct StudyArgs {
-  std::string out_dir;
-  bool quiet = false;
-  saltus::cli::OptionFlags options;
-};
-
-void add_study_common(CLI::App* cmd, StudyArgs& args) {
-  cmd->add_option("--out", args.out_dir, "output folder (replaced if it holds an earlier result)")
-      ->required();
-  args.options.add(cmd, {"samples", "max_iterations"});
-  cmd->add_flag("--quiet,-q", args.quiet, "print nothing on success");
-}
-
-saltus::OptimizeOptions study_optimize_options(const StudyArgs& args) {
-  saltus::OptimizeOptions o = args.options.values().optimize_options();
-  // The studies reproduce the paper's protocol at its resolution (knots at the keyframes).
-  o.automatic_resolution = false;
-  return o;
-}
-
-struct ConvergenceArgs {
-  StudyArgs common;
-  std::vector<std::string> motions;
-  std::vector<double> epsilons{10, 50, 100, 500};
-  std::vector<double> mass_errors_percent{-20, -10, 0, 10, 20};
-  std::vector<std::string> mass_segments{"all"};
-  std::vector<double> timing_errors{0, 0.05, 0.1};
-  unsigned seed = 1;
-};
-
-void add_convergence(CLI::App* cmd, ConvergenceArgs& args) {
-  cmd->add_option("MOTIONS", args.motions, "motion files (*.motion.json)")->required();
-  add_study_common(cmd, args.common);
-  cmd->add_option("--epsilons", args.epsilons, "strict model's bounds to try, N or N·m")
-      ->delimiter(',')
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
-  cmd->add_option("--mass-errors", args.mass_errors_percent,
-                  "mass and inertia errors to try, percent (-20 = 20 % too small)")
-      ->delimiter(',')
-      ->check(CLI::Range(-90.0, 1000.0))
-      ->capture_default_str();
-  cmd->add_option("--mass-segments", args.mass_segments,
-                  "where the mass error goes: 'all' segments and/or segment names (thigh_r, ...)")
-      ->delimiter(',')
-      ->capture_default_str();
-  cmd->add_option("--timing-errors", args.timing_errors,
-                  "keyframe-time errors to try, s (interior times moved by ±the amount)")
-      ->delimiter(',')
-      ->check(CLI::Range(0.0, 1.0))
-      ->capture_default_str();
-  cmd->add_option("--seed", args.seed, "seed of the timing errors' signs")->capture_default_str();
-}
-
-int run_convergence(const ConvergenceArgs& args) {
-  std::vector<saltus::LabelledMotion> motions;
-  for (const std::string& path : args.motions)
-    motions.push_back({saltus::motion_label(path), saltus::load_motion_file(path)});
-  saltus::ConvergenceStudyOptions options;
-  options.optimize = study_optimize_options(args.common);
-  options.epsilons = args.epsilons;
-  options.mass_errors.clear();
-  for (double percent : args.mass_errors_percent)
-    options.mass_errors.push_back(percent / 100.0);
-  options.mass_segments = args.mass_segments;
-  for (const std::string& segment : options.mass_segments)
-    for (const saltus::LabelledMotion& m : motions)
-      if (segment != "all" && m.file.model.segment_index(segment) < 0)
-        throw saltus::InputError(
-            m.file.path, "",
-            "--mass-segments: model " + m.file.model.name + " has no segment '" + segment + "'");
-  options.timing_errors = args.timing_errors;
-  options.seed = args.seed;
-  const bool quiet = args.common.quiet;
-  const auto outcomes = saltus::run_convergence_study(
-      motions, options, [quiet](int done, int total, const saltus::StudyOutcome& o) {
-        if (quiet) return;
-        std::fprintf(stderr,
-                     "  %3d/%d  %-8s %-14s mass %+4.0f%% (%s) timing ±%.2f s: %s, %d it, %.3g N\n",
-                     done, total, o.study_case.motion.c_str(),
-                     saltus::formulation_label(o.study_case).c_str(), 100 * o.study_case.mass_error,
-                     o.study_case.mass_segment.c_str(), o.study_case.timing_error_s,
-                     o.status.c_str(), o.iterations, o.avg_force_after);
-      });
-  saltus::write_convergence_outputs(args.common.out_dir, outcomes, options);
-  if (!quiet) {
-    std::printf(
-        "saltus study convergence: %zu runs\n\n%s\n  wrote %s/{result.json, "
-        "convergence.csv, convergence.md}\n",
-        outcomes.size(), saltus::convergence_markdown(outcomes).c_str(),
-        absolute(args.common.out_dir).c_str());
-  }
-  return 0;
-}
-
-struct MassArgs {
-  StudyArgs common;
-  std::string motion;
-  std::vector<std::string> scaled_segments{"thigh_l", "thigh_r"};
-  double factor = 1.5;
-  std::vector<std::string> load_segments{"thigh_r", "upper_arm_r"};
-};
-
-void add_mass(CLI::App* cmd, MassArgs& args) {
-  cmd->add_option("MOTION", args.motion, "motion file (*.motion.json)")->required();
-  add_study_common(cmd, args.common);
-  cmd->add_option("--scale", args.scaled_segments, "segments whose mass and inertia are scaled")
-      ->delimiter(',')
-      ->capture_default_str();
-  cmd->add_option("--factor", args.factor, "mass and inertia multiplier")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
-  cmd->add_option("--loads", args.load_segments, "segments whose joint loads are written")
-      ->delimiter(',')
-      ->capture_default_str();
-}
-
-int run_mass(const MassArgs& args) {
-  const saltus::MotionFile file = saltus::load_motion_file(args.motion);
-  saltus::MassStudyOptions options;
-  options.optimize = study_optimize_options(args.common);
-  options.scaled_segments = args.scaled_segments;
-  options.factor = args.factor;
-  options.load_segments = args.load_segments;
-  const saltus::MassStudyResult study = saltus::run_mass_study(file, options);
-  saltus::write_mass_outputs(args.common.out_dir, file, study, options);
-  if (!args.common.quiet)
-    std::printf(
-        "saltus study mass: %s\n\n%s\n  wrote %s/{result.json, mass.csv, mass.md, "
-        "model.json, model_scaled.json}\n",
-        file.motion.name.c_str(), saltus::mass_study_markdown(study).c_str(),
-        absolute(args.common.out_dir).c_str());
-  return 0;
-}
-
-struct PaperArgs {
-  StudyArgs common;
-  std::string motions_dir;
-  bool quick = false;
-};
-
-void add_paper(CLI::App* cmd, PaperArgs& args) {
-  cmd->add_option("MOTIONS_DIR", args.motions_dir,
-                  "folder with M1-…M7-….motion.json and dive-….motion.json (examples/motions)")
-      ->required();
-  add_study_common(cmd, args.common);
-  cmd->add_flag("--quick", args.quick,
-                "reduced settings: no --knots-per-interval 3 runs, a small convergence study");
-}
-
-int run_paper(const PaperArgs& args) {
-  saltus::PaperReportOptions options;
-  options.motions_dir = args.motions_dir;
-  options.quick = args.quick;
-  options.optimize = study_optimize_options(args.common);
-  const bool quiet = args.common.quiet;
-  options.log = [quiet](const std::string& line) {
-    if (!quiet) std::fprintf(stderr, "  %s\n", line.c_str());
-  };
-  saltus::write_paper_report(args.common.out_dir, options);
-  if (!quiet)
-    std::printf(
-        "saltus paper: wrote %s/report.md (figures: saltus-gui --export-figures %s/figures "
-        "%s/M1 %s/M7 ...)\n",
-        absolute(args.common.out_dir).c_str(), absolute(args.common.out_dir).c_str(),
-        absolute(args.common.out_dir).c_str(), absolute(args.common.out_dir).c_str());
-  return 0;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -430,28 +256,7 @@ int main(int argc, char** argv) {
       "converge (results are still written)");
   add_common(optimize, optimize_args, saltus::OptionUse::kOptimization);
 
-  CLI::App* study = app.add_subcommand(
-      "study", "The paper's experiments: the convergence study (§3.4) and the mass study (§6.1)");
-  study->require_subcommand(1);
-  ConvergenceArgs convergence_args;
-  CLI::App* convergence = study->add_subcommand(
-      "convergence",
-      "Relaxed vs strict model (several ε) under mass-parameter and keyframe-timing errors: "
-      "success rate, iterations, time and residual; writes convergence.csv and convergence.md");
-  add_convergence(convergence, convergence_args);
-  MassArgs mass_args;
-  CLI::App* mass = study->add_subcommand(
-      "mass",
-      "The motion optimised with the model's mass parameters and with some segments scaled "
-      "(default: thighs +50 %); joint loads over time in mass.csv, a summary in mass.md");
-  add_mass(mass, mass_args);
-
-  PaperArgs paper_args;
-  CLI::App* paper = app.add_subcommand(
-      "paper",
-      "Reproduce the paper's experiments on M1-M7 and the dive: Table 1 next to the paper's, the "
-      "mass and convergence studies, all in report.md");
-  add_paper(paper, paper_args);
+  saltus::cli::StudyVerbs study_verbs(app, argc, argv);  // study convergence|mass|merge, paper
 
   saltus_cli::CaptureVerbs capture_verbs;
   saltus_cli::add_capture_verbs(app, capture_verbs);
@@ -473,9 +278,7 @@ int main(int argc, char** argv) {
     if (evaluate->parsed()) return run_evaluate(evaluate_args);
     if (simulate->parsed()) return run_simulate(simulate_args);
     if (optimize->parsed()) return run_optimize(optimize_args);
-    if (convergence->parsed()) return run_convergence(convergence_args);
-    if (mass->parsed()) return run_mass(mass_args);
-    if (paper->parsed()) return run_paper(paper_args);
+    if (const auto status = study_verbs.run()) return *status;
     if (auto status = saltus_cli::run_capture_verbs(capture_verbs)) return *status;
   } catch (const saltus::InputError& e) {
     std::fprintf(stderr, "saltus: error: %s\n", e.what());

@@ -2,10 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <functional>
+#include <limits>
 #include <map>
+#include <memory>
 #include <sstream>
 
+#include "saltus/base/input_error.h"
+#include "saltus/base/json_reader.h"
 #include "saltus/base/text_format.h"
 #include "saltus/formats/output_folder.h"
 
@@ -82,6 +87,27 @@ nlohmann::json outcome_json(const StudyOutcome& o) {
           {"avg_force_after_N", o.avg_force_after}};
 }
 
+bool finished(const StudyOutcome& o) {
+  return o.status != "crashed" && o.status != "timed_out";
+}
+
+/// The convergence part of a study definition (see convergence_definition).
+struct DefinitionSettings {
+  unsigned seed = 1;
+  int samples = 0, knots_per_interval = 1, max_iterations = 0;
+};
+
+DefinitionSettings read_settings(const nlohmann::json& definition) {
+  const JsonNode root(definition, "study.json", "/definition");
+  DefinitionSettings s;
+  s.seed = static_cast<unsigned>(root.at("seed").as_int());
+  const JsonNode optimize = root.at("optimize");
+  s.samples = optimize.at("nlp").at("samples").as_int();
+  s.knots_per_interval = optimize.at("nlp").at("knots_per_interval").as_int();
+  s.max_iterations = optimize.at("solver").at("max_iterations").as_int();
+  return s;
+}
+
 }  // namespace
 
 std::string convergence_markdown(const std::vector<StudyOutcome>& outcomes) {
@@ -102,6 +128,7 @@ std::string convergence_markdown(const std::vector<StudyOutcome>& outcomes) {
     for (const StudyOutcome& o : outcomes) {
       if (formulation_label(o.study_case) != label) continue;
       ++total;
+      if (!finished(o)) continue;  // listed below the table
       iterations.push_back(o.iterations);
       seconds.push_back(o.seconds);
       force.push_back(o.avg_force_after);
@@ -116,13 +143,37 @@ std::string convergence_markdown(const std::vector<StudyOutcome>& outcomes) {
         << format_number("%.2f", median(seconds)) << " | " << format_number("%.3g", median(force))
         << " | " << (solved ? format_number("%.3g", worst) : std::string("–")) << " |\n";
   }
+  // Cases whose process crashed or ran out of time count as unsolved; their figures are not in
+  // the medians.
+  std::vector<std::string> unfinished;
+  for (const StudyOutcome& o : outcomes)
+    if (!finished(o)) unfinished.push_back(study_case_label(o.study_case) + " (" + o.status + ")");
+  if (!unfinished.empty()) {
+    out << "\n"
+        << unfinished.size()
+        << " cases did not finish (their process crashed or ran out of time; see "
+           "cases/): ";
+    for (std::size_t i = 0; i < unfinished.size(); ++i)
+      out << (i ? "; " : "") << unfinished[i];
+    out << ".\n";
+  }
+  // Strict runs given up at a feasibility checkpoint (SolverOptions::feasibility_checkpoints).
+  int stopped = 0;
+  for (const StudyOutcome& o : outcomes)
+    stopped += o.status == "stopped_infeasible" ? 1 : 0;
+  if (stopped > 0)
+    out << "\n"
+        << stopped
+        << " strict runs were stopped early (status stopped_infeasible): by a checkpoint of "
+           "result.json's strict_checkpoints ([iterations, violation]) their constraint "
+           "violation had not once come below its bound. They count as not solved.\n";
   // Cases whose interpolation could not meet the keyframes on the requested knots ran refined.
   std::map<std::string, int> refined;
   int requested = std::numeric_limits<int>::max();
   for (const StudyOutcome& o : outcomes)
-    requested = std::min(requested, o.knots_per_interval);
+    if (finished(o)) requested = std::min(requested, o.knots_per_interval);
   for (const StudyOutcome& o : outcomes)
-    if (o.knots_per_interval > requested)
+    if (finished(o) && o.knots_per_interval > requested)
       ++refined[o.study_case.motion + format_number(" at ±%g s", o.study_case.timing_error_s)];
   if (!refined.empty()) {
     out << "\nRun with refined knots (K > " << requested
@@ -164,27 +215,102 @@ std::string convergence_csv(const std::vector<StudyOutcome>& outcomes) {
   return out.str();
 }
 
-nlohmann::json write_convergence_outputs(const std::string& out_dir,
-                                         const std::vector<StudyOutcome>& outcomes,
-                                         const ConvergenceStudyOptions& options) {
-  OutputFolder folder(out_dir);
+nlohmann::json convergence_definition(const std::vector<LabelledMotion>& motions,
+                                      const ConvergenceStudyOptions& options) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const LabelledMotion& m : motions)
+    list.push_back({{"label", m.label}, {"digest", motion_digest(m.file)}});
+  return {{"motions", list},
+          {"epsilons", options.epsilons},
+          {"mass_errors", options.mass_errors},
+          {"mass_segments", options.mass_segments},
+          {"timing_errors", options.timing_errors},
+          {"seed", options.seed},
+          {"strict_checkpoints", checkpoints_json(options.strict_checkpoints)},
+          {"optimize", optimize_options_json(options.optimize)}};
+}
+
+CaseRecord convergence_case_record(int index, const StudyOutcome& outcome,
+                                   const std::string& failure) {
+  CaseRecord r;
+  r.index = index;
+  r.name = study_case_label(outcome.study_case);
+  r.kind = CaseKind::kConvergence;
+  r.role = "convergence";
+  r.motion = outcome.study_case.motion;
+  r.failure = failure;
+  r.convergence = outcome;
+  return r;
+}
+
+StudyOutcome unfinished_study_outcome(const StudyCase& study_case, const WorkerExit& exit) {
+  return unfinished_outcome(
+      study_case, exit.kind == WorkerExit::Kind::kTimedOut ? "timed_out" : "crashed", exit.seconds);
+}
+
+StudyJob convergence_study_job(const std::vector<LabelledMotion>& motions,
+                               const ConvergenceStudyOptions& options) {
+  auto shared_motions = std::make_shared<const std::vector<LabelledMotion>>(motions);
+  auto cases =
+      std::make_shared<const std::vector<StudyCase>>(convergence_study_cases(motions, options));
+  StudyJob job;
+  job.study = "convergence";
+  job.definition = convergence_definition(motions, options);
+  for (const StudyCase& c : *cases)
+    job.case_names.push_back(study_case_label(c));
+  job.run_case = [shared_motions, cases, options](int index, const std::string&) {
+    const StudyCase& c = (*cases)[index];
+    const auto motion = std::find_if(shared_motions->begin(), shared_motions->end(),
+                                     [&](const LabelledMotion& m) { return m.label == c.motion; });
+    return convergence_case_record(index, run_study_case(*motion, c, options), "");
+  };
+  job.unfinished_case = [cases](int index, const WorkerExit& exit) {
+    return convergence_case_record(index, unfinished_study_outcome((*cases)[index], exit),
+                                   exit.describe());
+  };
+  return job;
+}
+
+nlohmann::json write_convergence_files(const std::string& dir,
+                                       const std::vector<StudyOutcome>& outcomes,
+                                       const nlohmann::json& definition) {
+  const DefinitionSettings settings = read_settings(definition);
+  std::filesystem::create_directories(dir);
   nlohmann::json result;
   result["format"] = "saltus-study/1";
   result["study"] = "convergence";
   result["status"] = "completed";
-  result["seed"] = options.seed;
-  result["samples"] = options.optimize.nlp.samples;
-  result["knots_per_interval"] = options.optimize.nlp.knots_per_interval;
-  result["max_iterations"] = options.optimize.solver.max_iterations;
+  result["seed"] = settings.seed;
+  result["samples"] = settings.samples;
+  result["knots_per_interval"] = settings.knots_per_interval;
+  result["max_iterations"] = settings.max_iterations;
+  result["strict_checkpoints"] =
+      JsonNode(definition, "study.json", "/definition").at("strict_checkpoints").value();
+  int failed = 0;
   result["cases"] = nlohmann::json::array();
-  for (const StudyOutcome& o : outcomes)
+  for (const StudyOutcome& o : outcomes) {
     result["cases"].push_back(outcome_json(o));
-  write_text(folder.file("convergence.csv"), convergence_csv(outcomes));
-  write_text(folder.file("convergence.md"),
+    failed += finished(o) ? 0 : 1;
+  }
+  result["failed"] = failed;
+  const std::filesystem::path folder(dir);
+  write_text((folder / "convergence.csv").string(), convergence_csv(outcomes));
+  write_text((folder / "convergence.md").string(),
              "# Convergence study\n\n" + convergence_markdown(outcomes));
-  write_text(folder.file("result.json"), result.dump(2) + "\n");
-  folder.commit();
+  write_text((folder / "result.json").string(), result.dump(2) + "\n");
   return result;
+}
+
+nlohmann::json write_convergence_study_outputs(const OutputFolder& folder,
+                                               const nlohmann::json& definition,
+                                               const std::vector<CaseRecord>& records) {
+  std::vector<StudyOutcome> outcomes;
+  for (const CaseRecord& r : records) {
+    if (r.kind != CaseKind::kConvergence)
+      throw InputError(case_record_name(r.index), "/kind", "not a case of a convergence study");
+    outcomes.push_back(r.convergence);
+  }
+  return write_convergence_files(folder.file(""), outcomes, definition);
 }
 
 }  // namespace saltus

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <memory>
 #include <sstream>
 
 #include "saltus/base/input_error.h"
+#include "saltus/base/json_reader.h"
 #include "saltus/base/text_format.h"
 #include "saltus/formats/convergence_files.h"
 #include "saltus/formats/mass_files.h"
@@ -17,26 +19,34 @@ namespace saltus {
 
 namespace {
 
-std::string table1_markdown(const std::vector<PaperSkillRun>& rows) {
+std::string number_or_dash(const RunSummary& r, const char* pattern, double value) {
+  return r.completed() ? format_number(pattern, value) : std::string("–");
+}
+
+std::string table1_markdown(const std::vector<PaperSkillRow>& rows) {
   std::ostringstream out;
   out << "| skill | keyframes | variables | constraints | J before | J after | avg root force "
          "before (N) | avg root force after (N) | iterations | time (s) | status | after, K = 3 "
          "(N) |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const PaperSkillRun& r : rows) {
-    const OptimizationResult& o = r.paper_resolution;
-    out << "| " << r.motion.label << " | " << r.motion.file.motion.keyframes.size() << " | "
-        << o.variables << " | " << o.constraints << " | "
-        << format_number("%.3g", o.before.metrics.objective) << " | "
-        << format_number("%.3g", o.after.metrics.objective) << " | "
-        << format_number("%.3g", o.before.metrics.avg_root_force) << " | "
-        << format_number("%.3g", o.after.metrics.avg_root_force) << " | " << o.solve.iterations
-        << " | " << format_number("%.2f", o.solve.seconds) << " | " << o.solve.status << " | "
-        << (r.refined ? format_number("%.3g", r.refined->after.metrics.avg_root_force) + " (" +
-                            std::to_string(r.refined->solve.iterations) + " it., " +
-                            format_number("%.1f", r.refined->solve.seconds) + " s, " +
-                            r.refined->solve.status + ")"
-                      : std::string("–"))
-        << " |\n";
+  for (const PaperSkillRow& row : rows) {
+    const RunSummary& o = row.paper_resolution;
+    out << "| " << row.label << " | " << o.keyframes << " | "
+        << (o.completed() ? std::to_string(o.variables) : "–") << " | "
+        << (o.completed() ? std::to_string(o.constraints) : "–") << " | "
+        << number_or_dash(o, "%.3g", o.objective_before) << " | "
+        << number_or_dash(o, "%.3g", o.objective_after) << " | "
+        << number_or_dash(o, "%.3g", o.avg_force_before) << " | "
+        << number_or_dash(o, "%.3g", o.avg_force_after) << " | "
+        << (o.completed() ? std::to_string(o.iterations) : "–") << " | "
+        << number_or_dash(o, "%.2f", o.seconds) << " | " << o.status << " | ";
+    if (!row.refined)
+      out << "–";
+    else if (!row.refined->completed())
+      out << row.refined->status;
+    else
+      out << format_number("%.3g", row.refined->avg_force_after) << " (" << row.refined->iterations
+          << " it., " << row.refined->status << ")";
+    out << " |\n";
   }
   out << "\nThe paper's Table 1 (SQP, at most 80 iterations, 78 minutes per motion on average):\n\n"
          "| skill | keyframes | variables | constraints | J before | J after | avg root force "
@@ -49,28 +59,124 @@ std::string table1_markdown(const std::vector<PaperSkillRun>& rows) {
         << " |\n";
   out << "\nAverage root force after optimisation, ours (K = 1, the paper's resolution) against "
          "the paper's:\n\n| skill | ours (N) | paper (N) | ours below paper |\n|---|---|---|---|\n";
-  for (const PaperSkillRun& r : rows) {
-    const PaperTableRow* p = paper_table1(r.motion.label);
+  for (const PaperSkillRow& row : rows) {
+    const PaperTableRow* p = paper_table1(row.label);
     if (!p) continue;
-    const double ours = r.paper_resolution.after.metrics.avg_root_force;
-    out << "| " << r.motion.label << " | " << format_number("%.3g", ours) << " | "
-        << format_number("%.3g", p->force_after) << " | " << (ours < p->force_after ? "yes" : "NO")
+    const RunSummary& o = row.paper_resolution;
+    const double ours = o.avg_force_after;
+    out << "| " << row.label << " | " << number_or_dash(o, "%.3g", ours) << " | "
+        << format_number("%.3g", p->force_after) << " | "
+        << (!o.completed()          ? "–"
+            : ours < p->force_after ? "yes"
+                                    : "NO")
         << " |\n";
   }
   return out.str();
 }
 
 /// Figs. 4 and 5: M1's and M7's root force before and after, where those skills were run.
-std::string root_force_figures(const std::vector<PaperSkillRun>& rows) {
+std::string root_force_figures(const std::vector<PaperSkillRow>& rows) {
   std::ostringstream out;
-  for (const PaperSkillRun& run : rows) {
-    const std::string& label = run.motion.label;
+  for (const PaperSkillRow& row : rows) {
+    const std::string& label = row.label;
     if (label != "M1" && label != "M7") continue;
     out << "![" << label << " root force before and after](figures/" << label
         << "_root_force.png)\n\nThe curves are in `" << label << "/trajectory_before.csv` and `"
         << label << "/trajectory_after.csv` (columns root_fx … root_mz).\n\n";
   }
   return out.str();
+}
+
+std::string dive_markdown(const std::vector<PaperDiveRow>& dives) {
+  std::ostringstream out;
+  for (const PaperDiveRow& dive : dives) {
+    const RunSummary& r = dive.run;
+    out << "**" << r.motion_name << "** (`" << dive.label << "/`): " << r.status;
+    if (!r.completed()) {
+      out << ".\n\n";
+      continue;
+    }
+    out << " after " << r.iterations << " iterations; average root force "
+        << format_number("%.3g", r.avg_force_before) << " N → "
+        << format_number("%.3g", r.avg_force_after) << " N.\n\n"
+        << "| keyframe | time given (s) | time optimised (s) |\n|---|---|---|\n";
+    for (std::size_t i = 0; i < r.keyframe_times_before.size(); ++i)
+      out << "| " << i + 1 << " | " << format_number("%.3f", r.keyframe_times_before[i]) << " | "
+          << format_number("%.3f", r.keyframe_times_after[i]) << " |\n";
+    out << "\n![Keyframe times before and after (Fig. 9)](figures/" << dive.label
+        << "_keyframe_times.png)\n\n";
+  }
+  return out.str();
+}
+
+/// The settings the report states, from its definition.
+struct ReportSettings {
+  bool quick = false;
+  int samples = 0;
+  int threads = 0;
+};
+
+ReportSettings read_report_settings(const nlohmann::json& definition) {
+  const JsonNode root(definition, "study.json", "/definition");
+  ReportSettings s;
+  if (!root.at("quick").value().is_boolean()) root.at("quick").fail("expected true or false");
+  s.quick = root.at("quick").value().get<bool>();
+  s.samples = root.at("optimize").at("nlp").at("samples").as_int();
+  s.threads = root.at("optimize").at("nlp").at("threads").as_int();
+  return s;
+}
+
+/// The report's runs back from their records (in case order).
+PaperReport assemble_report(const std::vector<CaseRecord>& records) {
+  PaperReport report;
+  report.mass_markdown = "No M7 among the motions.\n";
+  for (const CaseRecord& r : records) {
+    if (r.role == "skill") {
+      report.skills.push_back({r.motion, r.run, std::nullopt});
+    } else if (r.role == "refined_skill") {
+      const auto row = std::find_if(report.skills.begin(), report.skills.end(),
+                                    [&](const PaperSkillRow& s) { return s.label == r.motion; });
+      if (row == report.skills.end())
+        throw InputError(case_record_name(r.index), "/motion",
+                         "a K = 3 run of " + r.motion + " without its K = 1 run");
+      row->refined = r.run;
+    } else if (r.role == "dive") {
+      report.dives.push_back({r.motion, r.run});
+    } else if (r.role == "mass") {
+      report.has_mass = r.finished();
+      report.mass_markdown =
+          r.finished() ? r.mass_markdown : "The mass study did not finish (" + r.failure + ").\n";
+    } else if (r.role == "convergence") {
+      report.convergence.push_back(r.convergence);
+    } else {
+      throw InputError(case_record_name(r.index), "/role",
+                       "\"" + r.role + "\" is not a part of the report");
+    }
+  }
+  return report;
+}
+
+const char* role_of(PaperCaseKind kind) {
+  switch (kind) {
+    case PaperCaseKind::kSkill:
+      return "skill";
+    case PaperCaseKind::kRefinedSkill:
+      return "refined_skill";
+    case PaperCaseKind::kDive:
+      return "dive";
+    case PaperCaseKind::kMass:
+      return "mass";
+    case PaperCaseKind::kConvergence:
+      return "convergence";
+  }
+  return "";
+}
+
+nlohmann::json motion_list(const std::vector<LabelledMotion>& motions) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const LabelledMotion& m : motions)
+    list.push_back({{"label", m.label}, {"digest", motion_digest(m.file)}});
+  return list;
 }
 
 }  // namespace
@@ -101,44 +207,106 @@ PaperMotions load_paper_motions(const std::string& motions_dir) {
   return motions;
 }
 
-nlohmann::json write_paper_report(const std::string& out_dir, const PaperReportOptions& options) {
-  const PaperMotions motions = load_paper_motions(options.motions_dir);
-  OutputFolder folder(out_dir);
-  const PaperReport report = run_paper_report(motions.skills, motions.dives, options);
+StudyJob paper_report_job(const PaperReportOptions& options) {
+  const auto motions =
+      std::make_shared<const PaperMotions>(load_paper_motions(options.motions_dir));
+  const auto plan = std::make_shared<const PaperPlan>(
+      paper_report_plan(motions->skills, motions->dives, options));
+  StudyJob job;
+  job.study = "paper";
+  job.definition = {
+      {"skills", motion_list(motions->skills)},
+      {"dives", motion_list(motions->dives)},
+      {"quick", options.quick},
+      {"optimize", optimize_options_json(options.optimize)},
+      {"mass",
+       {{"scaled_segments", plan->mass.scaled_segments},
+        {"factor", plan->mass.factor},
+        {"load_segments", plan->mass.load_segments}}},
+      {"convergence", convergence_definition(plan->convergence_motions, plan->convergence)}};
+  for (const PaperCase& c : plan->cases)
+    job.case_names.push_back(paper_case_label(c));
+  auto find = [motions](const std::string& label) -> const LabelledMotion& {
+    for (const auto* list : {&motions->skills, &motions->dives})
+      for (const LabelledMotion& m : *list)
+        if (m.label == label) return m;
+    throw std::logic_error("no motion " + label);
+  };
+  auto base_record = [plan](int index) {
+    const PaperCase& c = plan->cases[index];
+    CaseRecord r;
+    r.index = index;
+    r.name = paper_case_label(c);
+    r.role = role_of(c.kind);
+    r.motion = c.motion;
+    r.kind = c.kind == PaperCaseKind::kMass          ? CaseKind::kMassStudy
+             : c.kind == PaperCaseKind::kConvergence ? CaseKind::kConvergence
+                                                     : CaseKind::kOptimization;
+    return r;
+  };
+  job.run_case = [plan, options, find, base_record](int index, const std::string& dir) {
+    const PaperCase& c = plan->cases[index];
+    CaseRecord r = base_record(index);
+    const LabelledMotion& motion = find(c.motion);
+    const std::filesystem::path folder(dir);
+    switch (c.kind) {
+      case PaperCaseKind::kSkill:
+      case PaperCaseKind::kRefinedSkill:
+      case PaperCaseKind::kDive: {
+        const OptimizeOptions run_options = paper_run_options(c, options);
+        const OptimizationResult result =
+            optimize_motion(motion.file.motion, motion.file.model, run_options);
+        if (c.kind != PaperCaseKind::kRefinedSkill) {
+          r.folder = c.motion;
+          write_optimization_outputs((folder / r.folder).string(), motion.file, result,
+                                     run_options);
+        }
+        r.run = summarize_run(motion.file.motion, result);
+        break;
+      }
+      case PaperCaseKind::kMass: {
+        const MassStudyResult study = run_mass_study(motion.file, plan->mass);
+        r.folder = "mass";
+        write_mass_outputs((folder / r.folder).string(), motion.file, study, plan->mass);
+        r.mass_markdown = mass_study_markdown(study);
+        break;
+      }
+      case PaperCaseKind::kConvergence:
+        r.convergence = run_study_case(motion, c.convergence, plan->convergence);
+        break;
+    }
+    return r;
+  };
+  job.unfinished_case = [plan, find, base_record](int index, const WorkerExit& exit) {
+    const PaperCase& c = plan->cases[index];
+    CaseRecord r = base_record(index);
+    r.failure = exit.describe();
+    const std::string status = exit.kind == WorkerExit::Kind::kTimedOut ? "timed_out" : "crashed";
+    if (r.kind == CaseKind::kConvergence) {
+      r.convergence = unfinished_outcome(c.convergence, status, exit.seconds);
+    } else if (r.kind == CaseKind::kOptimization) {
+      const Motion& m = find(c.motion).file.motion;
+      r.run.motion_name = m.name;
+      r.run.keyframes = static_cast<int>(m.keyframes.size());
+      r.run.status = status;
+      r.run.seconds = exit.seconds;
+    }
+    return r;
+  };
+  return job;
+}
 
-  for (const PaperSkillRun& run : report.skills)
-    write_optimization_outputs(folder.file(run.motion.label), run.motion.file, run.paper_resolution,
-                               run.options);
+nlohmann::json write_paper_report_outputs(const OutputFolder& folder,
+                                          const nlohmann::json& definition,
+                                          const std::vector<CaseRecord>& records) {
+  const ReportSettings settings = read_report_settings(definition);
+  const PaperReport report = assemble_report(records);
+  write_convergence_files(folder.file("convergence"), report.convergence,
+                          definition.at("convergence"));
 
-  // The 5 m dive (§6.2): keyframe times before and after (Fig. 9).
-  std::ostringstream dive_md;
-  for (const PaperDiveRun& run : report.dives) {
-    const std::string& label = run.motion.label;
-    const OptimizationResult& r = run.result;
-    write_optimization_outputs(folder.file(label), run.motion.file, r, run.options);
-    dive_md << "**" << run.motion.file.motion.name << "** (`" << label << "/`): " << r.solve.status
-            << " after " << r.solve.iterations << " iterations, "
-            << format_number("%.2f", r.solve.seconds) << " s; average root force "
-            << format_number("%.3g", r.before.metrics.avg_root_force) << " N → "
-            << format_number("%.3g", r.after.metrics.avg_root_force) << " N.\n\n"
-            << "| keyframe | time given (s) | time optimised (s) |\n|---|---|---|\n";
-    for (std::size_t i = 0; i < r.before.keyframe_times.size(); ++i)
-      dive_md << "| " << i + 1 << " | " << format_number("%.3f", r.before.keyframe_times[i])
-              << " | " << format_number("%.3f", r.after.keyframe_times[i]) << " |\n";
-    dive_md << "\n![Keyframe times before and after (Fig. 9)](figures/" << label
-            << "_keyframe_times.png)\n\n";
-  }
-
-  std::string mass_md = "No M7 in " + options.motions_dir + ".\n";
-  if (report.mass) {
-    const auto m7 = std::find_if(motions.skills.begin(), motions.skills.end(),
-                                 [](const LabelledMotion& m) { return m.label == "M7"; });
-    write_mass_outputs(folder.file("mass"), m7->file, *report.mass, report.mass_options);
-    mass_md = mass_study_markdown(*report.mass) +
-              "\n![Joint loads, Table 2 against thigh +50 % (Fig. 8)](figures/mass_loads.png)\n";
-  }
-  write_convergence_outputs(folder.file("convergence"), report.convergence,
-                            report.convergence_options);
+  std::string mass_md = report.mass_markdown;
+  if (report.has_mass)
+    mass_md += "\n![Joint loads, Table 2 against thigh +50 % (Fig. 8)](figures/mass_loads.png)\n";
 
   std::ostringstream md;
   md << "# Saltus: the paper's experiments, reproduced\n\n"
@@ -149,21 +317,21 @@ nlohmann::json write_paper_report(const std::string& out_dir, const PaperReportO
         "counts, take-off state (CoM (0, 1, 0) m, velocity (0.15, 10, 0.15) m/s), flight time "
         "(2.04 s) and tolerances (ε1 = 0.25 m, ε2 = 0.05). The comparison is of method and "
         "magnitude, not of identical inputs.\n\n"
-     << "Settings: relaxed model, " << options.optimize.nlp.samples
+     << "Settings: relaxed model, " << settings.samples
      << " samples, timing optimised, Ipopt with exact first derivatives and a Gauss-Newton "
         "Hessian; the root wrench and its derivatives on "
-     << (options.optimize.nlp.threads > 0
-             ? std::to_string(options.optimize.nlp.threads) + " threads"
-             : std::string("one thread per hardware thread (at most 4)"))
-     << ", Ipopt's linear solver (MUMPS) on one."
-     << (options.quick ? " **Quick run** (reduced convergence study, no K = 3 runs)." : "")
+     << (settings.threads > 0 ? std::to_string(settings.threads) + " threads"
+                              : std::string("one thread per hardware thread (at most 4)"))
+     << ", Ipopt's linear solver (MUMPS) on one; every run in a process of its own."
+     << (settings.quick ? " **Quick run** (reduced convergence study, no K = 3 runs)." : "")
      << "\n\n## Table 1\n\n"
      << table1_markdown(report.skills) << "\n## Root force before and after (Figs. 4 and 5)\n\n"
      << root_force_figures(report.skills)
      << "## Mass parameters (§6.1, Fig. 8): M7 with Table 2 against thigh mass and inertia "
         "+50 %\n\n"
      << mass_md << "\n## Designing a 5 m dive by optimising keyframe times (§6.2, Fig. 9)\n\n"
-     << (report.dives.empty() ? std::string("No dive motion in the folder.\n\n") : dive_md.str())
+     << (report.dives.empty() ? std::string("No dive motion in the folder.\n\n")
+                              : dive_markdown(report.dives))
      << "## Convergence study (§3.4)\n\n"
      << convergence_markdown(report.convergence)
      << "\nEvery case is in `convergence/convergence.csv`.\n";
@@ -172,38 +340,42 @@ nlohmann::json write_paper_report(const std::string& out_dir, const PaperReportO
   nlohmann::json result;
   result["format"] = "saltus-report/1";
   result["status"] = "completed";
-  result["quick"] = options.quick;
+  result["quick"] = settings.quick;
   result["table1"] = nlohmann::json::array();
-  for (const PaperSkillRun& r : report.skills) {
-    const OptimizationResult& o = r.paper_resolution;
-    nlohmann::json row = {{"skill", r.motion.label},
-                          {"keyframes", r.motion.file.motion.keyframes.size()},
-                          {"variables", o.variables},
-                          {"constraints", o.constraints},
-                          {"status", o.solve.status},
-                          {"iterations", o.solve.iterations},
-                          {"seconds", o.solve.seconds},
-                          {"objective_before", o.before.metrics.objective},
-                          {"objective_after", o.after.metrics.objective},
-                          {"avg_force_before_N", o.before.metrics.avg_root_force},
-                          {"avg_force_after_N", o.after.metrics.avg_root_force}};
-    row["avg_force_after_K3_N"] = r.refined
-                                      ? nlohmann::json(r.refined->after.metrics.avg_root_force)
-                                      : nlohmann::json(nullptr);
-    if (const PaperTableRow* p = paper_table1(r.motion.label))
-      row["paper_avg_force_after_N"] = p->force_after;
-    result["table1"].push_back(row);
+  auto number = [](const RunSummary& r, double value) {
+    return r.completed() ? nlohmann::json(value) : nlohmann::json(nullptr);
+  };
+  for (const PaperSkillRow& row : report.skills) {
+    const RunSummary& o = row.paper_resolution;
+    nlohmann::json j = {{"skill", row.label},
+                        {"keyframes", o.keyframes},
+                        {"variables", o.variables},
+                        {"constraints", o.constraints},
+                        {"status", o.status},
+                        {"iterations", o.iterations},
+                        {"seconds", o.seconds},
+                        {"objective_before", number(o, o.objective_before)},
+                        {"objective_after", number(o, o.objective_after)},
+                        {"avg_force_before_N", number(o, o.avg_force_before)},
+                        {"avg_force_after_N", number(o, o.avg_force_after)}};
+    j["avg_force_after_K3_N"] =
+        row.refined ? number(*row.refined, row.refined->avg_force_after) : nlohmann::json(nullptr);
+    if (const PaperTableRow* p = paper_table1(row.label))
+      j["paper_avg_force_after_N"] = p->force_after;
+    result["table1"].push_back(j);
   }
-  int solved = 0;
-  for (const StudyOutcome& o : report.convergence)
-    solved += o.solved && o.study_case.formulation == Formulation::kRelaxed ? 1 : 0;
-  int relaxed = 0;
-  for (const StudyOutcome& o : report.convergence)
-    relaxed += o.study_case.formulation == Formulation::kRelaxed ? 1 : 0;
+  int solved = 0, relaxed = 0, failed = 0;
+  for (const StudyOutcome& o : report.convergence) {
+    const bool is_relaxed = o.study_case.formulation == Formulation::kRelaxed;
+    relaxed += is_relaxed ? 1 : 0;
+    solved += is_relaxed && o.solved ? 1 : 0;
+  }
+  for (const CaseRecord& r : records)
+    failed += r.finished() ? 0 : 1;
   result["convergence_relaxed_solved"] = solved;
   result["convergence_relaxed_cases"] = relaxed;
+  result["failed_cases"] = failed;
   write_text(folder.file("result.json"), result.dump(2) + "\n");
-  folder.commit();
   return result;
 }
 

@@ -10,6 +10,8 @@
 #include <cmath>
 #include <limits>
 
+#include "saltus/base/text_format.h"
+
 namespace saltus {
 
 namespace {
@@ -18,10 +20,11 @@ using Ipopt::Index;
 using Ipopt::Number;
 
 /// The lowest-objective iterate whose constraints were met (to the acceptable violation), over
-/// every run of one solve.
+/// every run of one solve, and the smallest violation of any iterate.
 struct BestIterate {
   std::vector<double> x;
   double objective = std::numeric_limits<double>::infinity();
+  double smallest_violation = std::numeric_limits<double>::infinity();
   bool found() const { return !x.empty(); }
 };
 
@@ -44,6 +47,8 @@ class NlpAdapter : public Ipopt::TNLP {
 
   /// True when the run was stopped because it stalled (see SolverOptions::stall_iterations).
   bool stalled() const { return stalled_; }
+  /// The feasibility checkpoint the run missed (SolverOptions::feasibility_checkpoints), if any.
+  const FeasibilityCheckpoint* missed_checkpoint() const { return missed_; }
 
   bool get_nlp_info(Index& n, Index& m, Index& nnz_jac_g, Index& nnz_h_lag,
                     IndexStyleEnum& index_style) override {
@@ -129,6 +134,13 @@ class NlpAdapter : public Ipopt::TNLP {
       progress_(info);
     }
     if (cancel_ && cancel_->load()) return false;
+    best_.smallest_violation = std::min(best_.smallest_violation, static_cast<double>(inf_pr));
+    for (const FeasibilityCheckpoint& checkpoint : options_.feasibility_checkpoints)
+      if (report_.iterations >= checkpoint.iterations &&
+          !(best_.smallest_violation < checkpoint.violation)) {
+        missed_ = &checkpoint;
+        return false;
+      }
     // A restart from this run's own starting point would retrace the same path: only a best
     // iterate found during the run (iteration > 0) is worth restarting from.
     if (options_.stall_iterations > 0 && best_iteration_ > 0 &&
@@ -208,6 +220,7 @@ class NlpAdapter : public Ipopt::TNLP {
   int last_improvement_ = -1;  ///< last iteration below the best feasible objective
   int best_iteration_ = -1;    ///< this run's iteration that set best_, −1 if none did
   bool stalled_ = false;
+  const FeasibilityCheckpoint* missed_ = nullptr;
   std::chrono::steady_clock::time_point start_time_;
 };
 
@@ -290,6 +303,14 @@ SolveReport solve_with_ipopt(Nlp& nlp, const SolverOptions& options,
         nlp, options, progress, cancel, run == 0 ? nullptr : &restart_point, used, report, best);
     app->OptimizeTNLP(adapter);
     const bool budget_left = report.iterations < options.max_iterations;
+    if (const FeasibilityCheckpoint* missed = adapter->missed_checkpoint()) {
+      report.status = "stopped_infeasible";
+      report.ipopt_status = "stopped early: constraint violation never below " +
+                            format_number("%g", missed->violation) + " in " +
+                            std::to_string(missed->iterations) + " iterations";
+      report.solved = false;
+      break;
+    }
     if (!adapter->stalled() || !best.found() || run >= options.max_restarts || !budget_left) {
       // A stalled run ends as "user requested stop"; say what happened instead.
       if (adapter->stalled()) {

@@ -13,6 +13,12 @@
 
 namespace saltus {
 
+/// A point by which a run must have come near feasibility (SolverOptions::feasibility_checkpoints).
+struct FeasibilityCheckpoint {
+  int iterations = 0;      ///< checked once this many iterations have run (restarts included)
+  double violation = 0.0;  ///< the smallest constraint violation so far must be below this
+};
+
 struct SolverOptions {
   /// Ipopt's limit. M1 solves in ~30 iterations; tucked double somersaults keyframed at the
   /// paper's resolution (K = 1) need ~100-115: the spline cannot follow the flight closely, and
@@ -39,6 +45,14 @@ struct SolverOptions {
   /// fresh barrier parameter and multipliers. 0 disables.
   int stall_iterations = 40;
   int max_restarts = 2;
+  /// Early stop of a run that is nowhere near feasible (the strict model at a small ε): once a
+  /// checkpoint's iterations have run, a run whose constraint violation (Ipopt's inf_pr, in the
+  /// constraints' units: N and N·m for force bounds, tolerances for keyframes) has not once been
+  /// below the checkpoint's violation stops with status "stopped_infeasible". This is evidence,
+  /// not proof: no certificate of infeasibility exists for this nonconvex problem, so the
+  /// checkpoints are set from measured runs (studies/convergence_study.h,
+  /// kStrictStudyCheckpoints). Empty (the default): runs go on to max_iterations.
+  std::vector<FeasibilityCheckpoint> feasibility_checkpoints;
   /// Start near an optimum (a finer resolution of a solved motion): a small initial barrier
   /// parameter and bound push, so the interior-point method does not first walk away from it.
   bool warm_start = false;
@@ -60,7 +74,8 @@ using ProgressCallback = std::function<void(const ProgressInfo&)>;
 struct SolveReport {
   /// "solved" (Ipopt optimal or acceptable), else why not: "max_iterations", "infeasible",
   /// "cancelled", "diverging", "restoration_failed", "tiny_step", "stalled" (no progress after
-  /// SolverOptions::max_restarts restarts), "error".
+  /// SolverOptions::max_restarts restarts), "stopped_infeasible" (a feasibility checkpoint was
+  /// missed, SolverOptions::feasibility_checkpoints), "error".
   std::string status;
   std::string ipopt_status;  ///< Ipopt's own name of its return status
   bool solved = false;

@@ -73,7 +73,10 @@ StudyOutcome run_study_case(const LabelledMotion& motion, const StudyCase& study
   }
   OptimizeOptions optimize = options.optimize;
   optimize.nlp.formulation = study_case.formulation;
-  if (study_case.formulation == Formulation::kStrict) optimize.nlp.epsilon = study_case.epsilon;
+  if (study_case.formulation == Formulation::kStrict) {
+    optimize.nlp.epsilon = study_case.epsilon;
+    optimize.solver.feasibility_checkpoints = options.strict_checkpoints;
+  }
   const OptimizationResult r = optimize_motion(disturbed, model, optimize);
   StudyOutcome o;
   o.study_case = study_case;
@@ -92,25 +95,31 @@ StudyOutcome run_study_case(const LabelledMotion& motion, const StudyCase& study
   return o;
 }
 
-std::vector<StudyOutcome> run_convergence_study(
-    const std::vector<LabelledMotion>& motions, const ConvergenceStudyOptions& options,
-    const std::function<void(int, int, const StudyOutcome&)>& progress) {
-  const std::vector<StudyCase> cases = convergence_study_cases(motions, options);
-  std::vector<StudyOutcome> outcomes;
-  outcomes.reserve(cases.size());
-  for (const StudyCase& c : cases) {
-    const auto motion = std::find_if(motions.begin(), motions.end(),
-                                     [&](const LabelledMotion& m) { return m.label == c.motion; });
-    outcomes.push_back(run_study_case(*motion, c, options));
-    if (progress)
-      progress(static_cast<int>(outcomes.size()), static_cast<int>(cases.size()), outcomes.back());
-  }
-  return outcomes;
+StudyOutcome unfinished_outcome(const StudyCase& study_case, const std::string& status,
+                                double seconds) {
+  StudyOutcome o;
+  o.study_case = study_case;
+  o.status = status;
+  o.seconds = seconds;
+  return o;
 }
 
 std::string formulation_label(const StudyCase& study_case) {
   if (study_case.formulation == Formulation::kRelaxed) return "relaxed";
   return format_number("strict ε=%g", study_case.epsilon);
+}
+
+}  // namespace saltus
+
+namespace saltus {
+
+std::string study_case_label(const StudyCase& c) {
+  std::string mass = c.mass_error == 0.0 ? std::string("0 %")
+                                         : format_number("%+.0f %%", 100.0 * c.mass_error) + " (" +
+                                               c.mass_segment + ")";
+  return c.motion + " " + formulation_label(c) + ", mass " + mass + ", timing " +
+         (c.timing_error_s == 0.0 ? std::string("0 s")
+                                  : format_number("±%.2f s", c.timing_error_s));
 }
 
 }  // namespace saltus

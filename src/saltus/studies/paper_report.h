@@ -1,10 +1,10 @@
 #pragma once
 /// @file
-/// The runs behind `saltus paper`: every skill at the paper's resolution (and at K = 3 unless
-/// quick), the dives, the mass study on M7 and the convergence study. Computation only; the
-/// report and its folders are written by formats/paper_report_files.h.
+/// The runs behind `saltus paper`, as a list of independent cases: every skill at the paper's
+/// resolution (and at K = 3 unless quick), the dives, the mass study on M7 and the convergence
+/// study. Computation only; the cases are run, kept and assembled into the report by
+/// formats/paper_report_files.h.
 
-#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,35 +20,82 @@ struct PaperReportOptions {
   /// Reduced settings (the CTest "paper" run): no K = 3 runs, a small convergence study.
   bool quick = false;
   OptimizeOptions optimize;  ///< paper-resolution settings for every run (K is set per run)
-  std::function<void(const std::string&)> log;  ///< one line per step, may be empty
+  /// The convergence study's early stop of strict runs (ConvergenceStudyOptions).
+  std::vector<FeasibilityCheckpoint> strict_checkpoints = kStrictStudyCheckpoints;
 };
 
-/// One skill of Table 1: the run at the paper's resolution and, unless quick, at K = 3.
-struct PaperSkillRun {
-  LabelledMotion motion;
-  OptimizeOptions options;                    ///< of the K = 1 run
-  OptimizationResult paper_resolution;        ///< K = 1
-  std::optional<OptimizationResult> refined;  ///< K = 3
+/// What the report keeps of one optimisation (the whole result goes to its own folder).
+struct RunSummary {
+  std::string motion_name;  ///< Motion::name
+  int keyframes = 0;
+  /// SolveReport::status, or "crashed" / "timed_out" when the case's process did not finish.
+  std::string status;
+  bool solved = false;
+  int iterations = 0;
+  double seconds = 0.0;  ///< the solve's wall time
+  int variables = 0;
+  int constraints = 0;
+  int knots_per_interval = 1;
+  double objective_before = 0.0, objective_after = 0.0;  ///< J, N²
+  double avg_force_before = 0.0, avg_force_after = 0.0;  ///< sqrt(J/6), N
+  std::vector<double> keyframe_times_before, keyframe_times_after;
+  /// False when the case's process failed: only motion_name, keyframes and status are set.
+  bool completed() const { return status != "crashed" && status != "timed_out"; }
 };
 
-struct PaperDiveRun {
-  LabelledMotion motion;
-  OptimizeOptions options;
-  OptimizationResult result;
+RunSummary summarize_run(const Motion& motion, const OptimizationResult& result);
+
+enum class PaperCaseKind {
+  kSkill,         ///< a skill at the paper's resolution (K = 1), written to DIR/<label>
+  kRefinedSkill,  ///< the same skill at K = 3 (its figures go into Table 1 only)
+  kDive,          ///< a dive at K = 1, written to DIR/<label>
+  kMass,          ///< the mass study on M7, written to DIR/mass
+  kConvergence,   ///< one case of the convergence study
+};
+
+struct PaperCase {
+  PaperCaseKind kind = PaperCaseKind::kSkill;
+  std::string motion;     ///< LabelledMotion::label
+  StudyCase convergence;  ///< kConvergence only
+};
+
+/// Every case of the report and the settings of its studies.
+struct PaperPlan {
+  std::vector<PaperCase> cases;  ///< skills (each followed by its K = 3 run), dives, mass, study
+  ConvergenceStudyOptions convergence;
+  std::vector<LabelledMotion> convergence_motions;  ///< all skills, or the first and last if quick
+  MassStudyOptions mass;
+};
+
+/// The report's cases for these skills and dives.
+PaperPlan paper_report_plan(const std::vector<LabelledMotion>& skills,
+                            const std::vector<LabelledMotion>& dives,
+                            const PaperReportOptions& options);
+
+/// The options of a skill or dive run (K = 1, or K = 3 for kRefinedSkill).
+OptimizeOptions paper_run_options(const PaperCase& paper_case, const PaperReportOptions& options);
+
+/// "M3, K = 3", "mass study on M7", "M3 strict ε=50 mass -20 % (all) timing ±0.05 s".
+std::string paper_case_label(const PaperCase& paper_case);
+
+/// The report assembled from its cases' results.
+struct PaperSkillRow {
+  std::string label;
+  RunSummary paper_resolution;        ///< K = 1
+  std::optional<RunSummary> refined;  ///< K = 3, unless quick
+};
+
+struct PaperDiveRow {
+  std::string label;
+  RunSummary run;
 };
 
 struct PaperReport {
-  std::vector<PaperSkillRun> skills;
-  std::vector<PaperDiveRun> dives;
-  std::optional<MassStudyResult> mass;  ///< on M7, when the folder has it
-  MassStudyOptions mass_options;
-  ConvergenceStudyOptions convergence_options;
+  std::vector<PaperSkillRow> skills;
+  std::vector<PaperDiveRow> dives;
+  bool has_mass = false;      ///< the folder had M7
+  std::string mass_markdown;  ///< formats' mass-study table, or why it is missing
   std::vector<StudyOutcome> convergence;
 };
-
-/// Runs everything, skills in the given order; `options.log` gets a line after each step.
-PaperReport run_paper_report(const std::vector<LabelledMotion>& skills,
-                             const std::vector<LabelledMotion>& dives,
-                             const PaperReportOptions& options);
 
 }  // namespace saltus

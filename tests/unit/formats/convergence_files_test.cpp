@@ -47,9 +47,14 @@ TEST(ConvergenceFiles, FolderHoldsTheTablesAndOneResultEntryPerCase) {
   ConvergenceStudyOptions options;
   options.seed = 42;
   test::TempDir dir;
-  const nlohmann::json result = write_convergence_outputs(dir / "conv", outcomes, options);
+  options.strict_checkpoints = {{80, 20.0}};
+  options.optimize.nlp.samples = 57;
+  const nlohmann::json result =
+      write_convergence_files(dir / "conv", outcomes, convergence_definition({}, options));
   EXPECT_EQ(result["study"], "convergence");
   EXPECT_EQ(result["seed"], 42);
+  EXPECT_EQ(result["samples"], 57);
+  EXPECT_EQ(result["strict_checkpoints"], nlohmann::json::parse("[[80, 20.0]]"));
   ASSERT_EQ(result["cases"].size(), 3u);
   EXPECT_EQ(result["cases"][2]["motion"], "M3");
   EXPECT_EQ(result["cases"][2]["iterations"], 30);
