@@ -2,6 +2,7 @@
 
 #include <Eigen/Cholesky>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "saltus/dynamics/inverse_dynamics.h"
@@ -137,7 +138,14 @@ std::vector<BodyState<double>> simulate_free_flight(const BodyModel& model,
   double t = times.front();
   for (double target : times) {
     const double gap = target - t;
-    const int steps = gap > 0 ? static_cast<int>(std::ceil(gap / options.max_step - 1e-9)) : 0;
+    const double step_count = gap > 0 ? std::ceil(gap / options.max_step - 1e-9) : 0.0;
+    // A double past int's range is undefined behaviour when cast (a 2.2e8 s flight did it);
+    // the motion reader refuses such flights, this keeps the cast defined for any caller.
+    if (!(step_count <= static_cast<double>(std::numeric_limits<int>::max())))
+      throw std::invalid_argument("free flight: " + std::to_string(gap) +
+                                  " s between output times is too many RK4 steps of " +
+                                  std::to_string(options.max_step) + " s");
+    const int steps = static_cast<int>(step_count);
     for (int k = 0; k < steps; ++k) {
       const double h = gap / steps;
       y = rk4_step(model, joint_motion, t, y, h, scratch);
