@@ -1,6 +1,8 @@
 // `saltus`: command-line front end. Parses arguments, calls the library, prints a summary.
 // Exit status: 0 success, 2 bad input (message names file and field), 3 optimisation did not
-// converge (results written anyway), 1 internal error.
+// converge (results written anyway), 4 the output could not be written (another run is writing
+// the same folder, or the system refused: disk full, no permission; nothing was changed),
+// 1 internal error.
 
 #include <CLI/CLI.hpp>
 #include <cctype>
@@ -18,6 +20,7 @@
 #include "saltus/formats/convergence_files.h"
 #include "saltus/formats/mass_files.h"
 #include "saltus/formats/motion_file.h"
+#include "saltus/formats/output_folder.h"
 #include "saltus/formats/paper_report_files.h"
 #include "saltus/formats/result_json.h"
 #include "saltus/motion/motion.h"
@@ -29,6 +32,7 @@ namespace {
 constexpr int kExitBadInput = 2;
 constexpr int kExitInternal = 1;
 constexpr int kExitNotSolved = 3;
+constexpr int kExitOutputNotWritten = 4;
 
 struct CommonArgs {
   std::string motion_path;
@@ -87,6 +91,7 @@ void print_outputs(const std::string& out_dir, double seconds) {
 
 int run_evaluate(const CommonArgs& args) {
   const auto start = std::chrono::steady_clock::now();
+  saltus::check_output_folder(args.out_dir);
   const saltus::MotionFile file = saltus::load_motion_file(args.motion_path, args.model_override);
   const saltus::EvaluateOptions options = options_from(args);
   const saltus::MotionEvaluation e = saltus::evaluate_motion(file.motion, file.model, options);
@@ -106,6 +111,7 @@ int run_evaluate(const CommonArgs& args) {
 
 int run_simulate(const CommonArgs& args) {
   const auto start = std::chrono::steady_clock::now();
+  saltus::check_output_folder(args.out_dir);
   const saltus::MotionFile file = saltus::load_motion_file(args.motion_path, args.model_override);
   const saltus::EvaluateOptions options = options_from(args);
   const saltus::SimulationResult s = saltus::simulate_motion(file.motion, file.model, options);
@@ -181,6 +187,7 @@ void add_optimize(CLI::App* cmd, OptimizeArgs& args) {
 
 int run_optimize(const OptimizeArgs& args) {
   const auto start = std::chrono::steady_clock::now();
+  saltus::check_output_folder(args.common.out_dir);
   const saltus::MotionFile file =
       saltus::load_motion_file(args.common.motion_path, args.common.model_override);
   saltus::OptimizeOptions options;
@@ -320,6 +327,7 @@ void add_convergence(CLI::App* cmd, ConvergenceArgs& args) {
 }
 
 int run_convergence(const ConvergenceArgs& args) {
+  saltus::check_output_folder(args.common.out_dir);
   std::vector<saltus::LabelledMotion> motions;
   for (const std::string& path : args.motions)
     motions.push_back({saltus::motion_label(path), saltus::load_motion_file(path)});
@@ -383,6 +391,7 @@ void add_mass(CLI::App* cmd, MassArgs& args) {
 }
 
 int run_mass(const MassArgs& args) {
+  saltus::check_output_folder(args.common.out_dir);
   const saltus::MotionFile file = saltus::load_motion_file(args.motion);
   saltus::MassStudyOptions options;
   options.optimize = study_optimize_options(args.common);
@@ -513,6 +522,9 @@ int main(int argc, char** argv) {
   } catch (const saltus::InputError& e) {
     std::fprintf(stderr, "saltus: error: %s\n", e.what());
     return kExitBadInput;
+  } catch (const saltus::OutputError& e) {
+    std::fprintf(stderr, "saltus: error: %s\n", e.what());
+    return kExitOutputNotWritten;
   } catch (const std::invalid_argument& e) {
     std::fprintf(stderr, "saltus: error: %s\n", e.what());
     return kExitBadInput;
