@@ -12,7 +12,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
 
 # Debian packages the build and the tests need (see README "Dependencies").
-packages=(build-essential cmake pkg-config clang-format
+packages=(build-essential cmake pkg-config clang-format clang libclang-rt-14-dev llvm
           libeigen3-dev coinor-libipopt-dev libopenblas0-serial nlohmann-json3-dev libcli11-dev
           libgtest-dev libbenchmark-dev
           libvtk9-qt-dev libvtk9-dev qtbase5-dev xvfb xauth libgl1-mesa-dri)
@@ -57,3 +57,12 @@ clang-format --dry-run --Werror "${sources[@]}"
 
 echo "== tests"
 ctest --preset release --output-on-failure --no-tests=error -j"$(nproc)"
+
+# The same unit, integration and cli tests with clang under AddressSanitizer and
+# UndefinedBehaviorSanitizer (float-cast-overflow included), and the readers' libFuzzer targets
+# for a short seeded run each (docs/safety.md). No GUI: it adds nothing the sanitizers look at.
+echo "== sanitizer build (clang, ASan + UBSan, libFuzzer targets)"
+cmake --preset sanitize >/dev/null
+cmake --build --preset sanitize -j"$(nproc)"
+echo "== sanitizer tests and fuzzing"
+ctest --preset sanitize --output-on-failure --no-tests=error -j"$(nproc)"
