@@ -12,6 +12,7 @@
 #include "saltus/base/input_error.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/formats/result_json.h"
+#include "support/temp_path.h"
 
 namespace saltus::gui {
 namespace {
@@ -65,7 +66,7 @@ TEST(CompareTimeline, RunsOverTheLongerFlightAndEachViewStopsAtItsEnd) {
 }
 
 TEST(FolderRun, EvaluateFolderGivesItsMotionWithTheModelCopy) {
-  const fs::path dir = fs::temp_directory_path() / "saltus_gui_compare_eval";
+  const fs::path dir = saltus::test::temp_path("saltus_gui_compare_eval");
   fs::remove_all(dir);
   const MotionFile file = load_motion_file(test::gui_test_motion_path());
   EvaluateOptions options;

@@ -10,6 +10,7 @@
 #include "gui_core/test_motion.h"
 #include "saltus/base/input_error.h"
 #include "saltus/motion/interpolate.h"
+#include "support/temp_path.h"
 
 namespace saltus::gui {
 namespace {
@@ -88,7 +89,7 @@ TEST(Document, KeyframePosesAreAtTheKeyframeTimes) {
 TEST(Document, BadFileThrowsInputErrorAndKeepsTheOldMotion) {
   Document d;
   d.load(test::gui_test_motion_path(), "", 21);
-  const fs::path bad = fs::temp_directory_path() / "saltus_gui_bad.motion.json";
+  const fs::path bad = saltus::test::temp_path("saltus_gui_bad.motion.json");
   {
     std::ofstream out(bad);
     out << "{ \"format\": \"saltus-motion/1\", \"model\": \"zatsiorsky-66kg\", \"keyframes\": 3 }";
@@ -103,7 +104,7 @@ TEST(Document, BadFileThrowsInputErrorAndKeepsTheOldMotion) {
 TEST(Document, SavesAnEvaluationLikeTheCli) {
   Document d;
   d.load(test::gui_test_motion_path(), "", 21);
-  const fs::path out = fs::temp_directory_path() / "saltus_gui_document_save";
+  const fs::path out = saltus::test::temp_path("saltus_gui_document_save");
   fs::remove_all(out);
   d.save_result(out.string());
   EXPECT_TRUE(fs::exists(out / "result.json"));

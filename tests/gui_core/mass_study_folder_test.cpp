@@ -15,6 +15,7 @@
 #include "saltus/formats/paper_report_files.h"
 #include "saltus/studies/convergence_study.h"
 #include "saltus/studies/mass_study.h"
+#include "support/temp_path.h"
 
 namespace saltus::gui {
 namespace {
@@ -43,7 +44,7 @@ class MassStudyFolderTest : public ::testing::Test {
       run.result.solve.status = "not run";
       study_->runs.push_back(std::move(run));
     }
-    folder_ = new fs::path(fs::temp_directory_path() / "saltus_gui_mass_study");
+    folder_ = new fs::path(saltus::test::temp_path("saltus_gui_mass_study"));
     fs::remove_all(*folder_);
     write_mass_outputs(folder_->string(), *file_, *study_, *options_);
   }

@@ -12,6 +12,7 @@
 #include "saltus/base/input_error.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/formats/result_json.h"
+#include "support/temp_path.h"
 
 namespace saltus::gui {
 namespace {
@@ -84,7 +85,7 @@ class OptimizedMotion : public ::testing::Test {
     s.samples = 31;
     options_ = new OptimizeOptions(to_optimize_options(s));
     result_ = new OptimizationResult(optimize_motion(file_->motion, file_->model, *options_));
-    folder_ = (fs::temp_directory_path() / "saltus_gui_optimize_settings_M").string();
+    folder_ = (saltus::test::temp_path("saltus_gui_optimize_settings_M")).string();
     fs::remove_all(folder_);
     write_optimization_outputs(folder_, *file_, *result_, *options_);
   }
@@ -155,7 +156,7 @@ TEST_F(OptimizedMotion, PaperFiguresAreNamedPerFolderWithASummary) {
 
 TEST(ResultFolder, RejectsFoldersThatAreNotOptimisationResults) {
   EXPECT_THROW(read_result_folder("/nonexistent/folder"), InputError);
-  const fs::path eval = fs::temp_directory_path() / "saltus_gui_not_optimized";
+  const fs::path eval = saltus::test::temp_path("saltus_gui_not_optimized");
   fs::remove_all(eval);
   const MotionFile file = load_motion_file(test::gui_test_motion_path());
   EvaluateOptions options;

@@ -9,6 +9,7 @@
 #include "core/plot_series.h"
 #include "gui_core/test_motion.h"
 #include "saltus/base/input_error.h"
+#include "support/temp_path.h"
 
 namespace saltus::gui {
 namespace {
@@ -89,8 +90,7 @@ TEST_F(PlotSeriesTest, RotationChartsShowTheLibrarysRotationMetrics) {
 }
 
 TEST_F(PlotSeriesTest, ReadsTheSameSeriesFromATrajectoryCsv) {
-  const std::filesystem::path csv =
-      std::filesystem::temp_directory_path() / "saltus_gui_plot_series.csv";
+  const std::filesystem::path csv = saltus::test::temp_path("saltus_gui_plot_series.csv");
   {
     std::ofstream out(csv);
     write_trajectory_csv(out, document_.file().model, samples());

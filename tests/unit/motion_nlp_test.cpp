@@ -135,10 +135,10 @@ void dense_model(MotionNlp& nlp, const std::vector<double>& x, Eigen::MatrixXd& 
   nlp.gradient(x.data(), gradient.data());
 }
 
-TEST(NlpHessian, IsDampedGaussNewtonOfTheRootWrench) {
-  // vᵀHv = Σ_s 2 w_s ‖J_s v‖² + c·J(x)·‖v‖² (damping) + proximity curvature, with J_s v by central
-  // differences of
-  // the root wrench along v: an independent path to the Hessian's assembly and band indexing.
+TEST(NlpHessian, IsTheDampedGaussNewtonOfItsTermsResiduals) {
+  // vᵀHv = Σ_terms 2‖J_r v‖² + μ·J(x)·‖v‖² (the root wrench's damping), with J_r v by central
+  // differences of each term's residuals along v: an independent path to the Hessian's assembly
+  // and band indexing.
   NlpAtRandomPoint s(Formulation::kRelaxed, 2, 3);
   MotionNlp& nlp = *s.nlp;
   const int n = nlp.variable_count();
@@ -150,31 +150,21 @@ TEST(NlpHessian, IsDampedGaussNewtonOfTheRootWrench) {
   Eigen::VectorXd v(n);
   for (int i = 0; i < n; ++i)
     v[i] = g(rng);
-
-  RootWrenchDerivatives wrench(s.model, nlp.layout(), nlp.reference());
-  const std::vector<double>& times = nlp.sample_times();
-  const double duration = times.back();
   const double eps = 1e-6;
   std::vector<double> xp = s.x, xm = s.x;
   for (int i = 0; i < n; ++i)
     xp[i] += eps * v[i], xm[i] -= eps * v[i];
-  double expected = 0.0;
-  for (std::size_t k = 0; k < times.size(); ++k) {
-    const double dt_left = k > 0 ? times[k] - times[k - 1] : 0.0;
-    const double dt_right = k + 1 < times.size() ? times[k + 1] - times[k] : 0.0;
-    const double weight = 0.5 * (dt_left + dt_right) / duration;
-    wrench.set_variables(xp.data());
-    const Vector6d fp = wrench.wrench(times[k]);
-    wrench.set_variables(xm.data());
-    const Vector6d fm = wrench.wrench(times[k]);
-    expected += 2.0 * weight * ((fp - fm) / (2 * eps)).squaredNorm();
+  double expected =
+      nlp.options().damping.initial * nlp.force_objective(s.x.data()) * v.squaredNorm();
+  NlpEvaluations& at = nlp.evaluations();
+  for (ObjectiveTerm* term : nlp.objective_terms()) {
+    at.load(xp.data());
+    const std::vector<double> rp = term->residuals(at);
+    at.load(xm.data());
+    const std::vector<double> rm = term->residuals(at);
+    for (std::size_t r = 0; r < rp.size(); ++r)
+      expected += 2.0 * std::pow((rp[r] - rm[r]) / (2 * eps), 2);
   }
-  expected += nlp.options().damping.initial * nlp.force_objective(s.x.data()) * v.squaredNorm();
-  // Proximity term w·Σ‖δ‖² over the joints' tangent coordinates: curvature 2w.
-  const double w = nlp.options().regularization;
-  const TrajectoryLayout& layout = nlp.layout();
-  for (int i = 0; i < layout.control_variable_count(); ++i)
-    if (i % layout.curve_block() >= 3) expected += 2.0 * w * v[i] * v[i];
   const double actual = v.dot(h * v);
   EXPECT_NEAR(actual, expected, 1e-5 * expected);
 }

@@ -1,14 +1,19 @@
 #include "saltus/dynamics/free_flight.h"
 
 #include <Eigen/Cholesky>
+#include <algorithm>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 
 #include "saltus/dynamics/inverse_dynamics.h"
 #include "saltus/dynamics/momentum.h"
 
 namespace saltus {
+
+namespace {
+/// More steps than this between two output times is a mistake (a flight of years), not a job.
+constexpr double kMaxFreeFlightSteps = 1e8;
+}  // namespace
 
 void solve_free_root_acceleration(const BodyModel& model, BodyState<double>& state) {
   DynamicsData<double> data(model);
@@ -135,21 +140,32 @@ std::vector<BodyState<double>> simulate_free_flight(const BodyModel& model,
   BodyState<double> scratch(model.size());
   std::vector<BodyState<double>> out;
   out.reserve(times.size());
+  // RK4 steps end exactly at the breakpoints: the joints' acceleration kinks there (a spline's
+  // jerk jumps at its knots), and a step across a kink loses RK4's order.
+  std::vector<double> breakpoints = options.breakpoints;
+  std::sort(breakpoints.begin(), breakpoints.end());
+  auto next_breakpoint = breakpoints.begin();
   double t = times.front();
   for (double target : times) {
-    const double gap = target - t;
-    const double step_count = gap > 0 ? std::ceil(gap / options.max_step - 1e-9) : 0.0;
-    // A double past int's range is undefined behaviour when cast (a 2.2e8 s flight did it);
-    // the motion reader refuses such flights, this keeps the cast defined for any caller.
-    if (!(step_count <= static_cast<double>(std::numeric_limits<int>::max())))
-      throw std::invalid_argument("free flight: " + std::to_string(gap) +
-                                  " s between output times is too many RK4 steps of " +
-                                  std::to_string(options.max_step) + " s");
-    const int steps = static_cast<int>(step_count);
-    for (int k = 0; k < steps; ++k) {
-      const double h = gap / steps;
-      y = rk4_step(model, joint_motion, t, y, h, scratch);
-      t += h;
+    while (t < target) {
+      while (next_breakpoint != breakpoints.end() && *next_breakpoint <= t)
+        ++next_breakpoint;
+      const double end = next_breakpoint != breakpoints.end() && *next_breakpoint < target
+                             ? *next_breakpoint
+                             : target;
+      const double gap = end - t;
+      const double step_count = std::ceil(gap / options.max_step - 1e-9);
+      if (!(step_count <= kMaxFreeFlightSteps))
+        throw std::invalid_argument(
+            "free flight: more than 1e8 integration steps between two "
+            "output times");
+      const int steps = std::max(1, static_cast<int>(step_count));
+      for (int k = 0; k < steps; ++k) {
+        const double h = gap / steps;
+        y = rk4_step(model, joint_motion, t, y, h, scratch);
+        t += h;
+      }
+      t = end;
     }
     t = target;
     BodyState<double> sample(model.size());

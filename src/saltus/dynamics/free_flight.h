@@ -25,6 +25,9 @@ struct FreeFlightInitialState {
 
 struct FreeFlightOptions {
   double max_step = 1e-3;  ///< s; RK4 step (sub-divides the gaps between output times)
+  /// Times where the joint motion's acceleration is not smooth (a spline's knots): steps end
+  /// there instead of straddling them.
+  std::vector<double> breakpoints;
 };
 
 /// The root state that makes the root wrench vanish for the given joint state: fills

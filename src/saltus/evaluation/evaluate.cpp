@@ -20,7 +20,8 @@ MotionEvaluation evaluate_motion(const Motion& motion, const BodyModel& model,
   e.root_targets = keyframe_root_targets(motion, model);
   e.samples = evaluate_trajectory(model, e.trajectory,
                                   uniform_times(motion.flight_time(), options.samples));
-  e.metrics = force_metrics(e.samples);
+  e.check = dense_check(model, e.trajectory, options.samples);
+  e.metrics = e.check.metrics;
   e.keyframe_errors = keyframe_errors(motion, e.trajectory, e.keyframe_times, e.root_targets);
   return e;
 }

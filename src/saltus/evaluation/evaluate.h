@@ -23,7 +23,10 @@ struct MotionEvaluation {
   Trajectory<double> trajectory;
   std::vector<double> keyframe_times;
   std::vector<Eigen::Vector3d> root_targets;  ///< B̄ per keyframe
-  std::vector<SampleRecord> samples;
+  std::vector<SampleRecord> samples;  ///< at `samples` uniform times (the written trajectory)
+  /// The true residual: the dense check (force_metrics.h), at least `samples` points and
+  /// kCheckPointsPerSpan per knot span. `metrics` is check.metrics.
+  DenseCheck check;
   ForceMetrics metrics;
   KeyframeErrors keyframe_errors;
 };

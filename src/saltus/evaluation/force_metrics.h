@@ -5,7 +5,9 @@
 
 #include <vector>
 
+#include "saltus/body/body_model.h"
 #include "saltus/evaluation/sampling.h"
+#include "saltus/motion/trajectory.h"
 
 namespace saltus {
 
@@ -19,6 +21,28 @@ struct ForceMetrics {
   double max_moment_Nm = 0.0;   ///< max over samples of |F_4..6|
 };
 
+/// Figures over samples on a grid, by the trapezoidal rule in time (max over the samples).
 ForceMetrics force_metrics(const std::vector<SampleRecord>& samples);
+
+/// The dense check behind every figure Saltus reports (DESIGN §6: the motion's true residual,
+/// whatever resolution the optimiser worked at): the root wrench on every knot span at
+/// equally spaced points, at least kCheckPointsPerSpan intervals per span, at most
+/// kCheckMaxSpacing apart and at least `min_points` over the flight, integrated span by span by
+/// Simpson's rule (the wrench is smooth
+/// on a span and kinks only at knots), the peaks taken over every point. Independent of the
+/// optimiser's own quadrature (Gauss–Legendre nodes inside the spans), so force the optimiser
+/// hid between its nodes shows here.
+struct DenseCheck {
+  ForceMetrics metrics;
+  int points = 0;  ///< wrench evaluations used
+  /// Per knot span: its start and end (s) and ∫ Σ F_i² dt over it (N²·s), where the residual
+  /// lives.
+  std::vector<double> span_start, span_end, span_integral;
+};
+inline constexpr int kCheckPointsPerSpan = 10;
+inline constexpr double kCheckMaxSpacing = 0.01;  ///< s
+
+DenseCheck dense_check(const BodyModel& model, const Trajectory<double>& trajectory,
+                       int min_points);
 
 }  // namespace saltus

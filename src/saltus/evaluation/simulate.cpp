@@ -16,11 +16,14 @@ SimulationResult simulate_motion(const Motion& motion, const BodyModel& model,
   initial.com_position = motion.takeoff.com_position;
   initial.com_velocity = motion.takeoff.com_velocity;
   initial.root_orientation = trajectory.rotations[0].evaluate(0.0).q;
+  const FlightState own = fit_flight_state(
+      evaluate_trajectory(model, trajectory, uniform_times(motion.flight_time(), 201)));
+  out.angular_momentum_spread = own.angular_momentum_spread;
   if (motion.takeoff.angular_momentum) {
     out.angular_momentum = *motion.takeoff.angular_momentum;
     out.angular_momentum_from_file = true;
   } else {
-    out.angular_momentum = evaluate_trajectory(model, trajectory, {0.0}).front().angular_momentum;
+    out.angular_momentum = own.angular_momentum;
   }
   initial.angular_momentum = out.angular_momentum;
 
@@ -32,7 +35,10 @@ SimulationResult simulate_motion(const Motion& motion, const BodyModel& model,
       state.joints[k].alpha = s.alpha;
     }
   };
-  const std::vector<BodyState<double>> states = simulate_free_flight(model, joints, initial, times);
+  FreeFlightOptions integration;
+  integration.breakpoints.assign(trajectory.knots.begin(), trajectory.knots.end());
+  const std::vector<BodyState<double>> states =
+      simulate_free_flight(model, joints, initial, times, integration);
   out.samples = evaluate_states(model, times, states);
   out.metrics = force_metrics(out.samples);
 
@@ -45,6 +51,8 @@ SimulationResult simulate_motion(const Motion& motion, const BodyModel& model,
   out.landing_root_error_deg = out.landing_joint_error_deg.at(model.segments[0].joint);
   out.landing_com_error_m =
       (out.samples.back().com - ballistic_com(motion.takeoff, motion.flight_time())).norm();
+  out.landing_vs_motion_deg = degrees_from_radians(rotation_angle_between(
+      landing.joints[0].q, trajectory.rotations[0].evaluate(motion.flight_time()).q));
   return out;
 }
 

@@ -1,9 +1,11 @@
 #include "saltus/formats/result_json.h"
 
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
 #include "saltus/base/json_reader.h"
+#include "saltus/base/text_format.h"
 #include "saltus/formats/finite_check.h"
 #include "saltus/formats/model_file.h"
 #include "saltus/formats/motion_file.h"
@@ -80,6 +82,14 @@ nlohmann::json write_outputs(const std::string& out_dir, const MotionFile& file,
   return result;
 }
 
+/// How the reported residual figures were computed (DESIGN §6).
+nlohmann::json residual_check_json(const DenseCheck& check) {
+  return {{"rule", "Simpson's rule on every knot span, " + std::to_string(kCheckPointsPerSpan) +
+                       " or more intervals per span, " + format_number("%g", kCheckMaxSpacing) +
+                       " s apart or closer, and at least the samples over the flight"},
+          {"points", check.points}};
+}
+
 void put_keyframe_errors(nlohmann::json& r, const KeyframeErrors& e) {
   r["max_translation_error_m"] = e.max_translation_error_m;
   r["max_quaternion_error"] = e.max_quaternion_error;
@@ -92,6 +102,7 @@ nlohmann::json evaluation_result_json(const MotionFile& file, const MotionEvalua
                                       const EvaluateOptions& options) {
   nlohmann::json r = base_result(file, options, "evaluated");
   r["before"] = force_metrics_to_json(e.metrics);
+  r["residual_check"] = residual_check_json(e.check);
   r["keyframe_times_before"] = e.keyframe_times;
   put_keyframe_errors(r, e.keyframe_errors);
   r["takeoff_angular_momentum"] = vector_json(e.samples.front().angular_momentum);
@@ -110,13 +121,16 @@ nlohmann::json simulation_result_json(const MotionFile& file, const SimulationRe
   r["max_quaternion_error"] = nullptr;
   r["max_rotation_error_deg"] = nullptr;
   r["takeoff_angular_momentum"] = vector_json(s.angular_momentum);
-  r["takeoff_angular_momentum_source"] = s.angular_momentum_from_file ? "motion file" : "keyframes";
+  r["takeoff_angular_momentum_source"] =
+      s.angular_momentum_from_file ? "motion file" : "best constant fit to the motion's L(t)";
+  r["angular_momentum_spread"] = s.angular_momentum_spread;
   nlohmann::json joints = nlohmann::json::object();
   for (const auto& [name, deg] : s.landing_joint_error_deg)
     joints[name] = deg;
   r["landing"] = {{"root_error_deg", s.landing_root_error_deg},
                   {"joint_error_deg", joints},
-                  {"com_error_m", s.landing_com_error_m}};
+                  {"com_error_m", s.landing_com_error_m},
+                  {"root_vs_motion_deg", s.landing_vs_motion_deg}};
   return r;
 }
 
@@ -152,6 +166,16 @@ nlohmann::json optimization_result_json(const MotionFile& file, const Optimizati
   r["constraints"] = result.constraints;
   r["before"] = force_metrics_to_json(result.before.metrics);
   r["after"] = force_metrics_to_json(result.after.metrics);
+  // The optimiser's own figure beside the true one (the dense check), so anyone can see that
+  // the two agree.
+  for (auto [key, objective] :
+       {std::pair<const char*, double>{"before", result.optimizer_objective_before},
+        {"after", result.optimizer_objective_after}}) {
+    r[key]["optimizer_objective"] = objective;
+    r[key]["optimizer_avg_root_force"] = std::sqrt(objective / 6.0);
+  }
+  r["residual_check"] = residual_check_json(result.after.check);
+  r["residual_check"]["optimizer_agrees"] = optimizer_agrees_with_check(result);
   r["keyframe_times_before"] = result.before.keyframe_times;
   r["keyframe_times_after"] = result.after.keyframe_times;
   put_keyframe_errors(r, result.after.keyframe_errors);

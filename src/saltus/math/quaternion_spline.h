@@ -47,6 +47,9 @@ class QuaternionSpline {
   /// an interior knot belongs to the span on its right, t = T to the last span (left limit).
   /// t outside the knot range is clamped to the nearest end knot (value, ω and α of that end).
   QuaternionSample<Scalar> evaluate(const Scalar& t) const;
+  /// The same on a given knot span (3 <= span <= control count − 1), e.g. at its right end as
+  /// the left limit: a knot then belongs to whichever span the caller integrates.
+  QuaternionSample<Scalar> evaluate_on_span(int span, const Scalar& t) const;
 
   /// The largest turn between consecutive control points, 2‖w_j‖ in [0, 2π] (rad). Near 2π the
   /// log map that defines w_j reaches its branch point: its derivative grows like

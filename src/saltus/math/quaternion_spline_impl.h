@@ -93,4 +93,12 @@ QuaternionSample<Scalar> QuaternionSpline<Scalar>::evaluate(const Scalar& t) con
   return detail::evaluate_span_from_logs(control_[s - 3], w, basis);
 }
 
+template <typename Scalar>
+QuaternionSample<Scalar> QuaternionSpline<Scalar>::evaluate_on_span(int span,
+                                                                    const Scalar& t) const {
+  const SpanBasis<Scalar> basis = cubic_basis_on_span(knots_, span, t);
+  const Vec3<Scalar> w[3] = {relative_log_[span - 2], relative_log_[span - 1], relative_log_[span]};
+  return detail::evaluate_span_from_logs(control_[span - 3], w, basis);
+}
+
 }  // namespace saltus

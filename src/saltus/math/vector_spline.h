@@ -32,6 +32,8 @@ class VectorSpline {
   const std::vector<Scalar>& knots() const { return knots_; }
   const std::vector<Vec3<Scalar>>& control() const { return control_; }
   VectorSample<Scalar> evaluate(const Scalar& t) const;
+  /// The same on a given knot span (see QuaternionSpline::evaluate_on_span).
+  VectorSample<Scalar> evaluate_on_span(int span, const Scalar& t) const;
 
  private:
   std::vector<Scalar> knots_;

@@ -44,4 +44,11 @@ VectorSample<Scalar> VectorSpline<Scalar>::evaluate(const Scalar& t) const {
                               basis);
 }
 
+template <typename Scalar>
+VectorSample<Scalar> VectorSpline<Scalar>::evaluate_on_span(int span, const Scalar& t) const {
+  const SpanBasis<Scalar> basis = cubic_basis_on_span(knots_, span, t);
+  return evaluate_vector_span(control_[span - 3], control_[span - 2], control_[span - 1],
+                              control_[span], basis);
+}
+
 }  // namespace saltus

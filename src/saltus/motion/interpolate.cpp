@@ -1,5 +1,6 @@
 #include "saltus/motion/interpolate.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "saltus/dynamics/inverse_dynamics.h"
@@ -67,7 +68,8 @@ Trajectory<double> interpolate_keyframes(const Motion& motion, const BodyModel& 
   std::vector<Eigen::Vector3d> fit_points;
   std::vector<Eigen::Quaterniond> pose(model.size());
   for (int s = 0; s < n_fit; ++s) {
-    const double t = duration * s / (n_fit - 1);
+    // The last time is T itself: duration·s/(n − 1) can round past the last knot (1.83 s).
+    const double t = s + 1 == n_fit ? duration : std::min(duration, duration * s / (n_fit - 1));
     for (int seg = 0; seg < model.size(); ++seg)
       pose[seg] = trajectory.rotations[seg].evaluate(t).q;
     fit_times.push_back(t);

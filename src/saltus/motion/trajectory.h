@@ -22,6 +22,7 @@ struct Trajectory {
   int segment_count() const { return static_cast<int>(rotations.size()); }
 
   /// Fills `out` (sized for the model) with the state at time t: positions, rates, accelerations.
+  /// t outside [0, T] takes the nearest end's state.
   void sample(const Scalar& t, BodyState<Scalar>& out) const {
     const VectorSample<Scalar> b = root_translation.evaluate(t);
     out.root_position = b.position;
@@ -29,6 +30,19 @@ struct Trajectory {
     out.root_acceleration = b.acceleration;
     for (std::size_t k = 0; k < rotations.size(); ++k) {
       const QuaternionSample<Scalar> s = rotations[k].evaluate(t);
+      out.joints[k].q = s.q;
+      out.joints[k].omega = s.omega;
+      out.joints[k].alpha = s.alpha;
+    }
+  }
+  /// The same on a given knot span (a knot time as the left limit of the span that ends there).
+  void sample_on_span(int span, const Scalar& t, BodyState<Scalar>& out) const {
+    const VectorSample<Scalar> b = root_translation.evaluate_on_span(span, t);
+    out.root_position = b.position;
+    out.root_velocity = b.velocity;
+    out.root_acceleration = b.acceleration;
+    for (std::size_t k = 0; k < rotations.size(); ++k) {
+      const QuaternionSample<Scalar> s = rotations[k].evaluate_on_span(span, t);
       out.joints[k].q = s.q;
       out.joints[k].omega = s.omega;
       out.joints[k].alpha = s.alpha;

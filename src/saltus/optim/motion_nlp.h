@@ -31,11 +31,13 @@
 #include "saltus/evaluation/sampling.h"
 #include "saltus/motion/motion.h"
 #include "saltus/optim/adaptive_damping.h"
-#include "saltus/optim/joint_turn_penalty.h"
+#include "saltus/optim/hessian_band.h"
+#include "saltus/optim/keyframe_targets.h"
 #include "saltus/optim/nlp.h"
-#include "saltus/optim/root_wrench_derivatives.h"
+#include "saltus/optim/nlp_evaluations.h"
+#include "saltus/optim/terms/constraint_block.h"
+#include "saltus/optim/terms/objective_term.h"
 #include "saltus/optim/trajectory_layout.h"
-#include "saltus/optim/worker_pool.h"
 
 namespace saltus {
 
@@ -58,9 +60,13 @@ struct MotionNlpOptions {
   double epsilon = 100.0;         ///< strict: bound on each |F_i(t_s)|, N or N·m
   bool optimize_timing = true;    ///< interior keyframe times are variables
   int knots_per_interval = 1;     ///< spline refinement K (1 = the paper's resolution)
-  int samples = kDefaultSamples;  ///< quadrature grid on [0, T], ends included
-  double min_time_gap = 0.05;     ///< s, eq. (4)'s gap (capped at half the shortest interval)
-  double max_time_shift = 0.25;   ///< s, how far a keyframe time may move from the given one
+  int samples = kDefaultSamples;  ///< strict model: the times of its force bounds on [0, T]
+  /// The relaxed objective's integral (RootWrenchTerm): Gauss–Legendre nodes on every knot
+  /// span, at least quadrature_nodes and at most quadrature_spacing apart (s).
+  int quadrature_nodes = 4;
+  double quadrature_spacing = 0.02;
+  double min_time_gap = 0.05;    ///< s, eq. (4)'s gap (capped at half the shortest interval)
+  double max_time_shift = 0.25;  ///< s, how far a keyframe time may move from the given one
   /// Levenberg-Marquardt damping of the Gauss-Newton Hessian: μ·J(x)·I is added (Yamashita &
   /// Fukushima 2001: damping ∝ ‖F‖² keeps fast local convergence at a zero residual).
   /// Light segments (feet, forearms) barely change the root force, so undamped Gauss-Newton
@@ -104,6 +110,14 @@ struct MotionNlpOptions {
   int threads = 2;
 };
 
+class RootWrenchTerm;
+
+/// One formulation assembled from objective terms and constraint blocks (optim/terms/): the
+/// relaxed model sums the root wrench, the proximity term and the joint-turn penalty, subject to
+/// the keyframe translation, keyframe rotation and time-order blocks; the strict model sums the
+/// keyframe distance, proximity and penalty, subject to the same blocks and the force bounds.
+/// This class only stacks them for the solver, caches the gradient per point and adapts the
+/// damping of the relaxed model's Hessian.
 class MotionNlp : public Nlp {
  public:
   /// @param initial  the starting trajectory (the §5 interpolation) on the knots of the motion's
@@ -117,9 +131,15 @@ class MotionNlp : public Nlp {
   const TrajectoryReference& reference() const { return reference_; }
   const std::vector<double>& sample_times() const { return sample_times_; }
   const MotionNlpOptions& options() const { return options_; }
+  /// The objective's terms, in the order they are summed.
+  const std::vector<ObjectiveTerm*>& objective_terms() const { return objective_; }
+  /// The constraint blocks, in row order.
+  const std::vector<ConstraintBlock*>& constraint_blocks() const { return constraint_; }
+  /// The shared evaluations at the current point (for the terms' tests).
+  NlpEvaluations& evaluations() { return *at_; }
 
   int variable_count() const override { return layout_.size(); }
-  int constraint_count() const override;
+  int constraint_count() const override { return rows_; }
   void bounds(double* x_lower, double* x_upper, double* g_lower, double* g_upper) const override;
   void initial_point(double* x) const override;
 
@@ -132,7 +152,7 @@ class MotionNlp : public Nlp {
   void jacobian_values(const double* x, double* values) override;
 
   bool has_hessian() const override { return true; }
-  int hessian_nonzeros() const override { return hessian_nonzeros_; }
+  int hessian_nonzeros() const override { return band_.nonzeros(); }
   void hessian_structure(int* rows, int* columns) const override;
   void hessian_values(const double* x, double objective_factor, const double* multipliers,
                       double* values) override;
@@ -141,38 +161,16 @@ class MotionNlp : public Nlp {
   /// The damping factor μ the next Hessian will use.
   double damping_factor() const { return damping_.factor(); }
 
-  /// Relaxed objective J at x on the quadrature grid (also defined for the strict model).
+  /// Relaxed objective J at x by the span quadrature (also defined for the strict model).
   double force_objective(const double* x);
 
  private:
-  void load(const double* x);
-  void compute_wrenches();
-  void compute_wrench_jacobians();
-  void compute_keyframes();                 ///< values and derivatives of every keyframe quantity
-  void compute_gradient(double* gradient);  ///< the objective's gradient at the loaded x
-  void compute_keyframe_values();           ///< values only
-  Eigen::Vector3d root_target(int keyframe, double time) const;
-  int hessian_index(int row, int column) const;
-  /// Adds weight·JᵀJ of a local Jacobian to the Hessian band.
-  template <int Rows>
-  void add_gauss_newton(const LocalJacobian<Rows>& jac, double weight, double* values) const;
-  /// factor · Σ_s w_s J_sᵀJ_s of the root-wrench samples, span by span.
-  void add_wrench_gauss_newton(double factor, double* values);
-  /// Jacobian of B(t_i) − B̄(t_i) (the target's motion along the parabola included).
-  LocalJacobian<3> translation_residual_jacobian(int keyframe) const;
-  /// The proximity term at x; adds its gradient and Hessian diagonal when given.
-  double proximity_term(const double* x, double* gradient, double* hessian_diagonal) const;
-  /// The terms both formulations add to their objective: the proximity term and the joint-turn
-  /// penalty (when on). Adds their gradient when given.
-  double regularization(const double* x, double* gradient) const;
-  /// factor · their curvature into the band: the proximity's diagonal, the penalty's
-  /// Gauss–Newton blocks.
-  void add_regularization_curvature(const double* x, double factor, double* values) const;
+  /// Bounds of the variables: joint tangents within ±1.5 rad, keyframe times within
+  /// max_time_shift of the given ones and the gap of their neighbours.
+  void variable_bounds(double* x_lower, double* x_upper) const;
   /// Judges the step from the last Hessian's point to x by the damped model of the objective
   /// kept at that point, and updates μ.
   void judge_last_step(const double* x);
-  /// y = H·s for a Hessian stored as this NLP's lower band.
-  std::vector<double> band_product(const std::vector<double>& band, const double* s) const;
 
   MotionNlpOptions options_;
   TrajectoryLayout layout_;
@@ -180,46 +178,25 @@ class MotionNlp : public Nlp {
   std::vector<double> initial_x_;
   double duration_ = 0.0;
   double time_gap_ = 0.0;
-  Takeoff takeoff_;
-  Tolerances tolerances_;
-  std::vector<Eigen::Vector3d> keyframe_com_offset_;                ///< s'_i of each keyframe pose
-  std::vector<std::optional<Eigen::Vector3d>> fixed_root_;          ///< root_position if given
-  std::vector<std::vector<Eigen::Quaterniond>> keyframe_rotation_;  ///< [keyframe][segment]
   std::vector<double> sample_times_;
-  std::vector<double> sample_weights_;              ///< trapezoid weights / T
-  std::unique_ptr<JointTurnPenalty> turn_penalty_;  ///< null when off
+  std::unique_ptr<KeyframeTargets> targets_;
+  std::unique_ptr<NlpEvaluations> at_;
+  HessianBand band_;
+  AdaptiveDamping damping_;
 
-  // Constraint rows.
-  int translation_rows_ = 0, rotation_rows_ = 0, order_rows_ = 0, strict_rows_ = 0;
-  std::vector<int> order_pairs_;  ///< keyframe i of each ordering row (t_{i+1} − t_i)
+  std::vector<std::unique_ptr<ObjectiveTerm>> owned_terms_;
+  std::vector<std::unique_ptr<ConstraintBlock>> owned_blocks_;
+  std::vector<ObjectiveTerm*> objective_;
+  std::vector<ConstraintBlock*> constraint_;
+  RootWrenchTerm* root_wrench_ = nullptr;  ///< in objective_ for the relaxed model
+
+  int rows_ = 0;
+  std::vector<int> block_row_, block_entry_;  ///< first row and Jacobian entry of each block
   std::vector<int> jacobian_rows_, jacobian_columns_;
-  std::vector<int> row_begin_;  ///< first Jacobian entry of each row (size rows + 1)
 
-  // Hessian band: row r holds columns [hessian_first_column_[r], r].
-  std::vector<int> hessian_first_column_;
-  std::vector<long> hessian_row_start_;
-  int hessian_nonzeros_ = 0;
+  std::vector<double> gradient_;  ///< at the current point, when gradient_generation_ is its
+  long gradient_generation_ = -1;
 
-  // Evaluation cache keyed on x.
-  /// One evaluator per thread (each has its own workspace); [0] also serves line-search values.
-  std::vector<std::unique_ptr<RootWrenchDerivatives>> derivatives_;
-  std::unique_ptr<WorkerPool> pool_;  ///< one part per evaluator
-  /// Runs body(part, first, end) over [0, count) split into contiguous ranges, one per pool part
-  /// (samples, keyframes or spans); part p uses derivatives_[p] and its own workspace.
-  template <typename Body>
-  void for_each_range(int count, Body&& body);
-  std::vector<double> x_;
-  bool have_x_ = false, have_wrenches_ = false, have_wrench_jacobians_ = false,
-       have_keyframes_ = false, have_keyframe_values_ = false, have_gradient_ = false;
-  std::vector<double> gradient_;  ///< at x_, when have_gradient_
-  std::vector<Vector6d> wrench_;
-  std::vector<LocalJacobian<6>> wrench_jacobian_;
-  /// add_wrench_gauss_newton's workspace: the stacked rows per thread, the block per span.
-  std::vector<Eigen::MatrixXd> stacked_rows_, span_blocks_;
-  std::vector<std::pair<int, int>> spans_;              ///< [first, end) samples of each knot span
-  std::vector<LocalJacobian<3>> translation_jacobian_;  ///< [keyframe]
-  std::vector<LocalJacobian<4>> rotation_jacobian_;     ///< [keyframe * segments + segment]
-  std::vector<double> keyframe_times_;
   /// The relaxed objective's damped quadratic model at the last Hessian's point (objective
   /// part only: the keyframe constraints are Ipopt's business), to judge the step taken from it.
   struct ObjectiveModel {
@@ -227,11 +204,8 @@ class MotionNlp : public Nlp {
     std::vector<double> x, gradient, hessian;  ///< hessian: the band, per unit objective factor
     double objective = 0.0;
   };
-  AdaptiveDamping damping_;
   ObjectiveModel last_model_;
   StepTaken last_step_;
-  double translation_scale_ = 1.0;  ///< 1/ε1: translation rows in units of their tolerance
-  double rotation_scale_ = 1.0;     ///< 1/ε2²
 };
 
 }  // namespace saltus

@@ -1,8 +1,10 @@
 #include "saltus/optim/optimize.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
+#include "saltus/evaluation/flight_state.h"
 #include "saltus/motion/interpolate.h"
 
 namespace saltus {
@@ -12,6 +14,12 @@ double largest_control_turn(const Trajectory<double>& trajectory, int first_segm
   for (std::size_t k = std::max(0, first_segment); k < trajectory.rotations.size(); ++k)
     largest = std::max(largest, trajectory.rotations[k].largest_control_turn());
   return largest;
+}
+
+bool optimizer_agrees_with_check(const OptimizationResult& result) {
+  const double optimizer = std::sqrt(result.optimizer_objective_after / 6.0);
+  const double check = result.after.metrics.avg_root_force;
+  return std::abs(optimizer - check) <= 0.02 * check + 0.02;
 }
 
 OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
@@ -46,9 +54,15 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
   MotionNlp nlp(start, model, result.before.trajectory, chosen.nlp);
   result.variables = nlp.variable_count();
   result.constraints = nlp.constraint_count();
+  {
+    std::vector<double> initial_x(nlp.variable_count());
+    nlp.initial_point(initial_x.data());
+    result.optimizer_objective_before = nlp.force_objective(initial_x.data());
+  }
   result.solve = solve_with_ipopt(nlp, chosen.solver, progress, cancel);
 
   const double* x = result.solve.x.data();
+  result.optimizer_objective_after = nlp.force_objective(x);
   Motion optimized = motion;
   const std::vector<double> times = keyframe_times_from(nlp.layout(), nlp.reference(), x);
   for (std::size_t i = 0; i < times.size(); ++i)
@@ -58,6 +72,15 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
   evaluate.samples = chosen.nlp.samples;
   evaluate.interpolation.knots_per_interval = result.knots_per_interval;
   result.after = evaluate_motion(optimized, model, evaluate);
+  // The file describes the optimised motion: its own take-off state (so `simulate` starts where
+  // it starts), and the keyframes' root targets as the optimiser met them (they came from the
+  // given take-off's parabola, which the file no longer holds).
+  const FlightState own = fit_flight_state(result.after.samples);
+  optimized.takeoff.com_position = own.com_position;
+  optimized.takeoff.com_velocity = own.com_velocity;
+  optimized.takeoff.angular_momentum = own.angular_momentum;
+  for (std::size_t i = 0; i < optimized.keyframes.size(); ++i)
+    optimized.keyframes[i].root_position = result.after.root_targets[i];
   result.optimized_motion = std::move(optimized);
   return result;
 }

@@ -50,10 +50,19 @@ struct OptimizationResult {
   int knots_per_interval = 1;
   MotionEvaluation before;  ///< the interpolated motion (the starting point)
   MotionEvaluation after;   ///< the optimised motion, on the same sample grid
+  /// J by the optimiser's own quadrature (MotionNlp::force_objective), at the start and at the
+  /// end: beside the dense check's (before/after.metrics), they must agree when the quadrature
+  /// is fine enough for the knots.
+  double optimizer_objective_before = 0.0, optimizer_objective_after = 0.0;
   /// The input motion with the optimised keyframe times and the optimised spline stored, so that
-  /// loading it reproduces `after` exactly.
+  /// loading it reproduces `after` exactly; its take-off state is the optimised motion's own
+  /// (fit_flight_state) and its keyframes name the root positions the optimiser met.
   Motion optimized_motion;
 };
+
+/// Whether the optimiser's own average root force (its quadrature) and the dense check's agree
+/// after optimisation: within 2 % of the check plus 0.02 N.
+bool optimizer_agrees_with_check(const OptimizationResult& result);
 
 /// Throws std::invalid_argument for options out of range; solver failures are reported in
 /// result.solve (the result is still complete, from the best feasible or the last iterate).

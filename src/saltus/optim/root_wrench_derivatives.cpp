@@ -192,7 +192,10 @@ void reset(LocalJacobian<Rows>& out, const TrajectoryLayout& layout, int span, i
 }  // namespace
 
 Vector6d RootWrenchDerivatives::wrench(double t) {
-  const int span = find_span(knots_, t);
+  return wrench_at(find_span(knots_, t), t);
+}
+
+Vector6d RootWrenchDerivatives::wrench_at(int span, double t) {
   const SpanBasis<double> basis = cubic_basis_on_span(knots_, span, t);
   const int c0 = span - 3;
   const VectorSample<double> b =
@@ -214,11 +217,33 @@ Vector6d RootWrenchDerivatives::wrench(double t) {
 
 void RootWrenchDerivatives::wrench_jacobian(double t, LocalJacobian<6>& out) {
   Workspace& w = *work_;
-  const int n = layout_.segment_count;
   const int span = find_span(knots_, t);
-  const int c0 = span - 3;
   w.basis_keyframe = -1;  // the time slots below are the sample's, not a keyframe's
   seed_knots(layout_, knots_, span, w.knots_ad, w.time_count, w.time_variable);
+  wrench_jacobian_seeded(span, t, out);
+}
+
+Vector6d RootWrenchDerivatives::wrench_on_span(int span, double xi) {
+  return wrench_at(span, knots_[span] + xi * (knots_[span + 1] - knots_[span]));
+}
+
+void RootWrenchDerivatives::wrench_jacobian_on_span(
+    int span, double xi, LocalJacobian<6>& out,
+    Eigen::Matrix<double, 1, kMaxLocalTimes>& span_length_rate) {
+  Workspace& w = *work_;
+  w.basis_keyframe = -1;
+  seed_knots(layout_, knots_, span, w.knots_ad, w.time_count, w.time_variable);
+  const SplineAD length = w.knots_ad[span + 1] - w.knots_ad[span];
+  const SplineAD t = w.knots_ad[span] + xi * length;
+  span_length_rate = length.derivatives().tail<kMaxLocalTimes>().transpose();
+  wrench_jacobian_seeded(span, t, out);
+}
+
+template <typename Time>
+void RootWrenchDerivatives::wrench_jacobian_seeded(int span, const Time& t, LocalJacobian<6>& out) {
+  Workspace& w = *work_;
+  const int n = layout_.segment_count;
+  const int c0 = span - 3;
   const SpanBasis<SplineAD> basis = cubic_basis_on_span(w.knots_ad, span, SplineAD(t));
 
   // Stage 1: each curve's state and its derivatives with respect to controls and times.

@@ -53,8 +53,16 @@ class RootWrenchDerivatives {
 
   /// Root wrench at t (force then moment, root frame): value only.
   Vector6d wrench(double t);
-  /// Root wrench at t and its derivatives.
+  /// Root wrench at t and its derivatives (t fixed while the knots move).
   void wrench_jacobian(double t, LocalJacobian<6>& out);
+
+  /// The same at the point ξ ∈ [0, 1] of knot span `span`, t = k_s + ξ·(k_{s+1} − k_s): a
+  /// quadrature node that moves with the knots, so its derivatives with respect to the keyframe
+  /// times include the node's own motion. `span_length_rate` receives d(k_{s+1} − k_s)/dτ for
+  /// the time slots of `out`.
+  Vector6d wrench_on_span(int span, double xi);
+  void wrench_jacobian_on_span(int span, double xi, LocalJacobian<6>& out,
+                               Eigen::Matrix<double, 1, kMaxLocalTimes>& span_length_rate);
 
   /// Values only, in plain double (what the constraints need at a line-search trial point):
   /// the root translation and segment `segment`'s rotation (w, x, y, z) at keyframe i's time.
@@ -75,6 +83,11 @@ class RootWrenchDerivatives {
   /// Seeds the knots and builds the AD basis at keyframe i's time into the workspace, once per
   /// keyframe and point (every segment's rotation at that keyframe shares it).
   void prepare_keyframe(int keyframe);
+  /// Root wrench at t evaluated on `span` (values only).
+  Vector6d wrench_at(int span, double t);
+  /// Root wrench and derivatives at the AD time t on `span` (knots already seeded for it).
+  template <typename Time>
+  void wrench_jacobian_seeded(int span, const Time& t, LocalJacobian<6>& out);
   const BodyModel& model_;
   TrajectoryLayout layout_;
   TrajectoryReference reference_;

@@ -1,6 +1,7 @@
-#include "saltus/optim/joint_turn_penalty.h"
+#include "saltus/optim/terms/joint_turn_term.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "saltus/math/quaternion.h"
@@ -11,9 +12,8 @@ namespace {
 using TurnAD = Eigen::AutoDiffScalar<Eigen::Matrix<double, 6, 1>>;
 }  // namespace
 
-JointTurnPenalty::JointTurnPenalty(const TrajectoryLayout& layout,
-                                   const TrajectoryReference& reference, double limit,
-                                   double weight)
+JointTurnTerm::JointTurnTerm(const TrajectoryLayout& layout, const TrajectoryReference& reference,
+                             double limit, double weight)
     : layout_(layout), reference_control_(reference.joint_control), weight_(weight) {
   if (!(limit > 0)) throw std::invalid_argument("the joint turn limit must be positive");
   if (!(weight > 0)) throw std::invalid_argument("the joint turn weight must be positive");
@@ -24,9 +24,10 @@ JointTurnPenalty::JointTurnPenalty(const TrajectoryLayout& layout,
           std::max(limit, control_turn(reference_control_[k][j - 1], reference_control_[k][j]));
 }
 
-double JointTurnPenalty::evaluate(const double* x, double* gradient,
-                                  std::vector<ActivePair>* active) const {
+double JointTurnTerm::evaluate(const double* x, double* gradient, std::vector<ActivePair>* active,
+                               std::vector<double>* excess_of_pair) const {
   if (active) active->clear();
+  if (excess_of_pair) excess_of_pair->clear();
   double penalty = 0.0;
   // Segment 0 is the root: the whole body somersaults, so its turns are the skill's own.
   for (int k = 1; k < layout_.segment_count; ++k) {
@@ -43,6 +44,7 @@ double JointTurnPenalty::evaluate(const double* x, double* gradient,
       const Eigen::Quaterniond current = control(j);
       const double excess = control_turn(previous, current) - limit_[k][j];
       previous = current;
+      if (excess_of_pair) excess_of_pair->push_back(std::max(0.0, excess));
       if (excess <= 0) continue;
       penalty += weight_ * excess * excess;
       if (!gradient && !active) continue;
@@ -67,6 +69,28 @@ double JointTurnPenalty::evaluate(const double* x, double* gradient,
     }
   }
   return penalty;
+}
+
+void JointTurnTerm::add_curvature(NlpEvaluations& at, double factor, const HessianBand& band,
+                                  double* values) {
+  std::vector<ActivePair> active;
+  evaluate(at.x(), nullptr, &active);
+  // Gauss–Newton of ρ·r² with r = θ − L: 2ρ·∇θ∇θᵀ.
+  const double scale = 2.0 * factor * weight_;
+  for (const ActivePair& pair : active)
+    for (int a = 0; a < 6; ++a)
+      for (int b = 0; b < 6; ++b)
+        if (pair.variables[b] <= pair.variables[a])
+          values[band.index(pair.variables[a], pair.variables[b])] +=
+              scale * pair.turn_gradient[a] * pair.turn_gradient[b];
+}
+
+std::vector<double> JointTurnTerm::residuals(NlpEvaluations& at) {
+  std::vector<double> excess;
+  evaluate(at.x(), nullptr, nullptr, &excess);
+  for (double& r : excess)
+    r *= std::sqrt(weight_);
+  return excess;
 }
 
 }  // namespace saltus

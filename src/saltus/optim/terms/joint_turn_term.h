@@ -23,11 +23,11 @@
 
 #include <Eigen/Geometry>
 
-#include "saltus/optim/trajectory_layout.h"
+#include "saltus/optim/terms/objective_term.h"
 
 namespace saltus {
 
-class JointTurnPenalty {
+class JointTurnTerm : public ObjectiveTerm {
  public:
   /// A pair of controls past its limit: the 6 tangent coordinates (control j−1's, then j's)
   /// and the gradient of the turn with respect to them.
@@ -38,12 +38,24 @@ class JointTurnPenalty {
 
   /// @param limit   L's floor, rad (> 0)
   /// @param weight  ρ, in the objective's units per rad² (N²/rad² for the relaxed model)
-  JointTurnPenalty(const TrajectoryLayout& layout, const TrajectoryReference& reference,
-                   double limit, double weight);
+  JointTurnTerm(const TrajectoryLayout& layout, const TrajectoryReference& reference, double limit,
+                double weight);
+
+  std::string name() const override { return "joint turn"; }
+  double value(NlpEvaluations& at) override { return evaluate(at.x(), nullptr, nullptr); }
+  void add_gradient(NlpEvaluations& at, double* gradient) override {
+    evaluate(at.x(), gradient, nullptr);
+  }
+  /// 2ρ·∇θ∇θᵀ per active pair: both controls are neighbours on one curve, inside the band.
+  void add_curvature(NlpEvaluations& at, double factor, const HessianBand& band,
+                     double* values) override;
+  /// √ρ·(θ − L)₊ for every non-root joint and pair of consecutive controls.
+  std::vector<double> residuals(NlpEvaluations& at) override;
 
   /// The penalty at x. Adds its gradient to `gradient` and lists the active pairs (for the
-  /// Hessian) when given.
-  double evaluate(const double* x, double* gradient, std::vector<ActivePair>* active) const;
+  /// Hessian) when given; `excess` receives (θ − L)₊ of every pair when given.
+  double evaluate(const double* x, double* gradient, std::vector<ActivePair>* active,
+                  std::vector<double>* excess = nullptr) const;
 
   double weight() const { return weight_; }
 

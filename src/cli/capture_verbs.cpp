@@ -1,0 +1,183 @@
+#include "capture_verbs.h"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+#include "saltus/base/input_error.h"
+#include "saltus/formats/capture_files.h"
+
+namespace saltus_cli {
+
+namespace {
+
+std::string absolute(const std::string& path) {
+  return std::filesystem::absolute(path).lexically_normal().string();
+}
+
+/// A whole-string number, or InputError naming the option.
+double parse_number(const std::string& text, const std::string& option) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(v))
+    throw saltus::InputError(option, "", "expected a number, found \"" + text + "\"");
+  return v;
+}
+
+saltus::CaptureFileOptions import_options(const ImportArgs& args) {
+  saltus::CaptureFileOptions o;
+  o.model = args.model;
+  o.mapping = args.mapping;
+  if (args.keyframes == "all") {
+    o.import.all_keyframes = true;
+  } else if (!args.keyframes.empty()) {
+    const double n = parse_number(args.keyframes, "--keyframes");
+    if (n < 2 || n != static_cast<int>(n))
+      throw saltus::InputError(
+          "--keyframes", "",
+          "expected a whole number >= 2 or \"all\", found \"" + args.keyframes + "\"");
+    o.import.keyframe_count = static_cast<int>(n);
+  }
+  if (!args.flight.empty()) {
+    const std::size_t colon = args.flight.find(':');
+    if (colon == std::string::npos)
+      throw saltus::InputError("--flight", "",
+                               "expected START:END in seconds, found \"" + args.flight + "\"");
+    const double start = parse_number(args.flight.substr(0, colon), "--flight");
+    const double end = parse_number(args.flight.substr(colon + 1), "--flight");
+    if (!(start < end))
+      throw saltus::InputError("--flight", "", "START must be before END: \"" + args.flight + "\"");
+    o.import.flight = std::make_pair(start, end);
+  }
+  if (args.frame_time > 0) o.import.frame_time = args.frame_time;
+  return o;
+}
+
+void print_vector(const char* label, const Eigen::Vector3d& v, const char* unit) {
+  std::printf("%s (%.3g, %.3g, %.3g) %s", label, v.x(), v.y(), v.z(), unit);
+}
+
+int run_import(const ImportArgs& args) {
+  const auto start = std::chrono::steady_clock::now();
+  const saltus::CaptureFile capture =
+      saltus::import_capture_file(args.capture_path, import_options(args));
+  saltus::write_capture_outputs(args.out_dir, capture);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const saltus::CaptureImport& im = capture.import;
+  auto print_warnings = [&]() {
+    std::fflush(stdout);
+    for (const std::string& warning : im.warnings)
+      std::fprintf(stderr, "saltus import: warning: %s\n", warning.c_str());
+  };
+  if (args.quiet) {
+    print_warnings();
+    return 0;
+  }
+  const saltus::FlightPhase& f = im.flight;
+  std::printf(
+      "saltus import: %s\n  %d joints, %d frames at %.6g s (%s names, %s, %s up) onto %s "
+      "(%.1f kg)\n",
+      capture.path.c_str(), im.source_joints, im.source_frames, im.frame_time,
+      im.retargeting.mapping.convention.c_str(), im.retargeting.axes.unit.c_str(),
+      im.retargeting.axes.up_name.c_str(), capture.model.name.c_str(), capture.model.total_mass());
+  std::printf(
+      "  flight (%s): frames %d-%d, lift-off %.3f s, touch-down %.3f s (%.3f s); the motion "
+      "starts at frame %d, %.3f s long\n",
+      f.method.c_str(), f.first_frame, f.last_frame, f.liftoff_time, f.touchdown_time,
+      f.touchdown_time - f.liftoff_time, f.first_frame, im.captured.flight_time());
+  std::printf("  take-off CoM");
+  print_vector("", im.takeoff_fit.position, "m, velocity");
+  print_vector("", im.takeoff_fit.velocity, "m/s");
+  std::printf(" (parabola fit RMS %.3g m)\n", im.takeoff_fit.rms_residual_m);
+  print_vector("  angular momentum", im.angular_momentum.mean, "kg·m²/s");
+  std::printf(" (time average; standard deviation %.3g, max deviation %.3g)\n",
+              im.angular_momentum.standard_deviation.norm(), im.angular_momentum.max_deviation);
+  std::printf(
+      "  implied gravity %.3g m/s²; somersault %.0f deg in the flight, %.0f deg in the clip\n",
+      im.implied_gravity, im.somersault_flight_deg, im.somersault_clip_deg);
+  std::printf("  the capture's own residual: average root force sqrt(J/6) %.4g N\n",
+              im.metrics.avg_root_force);
+  std::printf("  %zu keyframes picked (max rotation error %.2f deg); their interpolation: %.4g N\n",
+              im.pick.frames.size(), im.pick.max_rotation_error_deg,
+              im.keyframes_metrics.avg_root_force);
+  std::printf(
+      "  wrote %s/{result.json, capture.motion.json, keyframes.motion.json, trajectory.csv, "
+      "model.json} in %.3f s\n",
+      absolute(args.out_dir).c_str(), seconds);
+  print_warnings();
+  return 0;
+}
+
+int run_export(const ExportArgs& args) {
+  const saltus::MotionFile source = saltus::load_export_source(args.source);
+  const double fps = args.fps > 0 ? args.fps : saltus::default_export_fps(source.motion);
+  const saltus::MocapClip clip = saltus::export_motion_bvh(source, args.out_path, fps);
+  if (!args.quiet)
+    std::printf(
+        "saltus export: %s\n  %d joints (model %s), %d frames at %.6g s (%.4g fps), cm, y up, "
+        "ZXY channels\n  wrote %s\n",
+        source.path.c_str(), clip.joint_count(), source.model.name.c_str(), clip.frame_count(),
+        clip.frame_time, 1.0 / clip.frame_time, absolute(args.out_path).c_str());
+  return 0;
+}
+
+}  // namespace
+
+void add_capture_verbs(CLI::App& app, CaptureVerbs& verbs) {
+  ImportArgs& im = verbs.import_args;
+  CLI::App* import = app.add_subcommand(
+      "import",
+      "Import a motion capture (BVH) onto the body model: retargeting, flight phase, take-off "
+      "CoM state and angular momentum, the capture's own residual, keyframes picked for "
+      "optimisation; writes result.json, capture.motion.json, keyframes.motion.json, "
+      "trajectory.csv, model.json");
+  import->add_option("CAPTURE", im.capture_path, "motion capture (*.bvh)")->required();
+  import->add_option("--out", im.out_dir, "output folder (replaced if it holds an earlier result)")
+      ->required();
+  import->add_option("--model", im.model,
+                     "body model (name under resources/models or path), default zatsiorsky-66kg");
+  import->add_option("--mapping", im.mapping,
+                     "skeleton mapping file (saltus-capture-mapping/1) for names no built-in "
+                     "convention knows");
+  import->add_option("--keyframes", im.keyframes,
+                     "keyframes for keyframes.motion.json: a count, or 'all'; default: the "
+                     "fewest whose interpolation meets every captured frame within tolerance");
+  import->add_option("--flight", im.flight,
+                     "the flight phase START:END in seconds of the clip, instead of finding it "
+                     "from the feet");
+  import->add_option("--frame-time", im.frame_time, "seconds per frame, instead of the file's")
+      ->check(CLI::PositiveNumber);
+  import->add_flag("--quiet,-q", im.quiet,
+                   "print nothing on success (warnings still go to stderr)");
+  verbs.import_command = import;
+
+  ExportArgs& ex = verbs.export_args;
+  CLI::App* exp = app.add_subcommand(
+      "export",
+      "Write a motion as a BVH file on the body model's skeleton (cm, y up, ZXY channels) for "
+      "Blender and other animation tools");
+  exp->add_option("SOURCE", ex.source,
+                  "motion file, capture, or result folder of optimize (optimized.motion.json) or "
+                  "import (capture.motion.json)")
+      ->required();
+  exp->add_option("--format", ex.format, "output format")
+      ->required()
+      ->check(CLI::IsMember({"bvh"}));
+  exp->add_option("--out", ex.out_path, "output file (*.bvh)")->required();
+  exp->add_option("--fps", ex.fps,
+                  "frames per second; default: the keyframes' rate when they are evenly spaced "
+                  "(a captured flight), else 60")
+      ->check(CLI::PositiveNumber);
+  exp->add_flag("--quiet,-q", ex.quiet, "print nothing on success");
+  verbs.export_command = exp;
+}
+
+std::optional<int> run_capture_verbs(const CaptureVerbs& verbs) {
+  if (verbs.import_command && verbs.import_command->parsed()) return run_import(verbs.import_args);
+  if (verbs.export_command && verbs.export_command->parsed()) return run_export(verbs.export_args);
+  return std::nullopt;
+}
+
+}  // namespace saltus_cli

@@ -1,0 +1,317 @@
+#include "saltus/formats/capture_files.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+
+#include "saltus/base/constants.h"
+#include "saltus/base/input_error.h"
+#include "saltus/base/resources.h"
+#include "saltus/capture/model_clip.h"
+#include "saltus/formats/bvh_file.h"
+#include "saltus/formats/capture_mapping_file.h"
+#include "saltus/formats/model_file.h"
+#include "saltus/formats/motion_file.h"
+#include "saltus/formats/output_folder.h"
+#include "saltus/formats/result_json.h"
+#include "saltus/formats/trajectory_csv.h"
+#include "saltus/motion/interpolate.h"
+
+namespace saltus {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+nlohmann::json vector_json(const Eigen::Vector3d& v) {
+  return {v.x(), v.y(), v.z()};
+}
+
+std::string resolve_model(const std::string& reference, const std::string& relative_to) {
+  if (fs::is_regular_file(reference)) return reference;
+  const std::string path = resolve_model_path(reference, relative_to);
+  if (path.empty())
+    throw InputError(reference, "",
+                     "body model not found (a file, or a name under resources/models)");
+  return path;
+}
+
+std::string lower(std::string s) {
+  for (char& c : s)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+std::string channel_list(const MocapJoint& joint) {
+  std::string out;
+  for (MocapChannel c : joint.channels)
+    out += std::string(out.empty() ? "" : " ") + mocap_channel_name(c);
+  return out;
+}
+
+const char* drive_kind(SegmentDrive::Kind kind) {
+  switch (kind) {
+    case SegmentDrive::Kind::kJoint:
+      return "joint";
+    case SegmentDrive::Kind::kAverage:
+      return "average";
+    case SegmentDrive::Kind::kHalfway:
+      return "halfway";
+    case SegmentDrive::Kind::kFollows:
+      return "follows parent";
+  }
+  return "?";
+}
+
+nlohmann::json skeleton_json(const MocapClip& clip) {
+  nlohmann::json joints = nlohmann::json::array();
+  for (const MocapJoint& joint : clip.joints) {
+    nlohmann::json sites = nlohmann::json::array();
+    for (const Eigen::Vector3d& site : joint.end_sites)
+      sites.push_back(vector_json(site));
+    joints.push_back({{"name", joint.name},
+                      {"parent", joint.parent < 0 ? nlohmann::json(nullptr)
+                                                  : nlohmann::json(clip.joints[joint.parent].name)},
+                      {"offset", vector_json(joint.offset)},
+                      {"channels", channel_list(joint)},
+                      {"end_sites", sites}});
+  }
+  return joints;
+}
+
+Motion named_motion(Motion motion, const std::string& model_field) {
+  motion.model = model_field;
+  return motion;
+}
+
+}  // namespace
+
+CaptureFile import_capture_file(const std::string& path, const CaptureFileOptions& options) {
+  CaptureFile capture;
+  capture.path = path;
+  capture.model_reference = options.model.empty() ? kDefaultCaptureModel : options.model;
+  capture.model = load_body_model(resolve_model(capture.model_reference, path));
+  capture.clip = load_bvh_file(path);
+  SkeletonMapping mapping;
+  try {
+    if (options.mapping.empty()) {
+      mapping = guess_skeleton_mapping(capture.clip);
+    } else {
+      capture.mapping_path = options.mapping;
+      const SkeletonMapping given = load_capture_mapping(options.mapping);
+      check_capture_mapping(given, capture.clip, options.mapping, path);
+      mapping = merge_skeleton_mapping(capture.clip, given);
+    }
+    CaptureImportOptions import_options = options.import;
+    if (import_options.name.empty()) import_options.name = fs::path(path).stem().string();
+    capture.import = import_capture(capture.clip, capture.model, mapping, import_options);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(path, "", e.what());
+  }
+  return capture;
+}
+
+nlohmann::json captured_motion_json(const CaptureFile& capture, const std::string& model_field) {
+  return motion_to_json(named_motion(capture.import.captured, model_field), capture.model);
+}
+
+nlohmann::json keyframes_motion_json(const CaptureFile& capture, const std::string& model_field) {
+  return motion_to_json(named_motion(capture.import.keyframes, model_field), capture.model);
+}
+
+nlohmann::json capture_result_json(const CaptureFile& capture) {
+  const CaptureImport& im = capture.import;
+  const Retargeting& rt = im.retargeting;
+  const BodyModel& model = capture.model;
+  nlohmann::json r;
+  r["format"] = "saltus-result/1";
+  r["status"] = "imported";
+  r["capture_file"] = capture.path;
+  r["model"] = model.name;
+
+  const CaptureAxes& axes = rt.axes;
+  r["source"] = {{"joints", im.source_joints},
+                 {"frames", im.source_frames},
+                 {"frame_time_stated_s", im.stated_frame_time},
+                 {"frame_time_used_s", im.frame_time},
+                 {"duration_s", (im.source_frames - 1) * im.frame_time},
+                 {"unit", axes.unit},
+                 {"unit_detected", axes.unit_detected},
+                 {"metres_per_unit", axes.metres_per_unit},
+                 {"rest_height_m", axes.rest_height_m},
+                 {"up_axis", axes.up_name},
+                 {"up_detected", axes.up_detected},
+                 {"skeleton", skeleton_json(capture.clip)}};
+
+  nlohmann::json segments = nlohmann::json::object();
+  for (int s = 0; s < model.size(); ++s) {
+    const SegmentDrive& drive = rt.drives[s];
+    nlohmann::json joints = nlohmann::json::array();
+    for (int j : drive.joints)
+      joints.push_back(capture.clip.joints[j].name);
+    nlohmann::json entry = {{"rule", drive_kind(drive.kind)},
+                            {"source_joints", joints},
+                            {"weights", drive.weights},
+                            {"description", drive.description}};
+    if (drive.along_bone) {
+      entry["rest"] = "along the source bone";
+      entry["rest_bone_to"] = drive.rest_direction_to;
+      entry["rest_correction_deg"] =
+          rotation_angle_between(drive.rest_correction, Eigen::Quaterniond::Identity()) *
+          kDegreesPerRadian;
+    } else {
+      entry["rest"] = "upright (the source's rest pose)";
+    }
+    segments[model.segments[s].name] = entry;
+  }
+  nlohmann::json unused = nlohmann::json::array();
+  for (const auto& [name, reason] : rt.unused_joints)
+    unused.push_back({{"name", name}, {"reason", reason}});
+  r["mapping"] = {
+      {"convention", rt.mapping.convention},
+      {"mapping_file", capture.mapping_path.empty() ? nlohmann::json(nullptr)
+                                                    : nlohmann::json(capture.mapping_path)},
+      {"pelvis", capture.clip.joints[rt.pelvis_joint].name},
+      {"thorax", capture.clip.joints[rt.thorax_joint].name},
+      {"segments", segments},
+      {"unused_joints", unused}};
+  r["heading"] = {{"yaw_deg", im.heading_yaw_deg}, {"rule", im.heading_rule}};
+
+  const FlightPhase& f = im.flight;
+  const double motion_start = f.first_frame * im.frame_time;
+  r["flight"] = {
+      {"method", f.method},
+      {"first_frame", f.first_frame},
+      {"last_frame", f.last_frame},
+      {"frames", f.frame_count()},
+      {"liftoff_s", f.liftoff_time},
+      {"touchdown_s", f.touchdown_time},
+      {"duration_s", f.touchdown_time - f.liftoff_time},
+      {"motion_start_s", motion_start},
+      {"motion_duration_s", im.captured.flight_time()},
+      {"ground_height_m", {f.ground_height[0], f.ground_height[1]}},
+      {"contact_rule",
+       "a foot is on the ground when its lowest point (ankle, toes, End Sites) is within " +
+           std::to_string(CaptureImportOptions{}.contact.height_tolerance_m) +
+           " m of its ground level (the 20th percentile of its heights) in a stretch of low "
+           "frames where it stands still at some frame (slower than " +
+           std::to_string(CaptureImportOptions{}.contact.speed_tolerance_m_s) +
+           " m/s); the flight is the longest stretch with both feet off; lift-off and "
+           "touch-down interpolate where the lower foot crosses the contact height"}};
+
+  const AngularMomentumSummary& l = im.angular_momentum;
+  r["takeoff"] = {
+      {"time_s", motion_start},
+      {"com_position", vector_json(im.takeoff_fit.position)},
+      {"com_velocity", vector_json(im.takeoff_fit.velocity)},
+      {"com_fit",
+       "parabola with g = 9.81 m/s² fixed, least squares over the flight frames' "
+       "model CoM"},
+      {"com_fit_rms_m", im.takeoff_fit.rms_residual_m},
+      {"com_fit_max_m", im.takeoff_fit.max_residual_m},
+      {"angular_momentum", vector_json(l.mean)},
+      {"angular_momentum_std", vector_json(l.standard_deviation)},
+      {"angular_momentum_max_deviation", l.max_deviation},
+      {"angular_momentum_samples", l.samples},
+      {"angular_momentum_rule",
+       "time average over the flight of the angular momentum about the CoM from inverse "
+       "dynamics of the interpolated capture with the model's masses (the capture's own "
+       "trajectory, sampled as trajectory.csv)"}};
+  r["gravity"] = {
+      {"implied_m_s2", im.implied_gravity},
+      {"free_fit_acceleration", vector_json(im.free_fit.acceleration)},
+      {"free_fit_rms_m", im.free_fit.rms_residual_m},
+      {"suggested_frame_time_s", im.suggested_frame_time ? nlohmann::json(*im.suggested_frame_time)
+                                                         : nlohmann::json(nullptr)}};
+  r["somersault_deg"] = {{"flight", im.somersault_flight_deg}, {"clip", im.somersault_clip_deg}};
+
+  r["capture"] = {{"keyframes", im.captured.keyframes.size()},
+                  {"samples", im.samples.size()},
+                  {"residual", force_metrics_to_json(im.metrics)}};
+  std::vector<int> clip_frames;
+  std::vector<double> times;
+  for (int k : im.pick.frames) {
+    clip_frames.push_back(f.first_frame + k);
+    times.push_back(im.captured.keyframes[k].time);
+  }
+  r["keyframes"] = {{"count", im.pick.frames.size()},
+                    {"clip_frames", clip_frames},
+                    {"times", times},
+                    {"rule", im.pick.rule},
+                    {"max_quaternion_error", im.pick.max_quaternion_error},
+                    {"max_rotation_error_deg", im.pick.max_rotation_error_deg},
+                    {"tolerances",
+                     {{"translation_m", im.keyframes.tolerances.translation_m},
+                      {"quaternion", im.keyframes.tolerances.quaternion}}},
+                    {"before", force_metrics_to_json(im.keyframes_metrics)}};
+  r["warnings"] = im.warnings;
+  return r;
+}
+
+nlohmann::json write_capture_outputs(const std::string& out_dir, const CaptureFile& capture) {
+  const nlohmann::json result = capture_result_json(capture);
+  OutputFolder folder(out_dir);
+  write_text(folder.file("capture.motion.json"),
+             captured_motion_json(capture, "model.json").dump(2) + "\n");
+  write_text(folder.file("keyframes.motion.json"),
+             keyframes_motion_json(capture, "model.json").dump(2) + "\n");
+  std::ostringstream csv;
+  write_trajectory_csv(csv, capture.model, capture.import.samples);
+  write_text(folder.file("trajectory.csv"), csv.str());
+  write_text(folder.file("model.json"), body_model_to_json(capture.model).dump(2) + "\n");
+  write_text(folder.file("result.json"), result.dump(2) + "\n");
+  folder.commit();
+  return result;
+}
+
+bool is_capture_path(const std::string& path) {
+  return lower(fs::path(path).extension().string()) == ".bvh";
+}
+
+MotionFile load_motion_or_capture(const std::string& path, const std::string& model_override) {
+  if (!is_capture_path(path)) return load_motion_file(path, model_override);
+  CaptureFileOptions options;
+  options.model = model_override;
+  const CaptureFile capture = import_capture_file(path, options);
+  MotionFile out;
+  out.path = path;
+  out.model = capture.model;
+  out.motion = capture.import.keyframes;
+  out.motion.model = capture.model_reference;
+  return out;
+}
+
+MotionFile load_export_source(const std::string& path) {
+  if (!fs::is_directory(path)) return load_motion_or_capture(path);
+  for (const char* name : {"optimized.motion.json", "capture.motion.json"}) {
+    const fs::path candidate = fs::path(path) / name;
+    if (fs::is_regular_file(candidate)) return load_motion_file(candidate.string());
+  }
+  throw InputError(path, "",
+                   "the folder holds no optimized.motion.json (saltus optimize) or "
+                   "capture.motion.json (saltus import)");
+}
+
+double default_export_fps(const Motion& motion) {
+  const auto& k = motion.keyframes;
+  if (k.size() >= 3) {
+    const double step = k[1].time - k[0].time;
+    bool even = step > 0;
+    for (std::size_t i = 1; even && i < k.size(); ++i)
+      even = std::abs((k[i].time - k[i - 1].time) - step) <= 1e-9 * std::max(1.0, step);
+    if (even) return 1.0 / step;
+  }
+  return 60.0;
+}
+
+MocapClip export_motion_bvh(const MotionFile& motion, const std::string& out_path, double fps) {
+  const Trajectory<double> trajectory = motion_trajectory(motion.motion, motion.model);
+  const MocapClip clip = motion_clip(motion.model, trajectory, fps);
+  save_bvh_file(out_path, clip);
+  return clip;
+}
+
+}  // namespace saltus

@@ -1,0 +1,69 @@
+#pragma once
+/// @file
+/// Motion-capture files in and out: `saltus import` (a BVH file onto the body model, its output
+/// folder), the motion verbs' `.bvh` arguments, and `saltus export --format bvh`.
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "saltus/capture/capture_import.h"
+#include "saltus/motion/motion.h"
+
+namespace saltus {
+
+/// The body model a capture is imported onto when none is given.
+inline constexpr const char* kDefaultCaptureModel = "zatsiorsky-66kg";
+
+struct CaptureFileOptions {
+  std::string model;    ///< name under resources/models or a path; "" = kDefaultCaptureModel
+  std::string mapping;  ///< "saltus-capture-mapping/1" file, "" = by joint names
+  CaptureImportOptions import;
+};
+
+/// A capture file imported onto a model.
+struct CaptureFile {
+  std::string path;             ///< the BVH file
+  std::string mapping_path;     ///< "" when mapped by names
+  std::string model_reference;  ///< as given (name or path)
+  BodyModel model;
+  MocapClip clip;
+  CaptureImport import;
+};
+
+/// Reads the BVH file, the model and the mapping file and imports. Every problem with the input
+/// is an InputError naming the file (and the line of the BVH file or the JSON path of the
+/// mapping file).
+CaptureFile import_capture_file(const std::string& path, const CaptureFileOptions& options = {});
+
+/// result.json of an import ("format": "saltus-result/1", "status": "imported").
+nlohmann::json capture_result_json(const CaptureFile& capture);
+
+/// The two motion files (captured flight, picked keyframes), naming the model by `model_field`.
+nlohmann::json captured_motion_json(const CaptureFile& capture, const std::string& model_field);
+nlohmann::json keyframes_motion_json(const CaptureFile& capture, const std::string& model_field);
+
+/// Writes result.json, capture.motion.json, keyframes.motion.json, trajectory.csv and
+/// model.json (the motion files name it, so the folder is self-contained) into `out_dir`
+/// atomically. Returns the result.json written.
+nlohmann::json write_capture_outputs(const std::string& out_dir, const CaptureFile& capture);
+
+/// True for a path the motion verbs read as a capture (".bvh", any case).
+bool is_capture_path(const std::string& path);
+
+/// A motion file, or a capture imported with the defaults (its picked keyframes), with its model.
+MotionFile load_motion_or_capture(const std::string& path, const std::string& model_override = "");
+
+/// What `saltus export` reads: a motion file, a capture, or a result folder of `optimize`
+/// (optimized.motion.json) or `import` (capture.motion.json). InputError when a folder holds
+/// neither.
+MotionFile load_export_source(const std::string& path);
+
+/// The default frame rate of an export: the keyframes' own rate when they are evenly spaced (a
+/// captured flight exports its frames), else 60 frames per second.
+double default_export_fps(const Motion& motion);
+
+/// Writes the motion's trajectory as a BVH file on the model's skeleton (capture/model_clip.h),
+/// atomically. Returns the clip written.
+MocapClip export_motion_bvh(const MotionFile& motion, const std::string& out_path, double fps);
+
+}  // namespace saltus

@@ -1,0 +1,257 @@
+// `saltus import` and `saltus export`: the documented outputs, bad input (exit status 2, a
+// message naming the file and the line or field, nothing written), mapping files, the motion
+// verbs reading a .bvh, the export/import round trip, and optimising a real capture's keyframes.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "saltus/formats/motion_file.h"
+#include "saltus/formats/trajectory_csv.h"
+#include "saltus/math/quaternion.h"
+#include "support/cli_runner.h"
+
+namespace saltus {
+namespace {
+
+namespace fs = std::filesystem;
+using test::run_cli;
+using test::TempDir;
+
+std::string shared_capture(const std::string& name) {
+  const std::string path = std::string(SALTUS_SHARED_MOCAP_DIR) + "/" + name;
+  if (!fs::is_regular_file(path))
+    throw std::runtime_error("the shared capture " + path +
+                             " is missing (configure with -DSALTUS_SHARED_MOCAP_DIR=<folder>)");
+  return path;
+}
+
+std::string m1_path() {
+  return std::string(SALTUS_EXAMPLES_DIR) + "/motions/M1-straight-back-somersault.motion.json";
+}
+
+nlohmann::json read_json(const std::string& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void write_text(const std::string& path, const std::string& text) {
+  std::ofstream(path) << text;
+}
+
+std::set<std::string> folder_contents(const fs::path& folder) {
+  std::set<std::string> found;
+  for (const auto& entry : fs::directory_iterator(folder))
+    found.insert(entry.path().filename().string());
+  return found;
+}
+
+/// Largest joint rotation difference between two motions' keyframes, from `first_joint` on.
+double rotation_difference(const Motion& a, const Motion& b, int first_joint = 0) {
+  EXPECT_EQ(a.keyframes.size(), b.keyframes.size());
+  double worst = 0.0;
+  for (std::size_t k = 0; k < std::min(a.keyframes.size(), b.keyframes.size()); ++k)
+    for (std::size_t s = first_joint; s < a.keyframes[k].rotations.size(); ++s)
+      worst = std::max(
+          worst, rotation_angle_between(a.keyframes[k].rotations[s], b.keyframes[k].rotations[s]));
+  return worst;
+}
+
+TEST(CaptureCli, ImportWritesTheDocumentedOutputs) {
+  const TempDir dir;
+  const auto run =
+      run_cli("import " + shared_capture("deepmimic-backflip.bvh") + " --out " + (dir / "out"));
+  ASSERT_EQ(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find("flight (feet): frames 11-18"), std::string::npos) << run.output;
+  EXPECT_EQ(folder_contents(dir.path()), std::set<std::string>{"out"});
+  EXPECT_EQ(folder_contents(dir.path() / "out"),
+            (std::set<std::string>{"result.json", "capture.motion.json", "keyframes.motion.json",
+                                   "trajectory.csv", "model.json"}));
+  const nlohmann::json r = read_json(dir / "out/result.json");
+  EXPECT_EQ(r["status"], "imported");
+  EXPECT_EQ(r["source"]["frames"], 29);
+  EXPECT_EQ(r["source"]["skeleton"].size(), 13u);
+  EXPECT_EQ(r["mapping"]["convention"], "DeepMimic");
+  EXPECT_EQ(r["mapping"]["segments"]["abdomen"]["rule"], "halfway");
+  EXPECT_EQ(r["mapping"]["segments"]["pelvis"]["source_joints"][0], "root");
+  EXPECT_EQ(r["mapping"]["segments"]["forearm_l"]["source_joints"][0], "left_elbow");
+  EXPECT_EQ(r["mapping"]["unused_joints"][0]["name"], "neck");
+  EXPECT_EQ(r["flight"]["first_frame"], 11);
+  for (const char* key : {"liftoff_s", "touchdown_s", "duration_s", "method"})
+    EXPECT_TRUE(r["flight"].contains(key)) << key;
+  for (const char* key : {"com_position", "com_velocity", "com_fit_rms_m", "angular_momentum",
+                          "angular_momentum_std", "angular_momentum_max_deviation"})
+    EXPECT_TRUE(r["takeoff"].contains(key)) << key;
+  EXPECT_TRUE(r["gravity"]["implied_m_s2"].is_number());
+  EXPECT_TRUE(r["warnings"].is_array());
+  EXPECT_NE(r["keyframes"]["rule"].get<std::string>().find("tolerance"), std::string::npos);
+  EXPECT_TRUE(r["capture"]["residual"]["avg_root_force"].is_number());
+
+  // The motion files load (naming the model copy beside them) and agree with result.json.
+  const MotionFile captured = load_motion_file(dir / "out/capture.motion.json");
+  const MotionFile keyframes = load_motion_file(dir / "out/keyframes.motion.json");
+  EXPECT_EQ(captured.motion.keyframes.size(), 8u);
+  EXPECT_EQ(keyframes.motion.keyframes.size(), r["keyframes"]["count"].get<std::size_t>());
+  EXPECT_NEAR(captured.motion.takeoff.angular_momentum->x(),
+              r["takeoff"]["angular_momentum"][0].get<double>(), 1e-12);
+  // trajectory.csv: the documented columns, the capture's flight.
+  const CsvTable csv = read_csv_table(dir / "out/trajectory.csv");
+  EXPECT_EQ(csv.columns, trajectory_csv_header(captured.model));
+  EXPECT_NEAR(csv.rows.back()[0], captured.motion.flight_time(), 1e-12);
+}
+
+TEST(CaptureCli, BadInputExitsWithTwoNamesTheProblemAndWritesNothing) {
+  const TempDir dir;
+  const std::string good = read_text(shared_capture("deepmimic-backflip.bvh"));
+  std::string broken = good;
+  broken.replace(broken.find("Zrotation Xrotation Yrotation"), 9, "Wrotation");
+  write_text(dir / "broken.bvh", broken);
+  write_text(dir / "good.bvh", good);
+  std::string unknown = good;
+  for (const std::string name : {"left_hip", "right_hip"})
+    unknown.replace(unknown.find(name), name.size(), name == "left_hip" ? "LH" : "RH");
+  write_text(dir / "unknown.bvh", unknown);
+  write_text(dir / "map.json",
+             R"({"format": "saltus-capture-mapping/1", "joints": {"thigh_l": "nope"}})");
+  const std::string out = " --out " + (dir / "out");
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"import " + (dir / "broken.bvh"), "broken.bvh: line 5: joint \"root\": unknown channel"},
+      {"import " + (dir / "missing.bvh"), "missing.bvh: cannot open the file"},
+      {"import " + (dir / "good.bvh") + " --keyframes 1", "--keyframes: expected a whole number"},
+      {"import " + (dir / "good.bvh") + " --keyframes 30",
+       "good.bvh: the keyframe count must be 2 to 8"},
+      {"import " + (dir / "good.bvh") + " --flight 1:0.5", "--flight: START must be before END"},
+      {"import " + (dir / "good.bvh") + " --flight 0.7:0.75", "holds fewer than 3"},
+      {"import " + (dir / "unknown.bvh"), "unknown.bvh: no naming convention fits"},
+      {"import " + (dir / "good.bvh") + " --mapping " + (dir / "map.json"),
+       "map.json: /joints/thigh_l: joint \"nope\" is not in"},
+      {"import " + (dir / "good.bvh") + " --model no-such-model", "no-such-model: body model"},
+      {"export " + dir.path().string() + " --format bvh --out " + (dir / "x.bvh"),
+       "holds no optimized.motion.json"},
+      {"export " + m1_path() + " --format fbx --out " + (dir / "x.bvh"), "--format"}};
+  for (const auto& [arguments, message] : cases) {
+    const auto run = run_cli(arguments + (arguments.rfind("import", 0) == 0 ? out : ""));
+    EXPECT_EQ(run.status, 2) << arguments << "\n" << run.output;
+    EXPECT_NE(run.output.find(message), std::string::npos) << arguments << "\n" << run.output;
+    EXPECT_FALSE(fs::exists(dir / "out")) << arguments;
+    EXPECT_FALSE(fs::exists(dir / "x.bvh")) << arguments;
+  }
+}
+
+TEST(CaptureCli, AMappingFileMapsNamesNoConventionKnows) {
+  const TempDir dir;
+  // M1 on the model's skeleton, then every joint renamed.
+  ASSERT_EQ(
+      run_cli("export " + m1_path() + " --format bvh --fps 25 --out " + (dir / "m1.bvh")).status,
+      0);
+  std::string text = read_text(dir / "m1.bvh");
+  const std::map<std::string, std::string> names{
+      {"abdomen", "Belly"},      {"pelvis", "Hip Block"}, {"thorax", "Upper Body"},
+      {"upper_arm_l", "L.Arm1"}, {"forearm_l", "L.Arm2"}, {"upper_arm_r", "R.Arm1"},
+      {"forearm_r", "R.Arm2"},   {"thigh_l", "L.Leg1"},   {"shank_l", "L.Leg2"},
+      {"foot_l", "L.Leg3"},      {"thigh_r", "R.Leg1"},   {"shank_r", "R.Leg2"},
+      {"foot_r", "R.Leg3"}};
+  nlohmann::json joints;
+  for (const auto& [from, to] : names) {
+    const std::string key = (from == "abdomen" ? "ROOT " : "JOINT ") + from + "\n";
+    ASSERT_NE(text.find(key), std::string::npos) << key;
+    text.replace(text.find(key), key.size(), (from == "abdomen" ? "ROOT " : "JOINT ") + to + "\n");
+    joints[from] = to;
+  }
+  write_text(dir / "renamed.bvh", text);
+  write_text(
+      dir / "map.json",
+      nlohmann::json{
+          {"format", "saltus-capture-mapping/1"}, {"unit", "cm"}, {"up", "y"}, {"joints", joints}}
+          .dump(2));
+  EXPECT_EQ(run_cli("import " + (dir / "renamed.bvh") + " --out " + (dir / "a")).status, 2);
+  const auto mapped = run_cli("import " + (dir / "renamed.bvh") + " --mapping " +
+                              (dir / "map.json") + " --out " + (dir / "a"));
+  ASSERT_EQ(mapped.status, 0) << mapped.output;
+  const auto own = run_cli("import " + (dir / "m1.bvh") + " --out " + (dir / "b"));
+  ASSERT_EQ(own.status, 0) << own.output;
+  EXPECT_EQ(read_json(dir / "a/result.json")["mapping"]["convention"], "mapping file");
+  // Below the root the joint rotations are the same; the root differs by the heading turn that
+  // a foreign skeleton gets (Saltus's own keeps its heading).
+  EXPECT_LT(rotation_difference(load_motion_file(dir / "a/capture.motion.json").motion,
+                                load_motion_file(dir / "b/capture.motion.json").motion, 1),
+            1e-9);
+}
+
+TEST(CaptureCli, ExportedImportsGiveBackTheSameJointRotations) {
+  const TempDir dir;
+  ASSERT_EQ(
+      run_cli("import " + shared_capture("deepmimic-backflip.bvh") + " --out " + (dir / "first"))
+          .status,
+      0);
+  const auto exported =
+      run_cli("export " + (dir / "first") + " --format bvh --out " + (dir / "flight.bvh"));
+  ASSERT_EQ(exported.status, 0) << exported.output;
+  const std::string text = read_text(dir / "flight.bvh");
+  EXPECT_EQ(text.rfind("HIERARCHY\nROOT abdomen\n", 0), 0u);
+  EXPECT_NE(text.find("CHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation Yrotation"),
+            std::string::npos);
+  EXPECT_NE(text.find("Frame Time: 0.0625\n"), std::string::npos);  // the capture's own rate
+  const auto again = run_cli("import " + (dir / "flight.bvh") + " --out " + (dir / "second"));
+  ASSERT_EQ(again.status, 0) << again.output;
+  const Motion first = load_motion_file(dir / "first/capture.motion.json").motion;
+  const Motion second = load_motion_file(dir / "second/capture.motion.json").motion;
+  const double difference = rotation_difference(first, second);
+  std::printf("import -> export -> import: largest joint rotation difference %.3g rad\n",
+              difference);
+  EXPECT_LT(difference, 1e-6);
+}
+
+TEST(CaptureCli, MotionVerbsReadACapture) {
+  const TempDir dir;
+  const auto run = run_cli("evaluate " + shared_capture("deepmimic-backflip.bvh") + " --out " +
+                           (dir / "evaluated"));
+  ASSERT_EQ(run.status, 0) << run.output;
+  const auto imported =
+      run_cli("import " + shared_capture("deepmimic-backflip.bvh") + " --out " + (dir / "i"));
+  ASSERT_EQ(imported.status, 0);
+  EXPECT_EQ(read_json(dir / "evaluated/result.json")["keyframes"],
+            read_json(dir / "i/result.json")["keyframes"]["count"]);
+}
+
+TEST(CaptureCli, OptimisingTheImportedDeepMimicKeyframesSolves) {
+  const TempDir dir;
+  ASSERT_EQ(run_cli("import " + shared_capture("deepmimic-backflip.bvh") + " --out " + (dir / "i"))
+                .status,
+            0);
+  // Default settings, then knots refined once; each checked by a dense evaluation of the
+  // optimised motion (the residual as a time integral, not only on the optimiser's grid).
+  for (const std::string knots : {"1", "2"}) {
+    const std::string out = dir / ("opt" + knots);
+    const auto run = run_cli("optimize " + (dir / "i/keyframes.motion.json") + " --out " + out +
+                             " --knots-per-interval " + knots + " --quiet");
+    EXPECT_EQ(run.status, 0) << run.output;
+    const nlohmann::json r = read_json(out + "/result.json");
+    EXPECT_EQ(r["status"], "solved");
+    ASSERT_EQ(run_cli("evaluate " + out + "/optimized.motion.json --samples 4001 --quiet --out " +
+                      out + "-dense")
+                  .status,
+              0);
+    const double dense = read_json(out + "-dense/result.json")["before"]["avg_root_force"];
+    std::printf(
+        "DeepMimic keyframes, K = %s: %.4g N before, %.4g N after (%.4g N on 4001 "
+        "samples)\n",
+        knots.c_str(), r["before"]["avg_root_force"].get<double>(),
+        r["after"]["avg_root_force"].get<double>(), dense);
+    EXPECT_LT(dense, knots == "1" ? 2.0 : 1.0);
+  }
+}
+
+}  // namespace
+}  // namespace saltus
