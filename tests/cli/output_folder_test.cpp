@@ -142,6 +142,34 @@ TEST(OutputFolder, ReplacesItsOwnResultsOnlyWhileTheyHoldOnlyItsFiles) {
   EXPECT_EQ(hidden_in(dir.path()), std::set<std::string>{});
 }
 
+TEST(OutputFolder, ImportReplacesItsOwnResultAndNothingElse) {
+  // `saltus import` writes a saltus-result/1 with status "imported" and five files: running it
+  // again to the same --out replaces that folder; an evaluate result there is not replaced by
+  // an import's files plus leftovers, and a user's file stops it.
+  TempDir dir;
+  const std::string bvh = dir / "m1.bvh";
+  ASSERT_EQ(run_cli("export " + test::m1_path() + " --format bvh --out " + bvh + " -q").status, 0);
+  const std::string out = dir / "imported";
+  const auto first = run_cli("import " + bvh + " --out " + out + " -q");
+  ASSERT_EQ(first.status, 0) << first.output;
+  const std::set<std::string> files = names_in(out);
+  EXPECT_EQ(read_json(out + "/result.json")["status"], "imported");
+  const auto again = run_cli("import " + bvh + " --out " + out + " -q");
+  EXPECT_EQ(again.status, 0) << again.output;
+  EXPECT_EQ(names_in(out), files);
+  // Any verb may replace an import's folder, and an import may replace an earlier evaluate.
+  ASSERT_EQ(run_cli(evaluate(out, 11)).status, 0);
+  EXPECT_EQ(names_in(out), kEvaluateFiles);
+  EXPECT_EQ(run_cli("import " + bvh + " --out " + out + " -q").status, 0);
+  EXPECT_EQ(names_in(out), files);
+  test::write_text(out + "/notes.txt", "mine");
+  const auto refused = run_cli("import " + bvh + " --out " + out + " -q");
+  EXPECT_EQ(refused.status, 2) << refused.output;
+  EXPECT_NE(refused.output.find("notes.txt"), std::string::npos) << refused.output;
+  EXPECT_EQ(test::read_text(out + "/notes.txt"), "mine");
+  EXPECT_EQ(hidden_in(dir.path()), std::set<std::string>{});
+}
+
 /// Killed by SIGKILL (the shell may report it as 128 + 9).
 bool killed(const test::CliRun& run) {
   return run.status == -1 || run.status == 128 + SIGKILL;

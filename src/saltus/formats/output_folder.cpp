@@ -64,12 +64,13 @@ const std::vector<ResultKind>& result_kinds() {
       // saltus paper: report.md, one result folder per run (M1/, mass/, convergence/, ...) and
       // the app's figures (saltus-gui --export-figures DIR/figures ...).
       {"paper", "saltus-report/1", "", {}, {"result.json", "report.md"}, {"figures"}, true},
-      // saltus import (issue 14).
+      // saltus import (formats/capture_files).
       {"import",
-       "saltus-import/1",
-       "",
-       {},
-       {"result.json", "capture.motion.json", "keyframes.motion.json", "trajectory.csv"},
+       "saltus-result/1",
+       "status",
+       {"imported"},
+       {"result.json", "capture.motion.json", "keyframes.motion.json", "trajectory.csv",
+        "model.json"},
        {},
        false},
   };
