@@ -147,6 +147,7 @@ int run_simulate(const CommonArgs& args) {
 
 struct OptimizeArgs {
   CommonArgs common;
+  std::string knots = "auto";
   std::string formulation = "relaxed";
   double epsilon = 100.0;
   bool no_timing = false;
@@ -160,6 +161,22 @@ struct OptimizeArgs {
 
 void add_optimize(CLI::App* cmd, OptimizeArgs& args) {
   add_common(cmd, args.common);
+  cmd->remove_option(cmd->get_option("--knots-per-interval"));
+  cmd->add_option("--knots-per-interval", args.knots,
+                  "knot spans per keyframe interval: 'auto' (chosen from the motion, then "
+                  "refined where the residual lives) or a number (1 = knots at the keyframes, "
+                  "the paper's resolution)")
+      ->check([](const std::string& value) -> std::string {
+        if (value == "auto") return "";
+        try {
+          std::size_t used = 0;
+          const int k = std::stoi(value, &used);
+          if (used == value.size() && k >= 1 && k <= 50) return "";
+        } catch (const std::exception&) {
+        }
+        return "must be 'auto' or a whole number from 1 to 50, got '" + value + "'";
+      })
+      ->capture_default_str();
   cmd->add_option("--formulation", args.formulation,
                   "relaxed: minimise the root force (the paper's model); strict: classic "
                   "spacetime constraints |F_i| <= epsilon at every sample")
@@ -207,7 +224,8 @@ int run_optimize(const OptimizeArgs& args) {
       args.formulation == "strict" ? saltus::Formulation::kStrict : saltus::Formulation::kRelaxed;
   options.nlp.epsilon = args.epsilon;
   options.nlp.optimize_timing = !args.no_timing;
-  options.nlp.knots_per_interval = args.common.knots_per_interval;
+  options.automatic_resolution = args.knots == "auto";
+  options.nlp.knots_per_interval = options.automatic_resolution ? 1 : std::stoi(args.knots);
   options.nlp.samples = args.common.samples;
   options.nlp.max_time_shift = args.max_time_shift;
   options.nlp.regularization = args.regularization;
@@ -235,12 +253,22 @@ int run_optimize(const OptimizeArgs& args) {
                 args.formulation.c_str(), result.variables, result.constraints,
                 result.solve.status.c_str(), result.solve.ipopt_status.c_str(),
                 result.solve.iterations, result.solve.seconds);
-    if (result.knots_per_interval != args.common.knots_per_interval)
+    if (options.automatic_resolution) {
+      std::printf("  automatic resolution:");
+      for (const auto& level : result.levels) {
+        std::printf(" [");
+        for (std::size_t i = 0; i < level.subdivisions.size(); ++i)
+          std::printf("%s%d", i ? "," : "", level.subdivisions[i]);
+        std::printf("] %.3g N;", level.avg_root_force);
+      }
+      std::printf(" knot spans per keyframe interval, true average root force\n");
+    } else if (result.knots_per_interval != options.nlp.knots_per_interval) {
       std::printf(
           "  knots refined to %d per keyframe interval: on %d the interpolation misses the "
           "keyframes by more than their tolerance (a turn of more than 180 deg between control "
           "points)\n",
-          result.knots_per_interval, args.common.knots_per_interval);
+          result.knots_per_interval, options.nlp.knots_per_interval);
+    }
     if (result.solve.restarts > 0)
       std::printf("  the solver restarted %d time(s) from its best feasible iterate\n",
                   result.solve.restarts);
@@ -302,6 +330,8 @@ void add_study_common(CLI::App* cmd, StudyArgs& args) {
 
 saltus::OptimizeOptions study_optimize_options(const StudyArgs& args) {
   saltus::OptimizeOptions o;
+  // The studies reproduce the paper's protocol at its resolution (knots at the keyframes).
+  o.automatic_resolution = false;
   o.nlp.samples = args.samples;
   o.solver.max_iterations = args.max_iterations;
   return o;

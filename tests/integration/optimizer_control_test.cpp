@@ -85,7 +85,8 @@ TEST(OptimizerControl, RefinesTheKnotsWhenTheInterpolationMissesTheKeyframes) {
                                            "/motions/M3-tucked-double-back.motion.json");
   const Motion disturbed = disturb_keyframe_times(file.motion, 0.1, 1);
   OptimizeOptions options;
-  options.solver.max_iterations = 0;  // only the start matters here
+  options.automatic_resolution = false;  // the paper's knots, refined only by this rule
+  options.solver.max_iterations = 0;     // only the start matters here
   options.refine_when_keyframes_missed = false;
   const OptimizationResult as_asked = optimize_motion(disturbed, file.model, options);
   EXPECT_EQ(as_asked.knots_per_interval, 1);
@@ -109,7 +110,9 @@ TEST(OptimizerControl, KeepsEveryJointWithinHalfATurnBetweenControlPoints) {
   // two control points (the spline's log has its branch point at 2π).
   const MotionFile file = load_motion_file(std::string(SALTUS_EXAMPLES_DIR) +
                                            "/motions/M3-tucked-double-back.motion.json");
-  const OptimizationResult result = optimize_motion(file.motion, file.model, {});
+  OptimizeOptions paper;
+  paper.automatic_resolution = false;
+  const OptimizationResult result = optimize_motion(file.motion, file.model, paper);
   ASSERT_TRUE(result.solve.solved) << result.solve.status;
   ASSERT_EQ(result.knots_per_interval, 1);
   // Root (segment 0) excluded: the whole body somersaults.
@@ -146,6 +149,7 @@ TEST(OptimizerControl, RefinesTheKnotsWhenTheInterpolationTurnsNearlyAFullTurn) 
                        "/motions/M5-front-somersault-one-and-a-half-twists.motion.json");
   const Motion disturbed = disturb_keyframe_times(file.motion, 0.05, 1);
   OptimizeOptions options;
+  options.automatic_resolution = false;
   options.solver.max_iterations = 0;
   options.refine_when_keyframes_missed = false;
   const OptimizationResult as_asked = optimize_motion(disturbed, file.model, options);

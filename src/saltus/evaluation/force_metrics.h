@@ -30,7 +30,7 @@ ForceMetrics force_metrics(const std::vector<SampleRecord>& samples);
 /// kCheckMaxSpacing apart and at least `min_points` over the flight, integrated span by span by
 /// Simpson's rule (the wrench is smooth
 /// on a span and kinks only at knots), the peaks taken over every point. Independent of the
-/// optimiser's own quadrature (Gauss–Legendre nodes inside the spans), so force the optimiser
+/// optimiser's own quadrature (Gauss–Lobatto nodes on the spans), so force the optimiser
 /// hid between its nodes shows here.
 struct DenseCheck {
   ForceMetrics metrics;
@@ -40,7 +40,7 @@ struct DenseCheck {
   std::vector<double> span_start, span_end, span_integral;
 };
 inline constexpr int kCheckPointsPerSpan = 10;
-inline constexpr double kCheckMaxSpacing = 0.01;  ///< s
+inline constexpr double kCheckMaxSpacing = 0.0025;  ///< s
 
 DenseCheck dense_check(const BodyModel& model, const Trajectory<double>& trajectory,
                        int min_points);

@@ -155,6 +155,20 @@ nlohmann::json optimization_result_json(const MotionFile& file, const Optimizati
   evaluate.interpolation.knots_per_interval = result.knots_per_interval;  // the one used
   nlohmann::json r = base_result(file, evaluate, result.solve.status);
   r["knots_per_interval_requested"] = options.nlp.knots_per_interval;
+  // The knots the optimised motion lives on, and how the automatic resolution got there.
+  nlohmann::json levels = nlohmann::json::array();
+  for (const OptimizationResult::Level& level : result.levels)
+    levels.push_back({{"subdivisions", level.subdivisions},
+                      {"avg_root_force", level.avg_root_force},
+                      {"iterations", level.iterations},
+                      {"status", level.status}});
+  r["resolution"] = {{"automatic", options.automatic_resolution &&
+                                       options.nlp.formulation == Formulation::kRelaxed},
+                     {"subdivisions", result.subdivisions},
+                     {"knots", result.after.trajectory.rotations.empty()
+                                   ? std::vector<double>{}
+                                   : result.after.trajectory.rotations.front().knots()},
+                     {"levels", levels}};
   r["ipopt_status"] = result.solve.ipopt_status;
   r["restarts"] = result.solve.restarts;
   r["formulation"] = options.nlp.formulation == Formulation::kRelaxed ? "relaxed" : "strict";

@@ -32,6 +32,11 @@ struct SpanBasis {
 template <typename Scalar>
 std::vector<Scalar> refine_breakpoints(const std::vector<Scalar>& keyframe_times,
                                        int knots_per_interval);
+/// The same with its own number of equal parts for each interval (spans_per_interval[i] for
+/// [t_i, t_{i+1}], each >= 1).
+template <typename Scalar>
+std::vector<Scalar> refine_breakpoints(const std::vector<Scalar>& keyframe_times,
+                                       const std::vector<int>& spans_per_interval);
 
 /// Clamped cubic knot vector for the breakpoints (layout above).
 template <typename Scalar>

@@ -34,15 +34,28 @@ std::vector<Scalar> refine_breakpoints(const std::vector<Scalar>& keyframe_times
   if (knots_per_interval < 1)
     throw std::invalid_argument("refine_breakpoints: knots_per_interval must be at least 1, got " +
                                 std::to_string(knots_per_interval));
+  return refine_breakpoints(keyframe_times,
+                            std::vector<int>(keyframe_times.size() - 1, knots_per_interval));
+}
+
+template <typename Scalar>
+std::vector<Scalar> refine_breakpoints(const std::vector<Scalar>& keyframe_times,
+                                       const std::vector<int>& spans_per_interval) {
+  if (keyframe_times.size() < 2)
+    throw std::invalid_argument("refine_breakpoints: need at least two keyframe times");
+  if (spans_per_interval.size() + 1 != keyframe_times.size())
+    throw std::invalid_argument("refine_breakpoints: one subdivision per keyframe interval");
   std::vector<Scalar> breakpoints;
-  breakpoints.reserve((keyframe_times.size() - 1) * knots_per_interval + 1);
   for (std::size_t i = 0; i + 1 < keyframe_times.size(); ++i) {
+    const int parts = spans_per_interval[i];
+    if (parts < 1)
+      throw std::invalid_argument("refine_breakpoints: every interval needs at least one span");
     const Scalar& a = keyframe_times[i];
     const Scalar length = keyframe_times[i + 1] - a;
     breakpoints.push_back(a);
     // a + (k/K)·(b − a): affine in the keyframe times, so the extra knots follow them.
-    for (int k = 1; k < knots_per_interval; ++k)
-      breakpoints.push_back(a + length * Scalar(static_cast<double>(k) / knots_per_interval));
+    for (int k = 1; k < parts; ++k)
+      breakpoints.push_back(a + length * Scalar(static_cast<double>(k) / parts));
   }
   breakpoints.push_back(keyframe_times.back());
   return breakpoints;

@@ -49,7 +49,9 @@ Trajectory<double> interpolate_keyframes(const Motion& motion, const BodyModel& 
   for (const Keyframe& k : motion.keyframes)
     times.push_back(k.time);
   Trajectory<double> trajectory;
-  trajectory.knots = clamped_cubic_knots(refine_breakpoints(times, options.knots_per_interval));
+  trajectory.knots = clamped_cubic_knots(options.subdivisions.empty()
+                                             ? refine_breakpoints(times, options.knots_per_interval)
+                                             : refine_breakpoints(times, options.subdivisions));
 
   // Step 1 (§5.2): one quaternion spline per joint through its keyframe rotations.
   std::vector<Eigen::Quaterniond> targets(times.size());
@@ -78,6 +80,28 @@ Trajectory<double> interpolate_keyframes(const Motion& motion, const BodyModel& 
   trajectory.root_translation = VectorSpline<double>(
       trajectory.knots, fit_vector_spline(trajectory.knots, fit_times, fit_points));
   return trajectory;
+}
+
+Trajectory<double> refit_trajectory(const Trajectory<double>& trajectory,
+                                    const std::vector<double>& knots, int samples_per_span) {
+  std::vector<double> times;
+  for (std::size_t s = 3; s + 4 < knots.size(); ++s)
+    for (int i = 0; i < samples_per_span; ++i)
+      times.push_back(knots[s] + (knots[s + 1] - knots[s]) * i / samples_per_span);
+  times.push_back(knots.back());
+  Trajectory<double> out;
+  out.knots = knots;
+  std::vector<Eigen::Vector3d> positions;
+  for (double t : times)
+    positions.push_back(trajectory.root_translation.evaluate(t).position);
+  out.root_translation = VectorSpline<double>(knots, fit_vector_spline(knots, times, positions));
+  std::vector<Eigen::Quaterniond> rotations(times.size());
+  for (const QuaternionSpline<double>& curve : trajectory.rotations) {
+    for (std::size_t i = 0; i < times.size(); ++i)
+      rotations[i] = curve.evaluate(times[i]).q;
+    out.rotations.emplace_back(knots, fit_quaternion_spline(knots, times, rotations));
+  }
+  return out;
 }
 
 Trajectory<double> trajectory_from_stored_spline(const StoredSpline& spline,

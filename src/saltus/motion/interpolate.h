@@ -18,6 +18,9 @@ namespace saltus {
 struct InterpolationOptions {
   /// Knot sub-intervals per keyframe interval: 1 = knots at the keyframe times (the paper).
   int knots_per_interval = 1;
+  /// Knot spans per keyframe interval (one entry per interval); replaces the uniform
+  /// knots_per_interval when given.
+  std::vector<int> subdivisions;
   /// Samples per knot span for the least-squares fit of the root translation.
   int root_fit_samples_per_span = 24;
 };
@@ -40,6 +43,12 @@ std::vector<Eigen::Vector3d> keyframe_root_targets(const Motion& motion, const B
 /// range (knots_per_interval < 1).
 Trajectory<double> interpolate_keyframes(const Motion& motion, const BodyModel& model,
                                          const InterpolationOptions& options = {});
+
+/// `trajectory` on other knots (the same time range): each curve fitted by least squares to
+/// `samples_per_span` points per span of the new knots (exact for the root translation when the
+/// new knots refine the old ones). For starting a finer resolution from a coarser optimum.
+Trajectory<double> refit_trajectory(const Trajectory<double>& trajectory,
+                                    const std::vector<double>& knots, int samples_per_span = 8);
 
 /// The trajectory stored in a motion file's "spline" member. Throws InputError-free
 /// std::invalid_argument if the counts do not fit the model (parse_motion checks them first).

@@ -269,6 +269,11 @@ SolveReport solve_with_ipopt(Nlp& nlp, const SolverOptions& options,
     app->Options()->SetIntegerValue("file_print_level", 5);
   }
   if (!nlp.has_hessian()) app->Options()->SetStringValue("hessian_approximation", "limited-memory");
+  if (options.warm_start) {
+    app->Options()->SetNumericValue("mu_init", 1e-4);
+    app->Options()->SetNumericValue("bound_push", 1e-6);
+    app->Options()->SetNumericValue("bound_frac", 1e-6);
+  }
   // "": no options file. Ipopt would otherwise read ./ipopt.opt, and a stray file in the user's
   // folder would silently change the solver (the same input must give the same output).
   if (app->Initialize("") != Ipopt::Solve_Succeeded) {

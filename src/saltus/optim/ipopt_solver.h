@@ -39,6 +39,9 @@ struct SolverOptions {
   /// fresh barrier parameter and multipliers. 0 disables.
   int stall_iterations = 40;
   int max_restarts = 2;
+  /// Start near an optimum (a finer resolution of a solved motion): a small initial barrier
+  /// parameter and bound push, so the interior-point method does not first walk away from it.
+  bool warm_start = false;
   bool verbose = false;  ///< Ipopt's own iteration log on stdout
   /// Run Ipopt's first-order derivative checker at the starting point and write its report
   /// (and the iteration log) to this file; empty: off.

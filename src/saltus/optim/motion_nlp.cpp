@@ -31,7 +31,7 @@ MotionNlp::MotionNlp(const Motion& motion, const BodyModel& model,
 
   layout_.segment_count = model.size();
   layout_.keyframe_count = n_key;
-  layout_.knots_per_interval = options.knots_per_interval;
+  layout_.set_subdivisions(options.spans_per_interval(n_key));
   layout_.optimize_timing = options.optimize_timing && n_key >= 3;
   if (static_cast<int>(initial.knots.size()) != layout_.control_count() + 4)
     throw std::invalid_argument("initial trajectory is not on the layout's knots");
@@ -41,9 +41,13 @@ MotionNlp::MotionNlp(const Motion& motion, const BodyModel& model,
     reference_.joint_control.push_back(r.control());
   initial_x_ = variables_from(layout_, reference_, initial, reference_.keyframe_times);
   duration_ = motion.flight_time();
+  given_times_ = options.given_keyframe_times.empty() ? reference_.keyframe_times
+                                                      : options.given_keyframe_times;
+  if (static_cast<int>(given_times_.size()) != n_key)
+    throw std::invalid_argument("one given time per keyframe is needed");
   double shortest = duration_;
   for (int i = 0; i + 1 < n_key; ++i)
-    shortest = std::min(shortest, reference_.keyframe_times[i + 1] - reference_.keyframe_times[i]);
+    shortest = std::min(shortest, given_times_[i + 1] - given_times_[i]);
   time_gap_ = std::min(options.min_time_gap, 0.5 * shortest);
 
   sample_times_ = uniform_times(duration_, options.samples);
@@ -102,7 +106,7 @@ MotionNlp::MotionNlp(const Motion& motion, const BodyModel& model,
     variable_bounds(x_lower.data(), x_upper.data());
     const auto knots_at = [&](const std::vector<double>& x) {
       return clamped_cubic_knots(refine_breakpoints(
-          keyframe_times_from(layout_, reference_, x.data()), layout_.knots_per_interval));
+          keyframe_times_from(layout_, reference_, x.data()), layout_.subdivisions()));
     };
     owned_blocks_.push_back(std::make_unique<ForceBoundBlock>(
         layout_, sample_times_, knots_at(x_lower), knots_at(x_upper), options.epsilon));
@@ -136,7 +140,7 @@ void MotionNlp::variable_bounds(double* x_lower, double* x_upper) const {
   for (int i = 0; i < layout_.keyframe_count; ++i) {
     const int v = layout_.time_variable(i);
     if (v < 0) continue;
-    const double t0 = reference_.keyframe_times[i];
+    const double t0 = given_times_[i];
     x_lower[v] = std::max(t0 - options_.max_time_shift, time_gap_ * i);
     x_upper[v] = std::min(t0 + options_.max_time_shift,
                           duration_ - time_gap_ * (layout_.keyframe_count - 1 - i));

@@ -57,16 +57,27 @@ inline constexpr double kKeyframeBoundMargin = 0.02;
 
 struct MotionNlpOptions {
   Formulation formulation = Formulation::kRelaxed;
-  double epsilon = 100.0;         ///< strict: bound on each |F_i(t_s)|, N or N·m
-  bool optimize_timing = true;    ///< interior keyframe times are variables
-  int knots_per_interval = 1;     ///< spline refinement K (1 = the paper's resolution)
+  double epsilon = 100.0;       ///< strict: bound on each |F_i(t_s)|, N or N·m
+  bool optimize_timing = true;  ///< interior keyframe times are variables
+  int knots_per_interval = 1;   ///< spline refinement K (1 = the paper's resolution)
+  /// Knot spans per keyframe interval, one entry per interval; when given it replaces the
+  /// uniform knots_per_interval (automatic resolution refines where the residual lives).
+  std::vector<int> subdivisions;
+  /// The spans per interval these options ask for (subdivisions, or K everywhere).
+  std::vector<int> spans_per_interval(int keyframe_count) const {
+    return subdivisions.empty() ? std::vector<int>(keyframe_count - 1, knots_per_interval)
+                                : subdivisions;
+  }
   int samples = kDefaultSamples;  ///< strict model: the times of its force bounds on [0, T]
-  /// The relaxed objective's integral (RootWrenchTerm): Gauss–Legendre nodes on every knot
-  /// span, at least quadrature_nodes and at most quadrature_spacing apart (s).
-  int quadrature_nodes = 4;
+  /// The relaxed objective's integral (RootWrenchTerm): Gauss–Lobatto nodes on every knot
+  /// span (its ends included), at least quadrature_nodes and at most quadrature_spacing apart.
+  int quadrature_nodes = 6;
   double quadrature_spacing = 0.02;
   double min_time_gap = 0.05;    ///< s, eq. (4)'s gap (capped at half the shortest interval)
   double max_time_shift = 0.25;  ///< s, how far a keyframe time may move from the given one
+  /// The given keyframe times, when the motion passed to the NLP holds others (a finer
+  /// resolution started from a coarser optimum): bounds and gaps stay relative to these.
+  std::vector<double> given_keyframe_times;
   /// Levenberg-Marquardt damping of the Gauss-Newton Hessian: μ·J(x)·I is added (Yamashita &
   /// Fukushima 2001: damping ∝ ‖F‖² keeps fast local convergence at a zero residual).
   /// Light segments (feet, forearms) barely change the root force, so undamped Gauss-Newton
@@ -176,6 +187,7 @@ class MotionNlp : public Nlp {
   TrajectoryLayout layout_;
   TrajectoryReference reference_;
   std::vector<double> initial_x_;
+  std::vector<double> given_times_;  ///< the centres of the time bounds
   double duration_ = 0.0;
   double time_gap_ = 0.0;
   std::vector<double> sample_times_;

@@ -85,7 +85,7 @@ SpanQuadrature::SpanQuadrature(const TrajectoryLayout& layout, const std::vector
   for (int span = 3; span < layout.control_count(); ++span) {
     const double length = knots.at(span + 1) - knots.at(span);
     const int count = std::max(min_nodes, static_cast<int>(std::ceil(length / max_spacing - 1e-9)));
-    const QuadratureRule rule = gauss_legendre(count);
+    const QuadratureRule rule = gauss_lobatto(count);
     for (int q = 0; q < count; ++q)
       nodes_.push_back({span, rule.nodes[q], rule.weights[q]});
   }

@@ -95,7 +95,7 @@ class WrenchSamples {
   long values_generation_ = -1, jacobians_generation_ = -1;
 };
 
-/// The root wrench at Gauss–Legendre nodes on every knot span (nodes that move with the knots
+/// The root wrench at Gauss–Lobatto nodes on every knot span (nodes that move with the knots
 /// when the keyframe times move) and, on demand, its derivatives, cached per point. A node's
 /// quadrature weight is (k_{s+1} − k_s)·ω / T; span_length_rates() gives how the span length
 /// k_{s+1} − k_s moves with the keyframe times in each node's time slots.
@@ -106,7 +106,7 @@ class SpanQuadrature {
     double xi = 0.5;      ///< t = k_s + ξ·(k_{s+1} − k_s)
     double weight = 1.0;  ///< the rule's weight on [0, 1]
   };
-  /// Gauss–Legendre nodes on every knot span of positive length: at least `min_nodes`, and
+  /// Gauss–Lobatto nodes on every knot span of positive length: at least `min_nodes`, and
   /// enough that they are at most `max_spacing` apart on the span's length in `knots` (the
   /// starting knots: the nodes stay fixed in number while the knots move).
   SpanQuadrature(const TrajectoryLayout& layout, const std::vector<double>& knots, int min_nodes,

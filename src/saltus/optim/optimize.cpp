@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <stdexcept>
 
+#include "saltus/dynamics/inverse_dynamics.h"
 #include "saltus/evaluation/flight_state.h"
 #include "saltus/motion/interpolate.h"
 
@@ -22,56 +24,238 @@ bool optimizer_agrees_with_check(const OptimizationResult& result) {
   return std::abs(optimizer - check) <= 0.02 * check + 0.02;
 }
 
+namespace {
+
+EvaluateOptions evaluate_options(int samples, const std::vector<int>& subdivisions) {
+  EvaluateOptions evaluate;
+  evaluate.samples = samples;
+  evaluate.interpolation.subdivisions = subdivisions;
+  return evaluate;
+}
+
+/// Whether an interpolation can be optimised from: it meets the keyframes and turns no segment
+/// near a full turn between two control points (kMaxControlTurn).
+bool well_posed(const MotionEvaluation& start, const Motion& motion) {
+  const KeyframeErrors& missed = start.keyframe_errors;
+  return missed.max_quaternion_error <= motion.tolerances.quaternion &&
+         missed.max_translation_error_m <= motion.tolerances.translation_m &&
+         largest_control_turn(start.trajectory) <= kMaxControlTurn;
+}
+
+/// One solve: the NLP over `start` (on the knots of `subdivisions` at the keyframe times of
+/// `motion_at_start`), its result as a motion with the optimised times and spline.
+struct Solved {
+  SolveReport solve;
+  int variables = 0, constraints = 0;
+  double objective_before = 0.0, objective_after = 0.0;
+  Motion optimized;
+  Trajectory<double> trajectory;
+};
+
+Solved solve_level(const Motion& motion, const Motion& motion_at_start, const BodyModel& model,
+                   const Trajectory<double>& start, const MotionNlpOptions& nlp_options,
+                   const SolverOptions& solver, const ProgressCallback& progress,
+                   const std::atomic<bool>* cancel) {
+  MotionNlp nlp(motion_at_start, model, start, nlp_options);
+  Solved out;
+  out.variables = nlp.variable_count();
+  out.constraints = nlp.constraint_count();
+  std::vector<double> initial_x(nlp.variable_count());
+  nlp.initial_point(initial_x.data());
+  out.objective_before = nlp.force_objective(initial_x.data());
+  out.solve = solve_with_ipopt(nlp, solver, progress, cancel);
+  const double* x = out.solve.x.data();
+  out.objective_after = nlp.force_objective(x);
+  out.optimized = motion;
+  const std::vector<double> times = keyframe_times_from(nlp.layout(), nlp.reference(), x);
+  for (std::size_t i = 0; i < times.size(); ++i)
+    out.optimized.keyframes[i].time = times[i];
+  out.trajectory = trajectory_from(nlp.layout(), nlp.reference(), x);
+  out.optimized.spline = to_stored_spline(out.trajectory);
+  return out;
+}
+
+/// The first guess of the automatic resolution: interval i split into enough spans that no
+/// segment turns by more than rules.turn_per_span (world orientations at its keyframes) and no
+/// span is longer than rules.max_span.
+std::vector<int> first_subdivisions(const Motion& motion, const BodyModel& model,
+                                    const AutomaticResolution& rules) {
+  std::vector<int> out;
+  const Trajectory<double> straight = interpolate_keyframes(motion, model, {});
+  for (std::size_t i = 0; i + 1 < motion.keyframes.size(); ++i) {
+    const double a = motion.keyframes[i].time, b = motion.keyframes[i + 1].time;
+    // The world orientation of every segment, sampled on the interval (a fast turn between two
+    // keyframes shows only inside it).
+    double turn = 0.0;
+    const int samples = 8;
+    BodyState<double> previous(model.size()), current(model.size());
+    DynamicsData<double> data(model);
+    std::vector<Eigen::Matrix3d> last;
+    for (int s = 0; s <= samples; ++s) {
+      straight.sample(a + (b - a) * s / samples, current);
+      inverse_dynamics(model, data, current);
+      if (s > 0)
+        for (int k = 0; k < model.size(); ++k)
+          turn = std::max(
+              turn,
+              Eigen::AngleAxisd(last[k].transpose() * data.world_rotation[k]).angle() * samples);
+      last = data.world_rotation;
+    }
+    const int by_turn = static_cast<int>(std::ceil(turn / samples / rules.turn_per_span - 1e-9));
+    const int by_length = static_cast<int>(std::ceil((b - a) / rules.max_span - 1e-9));
+    out.push_back(std::clamp(std::max(by_turn, by_length), 1, rules.max_spans_per_interval));
+  }
+  return out;
+}
+
+/// Where the residual lives: the dense check's span integrals summed per keyframe interval.
+std::vector<double> residual_per_interval(const DenseCheck& check,
+                                          const std::vector<double>& keyframe_times) {
+  std::vector<double> out(keyframe_times.size() - 1, 0.0);
+  for (std::size_t s = 0; s < check.span_integral.size(); ++s) {
+    const double middle = 0.5 * (check.span_start[s] + check.span_end[s]);
+    const auto it = std::upper_bound(keyframe_times.begin(), keyframe_times.end(), middle);
+    const std::size_t interval =
+        std::clamp<std::ptrdiff_t>(it - keyframe_times.begin() - 1, 0, out.size() - 1);
+    out[interval] += check.span_integral[s];
+  }
+  return out;
+}
+
+std::vector<double> keyframe_times_of(const Motion& motion) {
+  std::vector<double> times;
+  for (const Keyframe& k : motion.keyframes)
+    times.push_back(k.time);
+  return times;
+}
+
+/// Splits interval i's spans by ⌈(m_i / (6·target²))^(1/6)⌉, m_i its mean squared wrench: the
+/// factor that brings its own average root force to the target if the force falls like h³.
+/// False when nothing can be refined further.
+bool refine(std::vector<int>& subdivisions, const std::vector<double>& residual,
+            const std::vector<double>& keyframe_times, const AutomaticResolution& rules) {
+  bool changed = false;
+  for (std::size_t i = 0; i < subdivisions.size(); ++i) {
+    const double mean_square = residual[i] / (keyframe_times[i + 1] - keyframe_times[i]);
+    const double factor = std::ceil(
+        std::pow(mean_square / (6.0 * rules.target_force * rules.target_force), 1.0 / 6.0) - 1e-9);
+    const int spans = std::min(rules.max_spans_per_interval,
+                               static_cast<int>(std::max(1.0, factor)) * subdivisions[i]);
+    if (spans > subdivisions[i]) changed = true;
+    subdivisions[i] = std::max(subdivisions[i], spans);
+  }
+  return changed;
+}
+
+}  // namespace
+
 OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
                                    const OptimizeOptions& options, const ProgressCallback& progress,
                                    const std::atomic<bool>* cancel) {
   if (options.nlp.knots_per_interval < 1)
     throw std::invalid_argument("knots per interval must be at least 1");
-  OptimizeOptions chosen = options;
+  const int n_key = static_cast<int>(motion.keyframes.size());
+  if (n_key < 2) throw std::invalid_argument("a motion needs at least two keyframes");
+  const AutomaticResolution rules;
   OptimizationResult result;
-  // Start from the motion's stored spline when it is on the requested knots (re-optimising an
-  // optimised motion), otherwise from the keyframe interpolation.
-  Motion start = motion;
-  for (;;) {
-    const int k = chosen.nlp.knots_per_interval;
-    const std::size_t knot_count = (motion.keyframes.size() - 1) * k + 7;  // clamped cubic
-    if (start.spline && start.spline->knots.size() != knot_count) start.spline.reset();
-    EvaluateOptions evaluate;
-    evaluate.samples = chosen.nlp.samples;
-    evaluate.interpolation.knots_per_interval = k;
-    result.before = evaluate_motion(start, model, evaluate);
-    const KeyframeErrors& missed = result.before.keyframe_errors;
-    const bool meets_keyframes = missed.max_quaternion_error <= motion.tolerances.quaternion &&
-                                 missed.max_translation_error_m <= motion.tolerances.translation_m;
-    const bool well_posed =
-        meets_keyframes && largest_control_turn(result.before.trajectory) <= kMaxControlTurn;
-    if (well_posed || start.spline || !options.refine_when_keyframes_missed ||
-        k >= std::max(options.nlp.knots_per_interval, kMaxAutomaticKnotsPerInterval))
-      break;
-    chosen.nlp.knots_per_interval = k + 1;
-  }
-  result.knots_per_interval = chosen.nlp.knots_per_interval;
-  MotionNlp nlp(start, model, result.before.trajectory, chosen.nlp);
-  result.variables = nlp.variable_count();
-  result.constraints = nlp.constraint_count();
-  {
-    std::vector<double> initial_x(nlp.variable_count());
-    nlp.initial_point(initial_x.data());
-    result.optimizer_objective_before = nlp.force_objective(initial_x.data());
-  }
-  result.solve = solve_with_ipopt(nlp, chosen.solver, progress, cancel);
+  const bool automatic =
+      options.automatic_resolution && options.nlp.formulation == Formulation::kRelaxed;
+  std::vector<int> subdivisions =
+      automatic ? first_subdivisions(motion, model, rules) : options.nlp.spans_per_interval(n_key);
 
-  const double* x = result.solve.x.data();
-  result.optimizer_objective_after = nlp.force_objective(x);
-  Motion optimized = motion;
-  const std::vector<double> times = keyframe_times_from(nlp.layout(), nlp.reference(), x);
-  for (std::size_t i = 0; i < times.size(); ++i)
-    optimized.keyframes[i].time = times[i];
-  optimized.spline = to_stored_spline(trajectory_from(nlp.layout(), nlp.reference(), x));
-  EvaluateOptions evaluate;
-  evaluate.samples = chosen.nlp.samples;
-  evaluate.interpolation.knots_per_interval = result.knots_per_interval;
-  result.after = evaluate_motion(optimized, model, evaluate);
+  // Start from the motion's stored spline when it is on these knots (re-optimising an optimised
+  // motion), otherwise from the keyframe interpolation; refine the knots uniformly while the
+  // interpolation cannot meet the keyframes or turns a segment nearly a full turn (see
+  // kMaxControlTurn).
+  Motion start = motion;
+  MotionEvaluation start_evaluation;
+  for (;;) {
+    const std::size_t knot_count =
+        std::accumulate(subdivisions.begin(), subdivisions.end(), 0) + 7;  // clamped cubic
+    if (start.spline && start.spline->knots.size() != knot_count) start.spline.reset();
+    start_evaluation =
+        evaluate_motion(start, model, evaluate_options(options.nlp.samples, subdivisions));
+    const int finest = *std::max_element(subdivisions.begin(), subdivisions.end());
+    if (well_posed(start_evaluation, motion) || start.spline ||
+        !options.refine_when_keyframes_missed ||
+        finest >= std::max(options.nlp.knots_per_interval, kMaxAutomaticKnotsPerInterval))
+      break;
+    for (int& k : subdivisions)
+      k = std::max(k, finest + 1);
+  }
+  // "Before" is the paper's interpolation, knots at the keyframes, whatever the optimiser
+  // then works on (Table 1 compares it), unless the motion brings its own spline.
+  result.before =
+      automatic && !start.spline
+          ? evaluate_motion(motion, model,
+                            evaluate_options(options.nlp.samples, std::vector<int>(n_key - 1, 1)))
+          : start_evaluation;
+
+  MotionNlpOptions nlp_options = options.nlp;
+  SolverOptions solver = options.solver;
+  for (const Keyframe& k : motion.keyframes)
+    nlp_options.given_keyframe_times.push_back(k.time);
+  Motion at_start = start;
+  Trajectory<double> start_trajectory = start_evaluation.trajectory;
+  Solved best;
+  std::vector<int> best_subdivisions;
+  double best_force = 0.0;
+  bool have_best = false;
+  int iterations = 0, restarts = 0;
+  double seconds = 0.0;
+  for (int level = 0;; ++level) {
+    nlp_options.subdivisions = subdivisions;
+    // A level that will most likely be refined (the automatic resolution's first, from an
+    // interpolation far above the target) only has to show where its residual lives.
+    SolverOptions level_solver = solver;
+    if (automatic && level == 0 && level < rules.max_refinements &&
+        start_evaluation.metrics.avg_root_force > 10.0 * rules.target_force)
+      level_solver.objective_change_tolerance =
+          std::max(solver.objective_change_tolerance, rules.coarse_objective_change);
+    Solved solved = solve_level(motion, at_start, model, start_trajectory, nlp_options,
+                                level_solver, progress, cancel);
+    iterations += solved.solve.iterations;
+    restarts += solved.solve.restarts;
+    seconds += solved.solve.seconds;
+    const DenseCheck check = dense_check(model, solved.trajectory, options.nlp.samples);
+    const double force = check.metrics.avg_root_force;
+    result.levels.push_back({subdivisions, force, solved.solve.iterations, solved.solve.status});
+    if (level == 0) result.optimizer_objective_before = solved.objective_before;
+    const bool better = !have_best || (solved.solve.solved && !best.solve.solved) ||
+                        (solved.solve.solved == best.solve.solved && force < best_force);
+    const double previous_force = best_force;
+    if (better) {
+      best = std::move(solved);
+      best_subdivisions = subdivisions;
+      best_force = force;
+      have_best = true;
+    }
+    if (!automatic || !best.solve.solved || force <= rules.target_force ||
+        level >= rules.max_refinements || (cancel && cancel->load()))
+      break;
+    if (level > 0 && !(force < (1.0 - rules.min_gain) * previous_force)) break;  // stopped paying
+    if (!better) break;
+    const std::vector<double> times = keyframe_times_of(best.optimized);
+    if (!refine(subdivisions, residual_per_interval(check, times), times, rules)) break;
+    // The finer level starts from this optimum, refitted onto the finer knots at its times.
+    at_start = best.optimized;
+    at_start.spline.reset();
+    start_trajectory = refit_trajectory(
+        best.trajectory, clamped_cubic_knots(refine_breakpoints(times, subdivisions)));
+    solver.warm_start = true;
+  }
+  result.solve = best.solve;
+  result.solve.iterations = iterations;
+  result.solve.restarts = restarts;
+  result.solve.seconds = seconds;
+  result.variables = best.variables;
+  result.constraints = best.constraints;
+  result.optimizer_objective_after = best.objective_after;
+  result.subdivisions = best_subdivisions;
+  result.knots_per_interval = *std::max_element(best_subdivisions.begin(), best_subdivisions.end());
+
+  Motion optimized = best.optimized;
+  result.after = evaluate_motion(optimized, model, evaluate_options(options.nlp.samples, {}));
   // The file describes the optimised motion: its own take-off state (so `simulate` starts where
   // it starts), and the keyframes' root targets as the optimiser met them (they came from the
   // given take-off's parabola, which the file no longer holds).

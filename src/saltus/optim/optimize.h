@@ -19,6 +19,33 @@ struct OptimizeOptions {
   /// segment by nearly a full turn between two control points (kMaxControlTurn); see
   /// optimize_motion.
   bool refine_when_keyframes_missed = true;
+  /// Automatic resolution (`--knots-per-interval auto`, AutomaticResolution): start from knots
+  /// chosen from how far each keyframe interval turns the body, then add knots where the
+  /// residual lives until it is near zero or more knots stop paying. Off: the uniform
+  /// nlp.knots_per_interval (or nlp.subdivisions). Relaxed model only: the strict model's
+  /// objective is the keyframe distance, not the residual.
+  bool automatic_resolution = true;
+};
+
+/// The rules of the automatic resolution, deterministic: the same input, the same knots.
+struct AutomaticResolution {
+  /// First guess: each keyframe interval split so that no segment's orientation in the world
+  /// turns by more than this between two knots (rad), ...
+  double turn_per_span = 1.05;  // 60°
+  /// ... and no span is longer than this (s).
+  double max_span = 0.26;
+  /// Stop once the true average root force (the dense check) is at most this (N)...
+  double target_force = 0.25;
+  /// ... or a refinement cut it by less than this fraction (more knots stop paying).
+  double min_gain = 0.3;
+  /// A refinement splits each interval's spans by the factor its own mean squared wrench asks
+  /// for, assuming the force falls like the span length cubed (measured on the bundled motions:
+  /// halving the spans cut it 4-8 times; a shortfall costs one more refinement).
+  int max_spans_per_interval = 8;
+  int max_refinements = 2;
+  /// A level that will be refined only needs to say where its residual lives: it stops at this
+  /// relative objective change instead of the final one.
+  double coarse_objective_change = 1e-2;
 };
 
 /// The finest knot refinement optimize_motion picks on its own.
@@ -46,8 +73,19 @@ struct OptimizationResult {
   int variables = 0;
   int constraints = 0;
   /// The refinement K used: the requested one, or more when the interpolation on it could not
-  /// meet the keyframes or was near-singular (OptimizeOptions::refine_when_keyframes_missed).
+  /// meet the keyframes or was near-singular (OptimizeOptions::refine_when_keyframes_missed);
+  /// with automatic resolution the largest of `subdivisions`.
   int knots_per_interval = 1;
+  /// Knot spans per keyframe interval of the optimised motion (its knots: after.trajectory).
+  std::vector<int> subdivisions;
+  /// Automatic resolution: each level's spans per interval and true average root force (N).
+  struct Level {
+    std::vector<int> subdivisions;
+    double avg_root_force = 0.0;
+    int iterations = 0;
+    std::string status;
+  };
+  std::vector<Level> levels;
   MotionEvaluation before;  ///< the interpolated motion (the starting point)
   MotionEvaluation after;   ///< the optimised motion, on the same sample grid
   /// J by the optimiser's own quadrature (MotionNlp::force_objective), at the start and at the

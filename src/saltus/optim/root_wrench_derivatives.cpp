@@ -70,6 +70,7 @@ RootWrenchDerivatives::RootWrenchDerivatives(const BodyModel& model, const Traje
     : model_(model),
       layout_(layout),
       reference_(reference),
+      subdivisions_(layout.subdivisions()),
       root_control_(layout.control_count()),
       joint_control_(layout.segment_count, std::vector<Eigen::Quaterniond>(layout.control_count())),
       joint_delta_(layout.segment_count, std::vector<Eigen::Vector3d>(layout.control_count())),
@@ -81,7 +82,7 @@ void RootWrenchDerivatives::set_variables(const double* x) {
   work_->basis_keyframe = -1;
   work_->logs_span = -1;
   keyframe_times_ = keyframe_times_from(layout_, reference_, x);
-  knots_ = clamped_cubic_knots(refine_breakpoints(keyframe_times_, layout_.knots_per_interval));
+  knots_ = clamped_cubic_knots(refine_breakpoints(keyframe_times_, subdivisions_));
   for (int j = 0; j < layout_.control_count(); ++j) {
     for (int d = 0; d < 3; ++d)
       root_control_[j][d] = x[layout_.control_variable(0, j, d)];
@@ -309,7 +310,7 @@ namespace {
 /// knot's time derivative.
 SplineAD keyframe_time(const std::vector<SplineAD>& knots_ad, const TrajectoryLayout& layout,
                        int keyframe) {
-  return knots_ad[3 + keyframe * layout.knots_per_interval];
+  return knots_ad[layout.keyframe_knot(keyframe)];
 }
 }  // namespace
 
@@ -327,7 +328,7 @@ Eigen::Vector3d RootWrenchDerivatives::keyframe_translation_value(int keyframe) 
   const int span = layout_.keyframe_span(keyframe);
   const int c0 = span - 3;
   const SpanBasis<double> basis =
-      cubic_basis_on_span(knots_, span, knots_[3 + keyframe * layout_.knots_per_interval]);
+      cubic_basis_on_span(knots_, span, knots_[layout_.keyframe_knot(keyframe)]);
   return evaluate_vector_span(root_control_[c0], root_control_[c0 + 1], root_control_[c0 + 2],
                               root_control_[c0 + 3], basis)
       .position;
@@ -337,7 +338,7 @@ Eigen::Vector4d RootWrenchDerivatives::keyframe_rotation_value(int keyframe, int
   const int span = layout_.keyframe_span(keyframe);
   const int c0 = span - 3;
   const SpanBasis<double> basis =
-      cubic_basis_on_span(knots_, span, knots_[3 + keyframe * layout_.knots_per_interval]);
+      cubic_basis_on_span(knots_, span, knots_[layout_.keyframe_knot(keyframe)]);
   const auto& c = joint_control_[segment];
   const Eigen::Quaterniond q =
       evaluate_quaternion_span(c[c0], c[c0 + 1], c[c0 + 2], c[c0 + 3], basis).q;

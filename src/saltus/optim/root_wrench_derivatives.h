@@ -91,6 +91,7 @@ class RootWrenchDerivatives {
   const BodyModel& model_;
   TrajectoryLayout layout_;
   TrajectoryReference reference_;
+  std::vector<int> subdivisions_;  ///< knot spans per keyframe interval
   std::vector<double> knots_;
   std::vector<double> keyframe_times_;
   std::vector<Eigen::Vector3d> root_control_;                   ///< [control]

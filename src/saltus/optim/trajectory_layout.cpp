@@ -1,16 +1,38 @@
 #include "saltus/optim/trajectory_layout.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace saltus {
 
+void TrajectoryLayout::set_subdivisions(const std::vector<int>& spans_per_interval) {
+  if (static_cast<int>(spans_per_interval.size()) != keyframe_count - 1)
+    throw std::invalid_argument("one subdivision per keyframe interval is needed");
+  keyframe_breakpoint.assign(1, 0);
+  for (int k : spans_per_interval) {
+    if (k < 1) throw std::invalid_argument("every keyframe interval needs at least one span");
+    keyframe_breakpoint.push_back(keyframe_breakpoint.back() + k);
+  }
+}
+
+std::vector<int> TrajectoryLayout::subdivisions() const {
+  std::vector<int> out;
+  for (std::size_t i = 0; i + 1 < keyframe_breakpoint.size(); ++i)
+    out.push_back(keyframe_breakpoint[i + 1] - keyframe_breakpoint[i]);
+  return out;
+}
+
 TrajectoryLayout::KnotDependence TrajectoryLayout::knot_dependence(int knot) const {
   // Breakpoint m = knot − 3, clamped to [0, M] for the repeated end knots.
-  const int last_breakpoint = (keyframe_count - 1) * knots_per_interval;
-  const int m = std::clamp(knot - 3, 0, last_breakpoint);
+  const int m = std::clamp(knot - 3, 0, keyframe_breakpoint.back());
   KnotDependence d;
-  d.left = std::min(m / knots_per_interval, keyframe_count - 2);
-  d.weight = static_cast<double>(m - d.left * knots_per_interval) / knots_per_interval;
+  d.left =
+      static_cast<int>(std::upper_bound(keyframe_breakpoint.begin(), keyframe_breakpoint.end(), m) -
+                       keyframe_breakpoint.begin()) -
+      1;
+  d.left = std::min(d.left, keyframe_count - 2);
+  const int first = keyframe_breakpoint[d.left];
+  d.weight = static_cast<double>(m - first) / (keyframe_breakpoint[d.left + 1] - first);
   return d;
 }
 
@@ -28,7 +50,7 @@ Trajectory<double> trajectory_from(const TrajectoryLayout& layout,
                                    const TrajectoryReference& reference, const double* x) {
   const std::vector<double> times = keyframe_times_from(layout, reference, x);
   Trajectory<double> t;
-  t.knots = clamped_cubic_knots(refine_breakpoints(times, layout.knots_per_interval));
+  t.knots = clamped_cubic_knots(refine_breakpoints(times, layout.subdivisions()));
   const int n = layout.control_count();
   std::vector<Eigen::Vector3d> root(n);
   for (int j = 0; j < n; ++j)

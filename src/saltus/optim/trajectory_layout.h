@@ -21,12 +21,18 @@ namespace saltus {
 struct TrajectoryLayout {
   int segment_count = 0;  ///< joints (quaternion curves)
   int keyframe_count = 0;
-  int knots_per_interval = 1;  ///< K
   bool optimize_timing = true;
+  /// Breakpoint index of each keyframe: 0, K_0, K_0 + K_1, ... where K_i is how many knot spans
+  /// keyframe interval i is split into (set_subdivisions).
+  std::vector<int> keyframe_breakpoint;
+
+  /// K_i knot spans in keyframe interval i, equal parts (1 = knots at the keyframes only).
+  void set_subdivisions(const std::vector<int>& spans_per_interval);
+  std::vector<int> subdivisions() const;
 
   int curve_count() const { return segment_count + 1; }
-  /// Spline control points per curve: (keyframes − 1)·K + 3.
-  int control_count() const { return (keyframe_count - 1) * knots_per_interval + 3; }
+  /// Spline control points per curve: ΣK_i + 3.
+  int control_count() const { return keyframe_breakpoint.back() + 3; }
   int curve_block() const { return 3 * curve_count(); }
   int control_variable_count() const { return control_count() * curve_block(); }
   int time_variable_count() const { return optimize_timing ? keyframe_count - 2 : 0; }
@@ -51,10 +57,12 @@ struct TrajectoryLayout {
   KnotDependence knot_dependence(int knot) const;
 
   /// The span a keyframe's time lies on, structurally: the knot at keyframe i starts span
-  /// 3 + i·K (the last keyframe ends the last span).
+  /// 3 + its breakpoint (the last keyframe ends the last span).
   int keyframe_span(int keyframe) const {
-    return keyframe == keyframe_count - 1 ? control_count() - 1 : 3 + keyframe * knots_per_interval;
+    return keyframe == keyframe_count - 1 ? control_count() - 1 : 3 + keyframe_breakpoint[keyframe];
   }
+  /// Index of keyframe i's knot in the clamped knot vector.
+  int keyframe_knot(int keyframe) const { return 3 + keyframe_breakpoint[keyframe]; }
 };
 
 /// The fixed data a layout's variables are relative to.

@@ -17,6 +17,7 @@ PaperReport run_paper_report(const std::vector<LabelledMotion>& skills,
     PaperSkillRun run;
     run.motion = skill;
     run.options = options.optimize;
+    run.options.automatic_resolution = false;  // the paper's resolution: knots at the keyframes
     run.options.nlp.knots_per_interval = 1;
     run.paper_resolution = optimize_motion(skill.file.motion, skill.file.model, run.options);
     log(skill.label + ": " + run.paper_resolution.solve.status + ", " +
@@ -24,6 +25,7 @@ PaperReport run_paper_report(const std::vector<LabelledMotion>& skills,
         format_number("%.3g N", run.paper_resolution.after.metrics.avg_root_force));
     if (!options.quick) {
       OptimizeOptions k3 = options.optimize;
+      k3.automatic_resolution = false;
       k3.nlp.knots_per_interval = 3;
       run.refined = optimize_motion(skill.file.motion, skill.file.model, k3);
       log(skill.label + ", K = 3: " + run.refined->solve.status + ", " +
@@ -37,6 +39,7 @@ PaperReport run_paper_report(const std::vector<LabelledMotion>& skills,
     PaperDiveRun run;
     run.motion = dive;
     run.options = options.optimize;
+    run.options.automatic_resolution = false;
     run.options.nlp.knots_per_interval = 1;
     run.result = optimize_motion(dive.file.motion, dive.file.model, run.options);
     log(dive.label + ": " + run.result.solve.status);
@@ -47,6 +50,7 @@ PaperReport run_paper_report(const std::vector<LabelledMotion>& skills,
   const auto m7 = std::find_if(skills.begin(), skills.end(),
                                [](const LabelledMotion& m) { return m.label == "M7"; });
   report.mass_options.optimize = options.optimize;
+  report.mass_options.optimize.automatic_resolution = false;
   if (m7 != skills.end()) {
     report.mass = run_mass_study(m7->file, report.mass_options);
     log("mass study done");
@@ -55,6 +59,7 @@ PaperReport run_paper_report(const std::vector<LabelledMotion>& skills,
   // Convergence study (§3.4's claim).
   ConvergenceStudyOptions& convergence = report.convergence_options;
   convergence.optimize = options.optimize;
+  convergence.optimize.automatic_resolution = false;  // the paper's protocol: its resolution
   std::vector<LabelledMotion> study_motions = skills;
   // The paper's mass-parameter errors hit every segment alike; a single segment's error (the
   // right thigh, as in the mass study) also breaks the body's left-right symmetry.

@@ -1,12 +1,13 @@
 #pragma once
 /// @file
 /// The relaxed model's objective (paper eq. 1): J = (1/T) ∫ Σ F_i² dt, the mean squared root
-/// wrench, integrated span by span with Gauss–Legendre nodes that move with the knots. A fixed
-/// grid would let the optimum put force between its samples once the knots are denser than the
-/// grid; nodes tied to the spans integrate each polynomial piece as a piece. Its Gauss–Newton
-/// curvature is damped by μ·J·I (Levenberg–Marquardt, μ from AdaptiveDamping: light segments
-/// barely change the root force, so undamped Gauss–Newton steps would swing them on a linear
-/// model that no longer holds).
+/// wrench, integrated span by span with Gauss–Lobatto nodes that move with the knots. A fixed
+/// grid let the optimum put force between its samples once the knots were denser than the grid,
+/// and Gauss–Legendre nodes (which avoid a span's ends) let it put force at the knots, where the
+/// wrench's slope jumps; nodes tied to the spans, ends included, integrate each piece as a piece.
+/// Its Gauss–Newton curvature is damped by μ·J·I (Levenberg–Marquardt, μ from AdaptiveDamping:
+/// light segments barely change the root force, so undamped Gauss–Newton steps would swing them
+/// on a linear model that no longer holds).
 
 #include <Eigen/Core>
 #include <vector>
