@@ -12,10 +12,21 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
 
 # Debian packages the build and the tests need (see README "Dependencies").
-packages=(build-essential cmake pkg-config clang-format clang libclang-rt-14-dev llvm
+packages=(build-essential cmake pkg-config clang-format
           libeigen3-dev coinor-libipopt-dev libopenblas0-serial nlohmann-json3-dev libcli11-dev
           libgtest-dev libbenchmark-dev
           libvtk9-qt-dev libvtk9-dev qtbase5-dev xvfb xauth libgl1-mesa-dri)
+# The test form also builds under AddressSanitizer and UndefinedBehaviorSanitizer with clang and
+# runs the readers' libFuzzer targets (llvm-symbolizer, from llvm, makes the reports readable).
+[ "$mode" = test ] && packages+=(clang libclang-rt-14-dev llvm)
+
+# Each stage's wall time, so CI logs show where the time goes (CI's limit is 60 minutes).
+stage_start=$SECONDS
+stage() {
+  echo "-- $((SECONDS - stage_start)) s (total $SECONDS s)"
+  echo "== $*"
+  stage_start=$SECONDS
+}
 
 missing=()
 for p in "${packages[@]}"; do
@@ -32,7 +43,7 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-echo "== configure and build (Release)"
+stage "configure and build (Release)"
 cmake --preset release >/dev/null
 cmake --build --preset release -j"$(nproc)"
 
@@ -51,18 +62,19 @@ if [ "$mode" = demo ]; then
   exit 0
 fi
 
-echo "== format check (clang-format, .clang-format)"
+stage "format check (clang-format, .clang-format)"
 mapfile -t sources < <(git ls-files '*.h' '*.cpp' 2>/dev/null || find src tests -name '*.h' -o -name '*.cpp')
 clang-format --dry-run --Werror "${sources[@]}"
 
-echo "== tests"
+stage "tests"
 ctest --preset release --output-on-failure --no-tests=error -j"$(nproc)"
 
 # The same unit, integration and cli tests with clang under AddressSanitizer and
 # UndefinedBehaviorSanitizer (float-cast-overflow included), and the readers' libFuzzer targets
 # for a short seeded run each (docs/safety.md). No GUI: it adds nothing the sanitizers look at.
-echo "== sanitizer build (clang, ASan + UBSan, libFuzzer targets)"
+stage "sanitizer build (clang, ASan + UBSan, libFuzzer targets)"
 cmake --preset sanitize >/dev/null
 cmake --build --preset sanitize -j"$(nproc)"
-echo "== sanitizer tests and fuzzing"
+stage "sanitizer tests and fuzzing"
 ctest --preset sanitize --output-on-failure --no-tests=error -j"$(nproc)"
+echo "-- $((SECONDS - stage_start)) s (total $SECONDS s)"
