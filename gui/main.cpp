@@ -5,13 +5,59 @@
 #include <QApplication>
 #include <QSurfaceFormat>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "app/batch.h"
 #include "app/main_window.h"
+#include "app/run_controller.h"
 #include "core/command_line.h"
+
+namespace {
+
+constexpr int kExitNoDisplay = 1;
+
+/// What to do without a display, instead of Qt's abort with a core dump.
+void print_no_display_advice(const char* why) {
+  std::fprintf(stderr,
+               "saltus-gui: cannot open a window: %s.\n"
+               "On a machine without a screen, run it under a virtual display:\n"
+               "  xvfb-run -a saltus-gui [MOTION] [options]\n"
+               "(batch options such as --screenshot and --export-figures need one too).\n",
+               why);
+}
+
+/// Whether Qt's default platform (X11, or Wayland) has a display to connect to. Another
+/// platform chosen in QT_QPA_PLATFORM (offscreen, vnc, ...) is left to Qt.
+bool display_configured() {
+  const char* platform = std::getenv("QT_QPA_PLATFORM");
+  if (platform && *platform && std::strncmp(platform, "xcb", 3) != 0 &&
+      std::strncmp(platform, "wayland", 7) != 0)
+    return true;
+  const char* x11 = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  return (x11 && *x11) || (wayland && *wayland);
+}
+
+/// Qt ends with qFatal (an abort) when its platform plugin cannot connect, e.g. to a DISPLAY that
+/// names no running X server: said in words, with the way out, and a plain exit status.
+void on_qt_message(QtMsgType type, const QMessageLogContext&, const QString& message) {
+  if (type == QtFatalMsg) {
+    if (message.contains("platform plugin", Qt::CaseInsensitive) ||
+        message.contains("could not connect to display", Qt::CaseInsensitive)) {
+      print_no_display_advice("the display could not be reached");
+      std::_Exit(kExitNoDisplay);
+    }
+    std::fprintf(stderr, "saltus-gui: %s\n", qPrintable(message));
+    std::abort();
+  }
+  std::fprintf(stderr, "%s\n", qPrintable(message));
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
@@ -31,6 +77,11 @@ int main(int argc, char** argv) {
     return 0;
   }
 
+  if (!display_configured()) {
+    print_no_display_advice("no display is set (DISPLAY is empty)");
+    return kExitNoDisplay;
+  }
+  qInstallMessageHandler(on_qt_message);
   // VTK's OpenGL needs its surface format set before the QApplication exists (DESIGN §8).
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
   QApplication app(argc, argv);
@@ -48,10 +99,10 @@ int main(int argc, char** argv) {
     if (command_line.stage) window.set_stage(*command_line.stage);
     if (command_line.time) window.seek(*command_line.time);
     if (command_line.optimize && window.document().loaded()) {
-      saltus::gui::OptimizeSettings settings = window.optimize_settings();
+      saltus::gui::OptimizeSettings settings = window.runs().settings();
       if (command_line.max_iterations) settings.max_iterations = *command_line.max_iterations;
       if (command_line.samples) settings.samples = *command_line.samples;
-      window.start_optimization(settings);
+      window.runs().start(settings);
     }
   }
   return app.exec();

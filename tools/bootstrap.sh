@@ -15,7 +15,7 @@ cd "$root"
 packages=(build-essential cmake pkg-config clang-format
           libeigen3-dev coinor-libipopt-dev libopenblas0-serial nlohmann-json3-dev libcli11-dev
           libgtest-dev libbenchmark-dev
-          libvtk9-qt-dev libvtk9-dev qtbase5-dev xvfb xauth libgl1-mesa-dri)
+          libvtk9-qt-dev libvtk9-dev qtbase5-dev xvfb xauth libgl1-mesa-dri ffmpeg)
 # The test form also builds under AddressSanitizer and UndefinedBehaviorSanitizer with clang and
 # runs the readers' libFuzzer targets (llvm-symbolizer, from llvm, makes the reports readable).
 [ "$mode" = test ] && packages+=(clang libclang-rt-14-dev llvm)

@@ -8,7 +8,12 @@
 #include <exception>
 #include <filesystem>
 
+#include "app/compare_controller.h"
+#include "app/compare_window.h"
+#include "app/file_controller.h"
 #include "app/main_window.h"
+#include "app/run_controller.h"
+#include "core/figures.h"
 #include "core/result_folder.h"
 #include "saltus/base/input_error.h"
 #include "scene/chart_view.h"
@@ -41,13 +46,13 @@ int export_figures(const CommandLine& c) {
   }
   try {
     std::filesystem::create_directories(c.export_figures);
-    for (const Figure& figure : paper_figures(folders)) {
+    for (const Figure& figure : result_figures(folders)) {
       const std::string path =
           (std::filesystem::path(c.export_figures) / figure.file_name).string();
       write_chart_png(figure.chart, path, kFigureWidth, kFigureHeight, 15);
       std::printf("wrote %s\n", path.c_str());
     }
-    for (const FigureGrid& figure : mass_study_figures(mass_folders)) {
+    for (const FigureGrid& figure : mass_study_load_figures(mass_folders)) {
       const std::string path =
           (std::filesystem::path(c.export_figures) / figure.file_name).string();
       write_chart_grid_png(figure.panels, figure.columns, path, kPanelWidth, kPanelHeight, 14);
@@ -85,15 +90,20 @@ int show_motion(const CommandLine& c) {
     OptimizeSettings settings;
     if (c.max_iterations) settings.max_iterations = *c.max_iterations;
     if (c.samples) settings.samples = *c.samples;
-    if (!window.start_optimization(settings, &error)) {
+    if (!window.runs().start(settings, &error)) {
       std::fprintf(stderr, "saltus-gui: error: %s\n", qPrintable(error));
       return kExitBadInput;
     }
-    window.wait_for_optimization(kOptimizationTimeoutMs);
-    if (!window.document().has_optimization()) {
-      std::fprintf(stderr, "saltus-gui: error: the optimisation failed\n");
+    window.runs().wait(kOptimizationTimeoutMs);
+    const RunList& runs = window.workspace().runs();
+    if (runs.empty() || !runs.showable(runs.size() - 1)) {
+      std::fprintf(stderr, "saltus-gui: error: the optimisation failed%s%s\n",
+                   runs.empty() ? "" : ": ", runs.empty() ? "" : runs.at(0).error.c_str());
       return kExitFailure;
     }
+    // The one run batch mode asked for is shown whatever its status (interactively a run that
+    // did not solve is shown only when nothing better exists).
+    window.runs().show_run(runs.size() - 1);
     const OptimizationResult& r = window.document().optimization();
     std::printf("optimised: %s after %d iterations, average root force %.4g N -> %.4g N\n",
                 r.solve.status.c_str(), r.solve.iterations, r.before.metrics.avg_root_force,
@@ -104,25 +114,37 @@ int show_motion(const CommandLine& c) {
   QApplication::processEvents();
 
   if (!c.save_result.empty()) {
-    if (!window.save_result(QString::fromStdString(c.save_result), &error)) {
+    if (!window.files().save_result(QString::fromStdString(c.save_result), &error)) {
       std::fprintf(stderr, "saltus-gui: error: %s\n", qPrintable(error));
       return kExitBadInput;
     }
     std::printf("wrote %s\n", c.save_result.c_str());
   }
   if (!c.screenshot_view.empty()) {
-    if (!window.export_view_png(QString::fromStdString(c.screenshot_view), &error)) {
+    if (!window.files().export_view_png(QString::fromStdString(c.screenshot_view), &error)) {
       std::fprintf(stderr, "saltus-gui: error: %s\n", qPrintable(error));
       return kExitFailure;
     }
     std::printf("wrote %s\n", c.screenshot_view.c_str());
   }
-  if (!c.screenshot.empty()) {
-    if (!window.export_window_png(QString::fromStdString(c.screenshot), &error)) {
+  if (!c.compare.empty()) {
+    const int status =
+        write_compare_screenshot(window, QString::fromStdString(c.compare), window.time(),
+                                 QSize(c.width, c.height), QString::fromStdString(c.screenshot));
+    if (status != 0) return status;
+  } else if (!c.screenshot.empty()) {
+    if (!window.files().export_window_png(QString::fromStdString(c.screenshot), &error)) {
       std::fprintf(stderr, "saltus-gui: error: %s\n", qPrintable(error));
       return kExitFailure;
     }
     std::printf("wrote %s\n", c.screenshot.c_str());
+  }
+  if (!c.export_video.empty()) {
+    VideoOptions video;
+    video.fps = c.video_fps;
+    video.speed = c.video_speed;
+    const int status = write_video(window, QString::fromStdString(c.export_video), video);
+    if (status != 0) return status;
   }
   if (c.benchmark) {
     const double fps = window.benchmark_playback(c.benchmark_seconds);
@@ -133,6 +155,41 @@ int show_motion(const CommandLine& c) {
 }
 
 }  // namespace
+
+int write_compare_screenshot(MainWindow& window, const QString& other, double time,
+                             const QSize& size, const QString& png) {
+  QString error;
+  if (!window.compare().compare_with(other, &error)) {
+    std::fprintf(stderr, "saltus-gui: error: %s\n", qPrintable(error));
+    return kExitBadInput;
+  }
+  // A model comparison optimises its second run in the background first.
+  window.compare().wait(kOptimizationTimeoutMs);
+  CompareWindow* compare = window.compare().window();
+  compare->setAttribute(Qt::WA_DontShowOnScreen);
+  compare->resize(size);
+  compare->show();
+  compare->seek(time);
+  QApplication::processEvents();
+  if (!compare->grab_window().save(png, "PNG")) {
+    std::fprintf(stderr, "saltus-gui: error: %s: cannot write the image\n", qPrintable(png));
+    return kExitFailure;
+  }
+  std::printf("wrote %s\n", qPrintable(png));
+  return 0;
+}
+
+int write_video(MainWindow& window, const QString& path, const VideoOptions& options) {
+  QString error;
+  VideoPlan plan;
+  if (!window.video().export_video(path, options, &error, &plan)) {
+    std::fprintf(stderr, "saltus-gui: error: %s\n", qPrintable(error));
+    return video_format_for(path.toStdString()) ? kExitFailure : kExitBadInput;
+  }
+  std::printf("wrote %s (%d frames, %.2f s at %g frames per second)\n", qPrintable(path),
+              plan.frames(), plan.video_seconds(), plan.fps);
+  return 0;
+}
 
 int run_batch(const CommandLine& c) {
   if (!c.export_figures.empty()) {

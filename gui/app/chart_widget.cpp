@@ -9,6 +9,8 @@ namespace saltus::gui {
 ChartWidget::ChartWidget(QWidget* parent) : VtkImageWidget(parent), cursor_time_(std::nan("")) {
   view_.set_render_window(render_window(), interactor());
   setMinimumSize(240, 160);
+  // A click gives it the focus, so that the playback keys act after clicking a plot.
+  setFocusPolicy(Qt::ClickFocus);
   setToolTip(tr("Click or drag to move the time cursor"));
   cursor_ = new QWidget(this);
   cursor_->setAttribute(Qt::WA_TransparentForMouseEvents);

@@ -13,6 +13,7 @@
 #include <cmath>
 
 #include "core/motion_edit.h"
+#include "saltus/body/segment_names.h"
 
 namespace saltus::gui {
 
@@ -109,7 +110,8 @@ void KeyframePanel::set_motion(const Motion* motion, const BodyModel* model) {
       for (std::size_t i = 0; i < motion_->keyframes.size(); ++i)
         list_->addItem(tr("K%1   %2 s").arg(i + 1).arg(motion_->keyframes[i].time, 0, 'f', 3));
       for (const Segment& s : model_->segments)
-        joint_->addItem(QString::fromStdString(s.joint + "  (" + s.name + ")"));
+        joint_->addItem(QString::fromStdString(capitalised(joint_label(s.joint)) + " (" +
+                                               segment_label(s.name) + ")"));
       const int count = static_cast<int>(motion_->keyframes.size());
       list_->setCurrentRow(std::clamp(keyframe, 0, count - 1));
       const int knee = model_->joint_index("knee_l");

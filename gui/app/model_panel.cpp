@@ -8,9 +8,11 @@
 #include <QTableWidget>
 #include <QTimer>
 #include <QVBoxLayout>
+#include <cmath>
 #include <limits>
 
 #include "core/model_edit.h"
+#include "saltus/body/segment_names.h"
 
 namespace saltus::gui {
 
@@ -61,7 +63,7 @@ void ModelPanel::set_model(const BodyModel* loaded, const BodyModel* current) {
   for (int i = 0; i < rows; ++i) {
     const Segment& s = current_->segments[static_cast<std::size_t>(i)];
     const double factor = s.mass / loaded_->segments[static_cast<std::size_t>(i)].mass;
-    auto* name = new QTableWidgetItem(QString::fromStdString(s.name));
+    auto* name = new QTableWidgetItem(QString::fromStdString(capitalised(segment_label(s.name))));
     name->setFlags(name->flags() & ~Qt::ItemIsEditable);
     table_->setItem(i, 0, name);
     table_->setItem(i, kMassColumn, new QTableWidgetItem(QString::number(s.mass, 'f', 3)));
@@ -92,16 +94,29 @@ QString ModelPanel::problem() const {
 void ModelPanel::on_item_changed(QTableWidgetItem* item) {
   if (!loaded_ || !current_) return;
   const int row = item->row();
+  const bool mass = item->column() == kMassColumn;
   bool ok = false;
   const double value = item->text().toDouble(&ok);
+  const QString segment =
+      QString::fromStdString(segment_label(current_->segments[static_cast<std::size_t>(row)].name));
+  if (!ok || !std::isfinite(value) || value <= 0.0) {
+    // Said here in the user's words; the table shows the values in force again.
+    const QString entered = item->text();
+    QTimer::singleShot(0, this, [this, mass, segment, entered] {
+      set_model(loaded_, current_);
+      show_problem(mass ? tr("The mass of the %1 must be a positive number of kilograms "
+                             "(\"%2\" is not).")
+                              .arg(segment, entered)
+                        : tr("The factor for the %1 must be a positive number (\"%2\" is not).")
+                              .arg(segment, entered));
+    });
+    return;
+  }
   std::vector<double> f;
   for (int i = 0; i < current_->size(); ++i)
     f.push_back(current_->segments[static_cast<std::size_t>(i)].mass /
                 loaded_->segments[static_cast<std::size_t>(i)].mass);
-  // Not a number: NaN, which the library rejects with its own message.
-  const double entered = ok ? value : std::numeric_limits<double>::quiet_NaN();
-  f[static_cast<std::size_t>(row)] =
-      item->column() == kMassColumn ? mass_factor_for(*loaded_, row, entered) : entered;
+  f[static_cast<std::size_t>(row)] = mass ? mass_factor_for(*loaded_, row, value) : value;
   // After the table has finished with the edited item: the edit rebuilds the table.
   QTimer::singleShot(0, this, [this, f] { emit factors_edited(f); });
 }

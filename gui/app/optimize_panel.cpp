@@ -7,6 +7,7 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QListWidget>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSpinBox>
@@ -31,8 +32,11 @@ OptimizePanel::OptimizePanel(QWidget* parent) : QWidget(parent) {
   epsilon_->setToolTip(tr("Strict model: bound on each |F_i| at every sample"));
   timing_ = new QCheckBox(tr("optimise keyframe times"), this);
   knots_ = new QSpinBox(this);
-  knots_->setRange(1, kMaxKnotsPerInterval);
-  knots_->setToolTip(tr("Spline knot sub-intervals per keyframe interval (1 = the paper's)"));
+  knots_->setRange(0, kMaxKnotsPerInterval);
+  knots_->setSpecialValueText(tr("auto"));
+  knots_->setToolTip(
+      tr("Spline knot spans per keyframe interval: auto (chosen from how far the body turns, "
+         "then refined where the residual is; the default) or a number (1 = the paper's)"));
   samples_ = new QSpinBox(this);
   samples_->setRange(kMinSamples, 5000);
   samples_->setToolTip(tr("Time samples of the objective on [0, T] (fewer = faster)"));
@@ -48,6 +52,18 @@ OptimizePanel::OptimizePanel(QWidget* parent) : QWidget(parent) {
       tr("Soft limit on how far a joint turns relative to its parent between two spline control\n"
          "points (or the interpolation's own turn where larger). Without it, light limbs can\n"
          "spin between keyframes at little cost in root force."));
+  // Named for tests and style sheets.
+  formulation_->setObjectName("formulation");
+  epsilon_->setObjectName("epsilon");
+  timing_->setObjectName("timing");
+  knots_->setObjectName("knots_per_interval");
+  samples_->setObjectName("samples");
+  iterations_->setObjectName("max_iterations");
+  joint_turn_->setObjectName("max_joint_turn");
+  // A typed value counts when it is complete (Enter or leaving the box): one undo step each.
+  for (QAbstractSpinBox* box : std::initializer_list<QAbstractSpinBox*>{epsilon_, knots_, samples_,
+                                                                        iterations_, joint_turn_})
+    box->setKeyboardTracking(false);
   form->addRow(tr("Model"), formulation_);
   form->addRow(tr("ε (strict)"), epsilon_);
   form->addRow(QString(), timing_);
@@ -67,10 +83,27 @@ OptimizePanel::OptimizePanel(QWidget* parent) : QWidget(parent) {
   layout->addLayout(buttons);
   bar_ = new QProgressBar(this);
   bar_->setTextVisible(true);
+  bar_->setRange(0, 1);
+  bar_->setValue(0);
+  bar_->setFormat(QString());
   status_ = new QLabel(tr("Open a motion to optimise it."), this);
   status_->setWordWrap(true);
   layout->addWidget(bar_);
   layout->addWidget(status_);
+
+  layout->addWidget(new QLabel(tr("Runs of this motion (the best solved one is shown):"), this));
+  runs_ = new QListWidget(this);
+  runs_->setMaximumHeight(110);
+  runs_->setWordWrap(true);
+  runs_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  runs_->setToolTip(
+      tr("Every run is kept. Choose one to show it; a cancelled or failed run "
+         "never replaces a solved one by itself."));
+  layout->addWidget(runs_);
+  connect(runs_, &QListWidget::currentRowChanged, this, [this](int row) {
+    // Row 0 is "interpolation only".
+    if (!setting_ && row >= 0) emit run_chosen(row - 1);
+  });
 
   table_ = new QTableWidget(0, 3, this);
   table_->setHorizontalHeaderLabels({tr("Quantity"), tr("Before"), tr("After")});
@@ -87,10 +120,26 @@ OptimizePanel::OptimizePanel(QWidget* parent) : QWidget(parent) {
 
   connect(run_, &QPushButton::clicked, this, &OptimizePanel::run_requested);
   connect(cancel_, &QPushButton::clicked, this, &OptimizePanel::cancel_requested);
-  connect(formulation_, qOverload<int>(&QComboBox::currentIndexChanged), this,
-          [this] { update_enabled(); });
+  connect(formulation_, qOverload<int>(&QComboBox::currentIndexChanged), this, [this] {
+    update_enabled();
+    on_value_changed();
+  });
+  connect(timing_, &QCheckBox::toggled, this, [this] { on_value_changed(); });
+  for (QSpinBox* box : {knots_, samples_, iterations_})
+    connect(box, qOverload<int>(&QSpinBox::valueChanged), this, [this] { on_value_changed(); });
+  for (QDoubleSpinBox* box : {epsilon_, joint_turn_})
+    connect(box, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
+            [this] { on_value_changed(); });
   set_settings(OptimizeSettings{});
+  reset();
   update_enabled();
+}
+
+void OptimizePanel::on_value_changed() {
+  if (setting_) return;
+  const OptimizeSettings before = current_;
+  current_ = settings();
+  emit settings_edited(before, current_);
 }
 
 OptimizeSettings OptimizePanel::settings() const {
@@ -106,6 +155,7 @@ OptimizeSettings OptimizePanel::settings() const {
 }
 
 void OptimizePanel::set_settings(const OptimizeSettings& s) {
+  setting_ = true;
   formulation_->setCurrentIndex(s.strict ? 1 : 0);
   epsilon_->setValue(s.epsilon);
   timing_->setChecked(s.optimize_timing);
@@ -113,6 +163,8 @@ void OptimizePanel::set_settings(const OptimizeSettings& s) {
   samples_->setValue(s.samples);
   iterations_->setValue(s.max_iterations);
   joint_turn_->setValue(s.max_joint_turn_deg);
+  current_ = settings();
+  setting_ = false;
   update_enabled();
 }
 
@@ -126,21 +178,51 @@ void OptimizePanel::set_available(bool available) {
 void OptimizePanel::set_running(bool running) {
   running_ = running;
   if (running) {
-    bar_->setRange(0, std::max(1, iterations_->value()));
-    bar_->setValue(0);
-    bar_->setFormat(tr("iteration %v of at most %m"));
+    // How many iterations a run needs is unknown (most solve far below the limit): a busy bar
+    // and the iteration count, not a fraction of the limit.
+    bar_->setRange(0, 0);
     status_->setText(tr("Building the problem (first derivatives)…"));
+  } else {
+    bar_->setRange(0, 1);
+    bar_->setValue(1);
   }
   update_enabled();
 }
 
 void OptimizePanel::show_progress(const ProgressInfo& progress) {
-  bar_->setValue(std::min(progress.iteration, bar_->maximum()));
+  bar_->setFormat(tr("iteration %1").arg(progress.iteration));
   status_->setText(QString::fromStdString(progress_text(progress)));
 }
 
 void OptimizePanel::show_message(const QString& message) {
   status_->setText(message);
+  if (!running_) bar_->setFormat(message.section(':', 0, 0));
+}
+
+QString OptimizePanel::message() const {
+  return status_->text();
+}
+
+void OptimizePanel::show_runs(const std::vector<std::string>& labels, int shown) {
+  setting_ = true;
+  runs_->clear();
+  runs_->addItem(tr("Interpolated keyframes only (no run shown)"));
+  for (const std::string& label : labels) {
+    runs_->addItem(QString::fromStdString(label));
+    runs_->item(runs_->count() - 1)->setToolTip(QString::fromStdString(label));
+  }
+  runs_->setCurrentRow(shown + 1);
+  runs_->setEnabled(!labels.empty());
+  setting_ = false;
+}
+
+void OptimizePanel::reset() {
+  clear_result();
+  show_runs({}, -1);
+  bar_->setRange(0, 1);
+  bar_->setValue(0);
+  bar_->setFormat(QString());
+  status_->setText(available_ ? tr("Ready.") : tr("Open a motion to optimise it."));
 }
 
 void OptimizePanel::show_result(const std::vector<ResultRow>& rows) {
@@ -158,7 +240,6 @@ void OptimizePanel::show_result(const std::vector<ResultRow>& rows) {
 
 void OptimizePanel::clear_result() {
   table_->setRowCount(0);
-  bar_->setValue(0);
 }
 
 void OptimizePanel::update_enabled() {

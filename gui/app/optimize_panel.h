@@ -1,8 +1,10 @@
 #pragma once
 /// @file
 /// The optimisation panel: formulation (relaxed / strict with ε), timing on/off, knots per
-/// interval, samples, max iterations; Run and Cancel; live progress; the result table (before /
-/// after).
+/// interval, samples, max iterations, max joint turn; Run and Cancel; live progress; the list of
+/// runs of this motion (each kept; choosing one shows it) and the result table of the run shown
+/// (before / after). It only asks: the run controller optimises, the edit controller makes
+/// option changes undoable.
 
 #include <QWidget>
 #include <vector>
@@ -13,6 +15,7 @@ class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
+class QListWidget;
 class QProgressBar;
 class QPushButton;
 class QSpinBox;
@@ -35,15 +38,28 @@ class OptimizePanel : public QWidget {
   void show_progress(const ProgressInfo& progress);
   /// Ends the progress display with a message (finished, cancelled, failed).
   void show_message(const QString& message);
+  /// The message shown under the progress bar.
+  QString message() const;
   void show_result(const std::vector<ResultRow>& rows);
   void clear_result();
+  /// The run list: one line per run, `shown` highlighted (-1: none, the interpolation).
+  void show_runs(const std::vector<std::string>& labels, int shown);
+  QListWidget* run_list() const { return runs_; }
+  /// Clears the progress, the message, the list and the table (another motion was opened).
+  void reset();
 
  signals:
   void run_requested();
   void cancel_requested();
+  /// The user picked a run in the list (-1: "interpolation only").
+  void run_chosen(int index);
+  /// The user changed a value: what it was and what it is now (for undo).
+  void settings_edited(const saltus::gui::OptimizeSettings& before,
+                       const saltus::gui::OptimizeSettings& after);
 
  private:
   void update_enabled();
+  void on_value_changed();
 
   QComboBox* formulation_ = nullptr;
   QDoubleSpinBox* epsilon_ = nullptr;
@@ -57,8 +73,12 @@ class OptimizePanel : public QWidget {
   QProgressBar* bar_ = nullptr;
   QLabel* status_ = nullptr;
   QTableWidget* table_ = nullptr;
+  QListWidget* runs_ = nullptr;
   bool available_ = false;
   bool running_ = false;
+  /// The values as last set or edited: the "before" of the next edit.
+  OptimizeSettings current_;
+  bool setting_ = false;  ///< set_settings is writing the fields: no edit signals
 };
 
 }  // namespace saltus::gui

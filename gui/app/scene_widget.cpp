@@ -16,6 +16,24 @@ SceneWidget::SceneWidget(QWidget* parent)
   vtkNew<vtkInteractorStyleTrackballCamera> style;
   interactor()->SetInteractorStyle(style);
   setMinimumSize(320, 240);
+  refine_.setSingleShot(true);
+  refine_.setInterval(kRefineDelayMs);
+  connect(&refine_, &QTimer::timeout, this, &SceneWidget::render_refined);
+}
+
+void SceneWidget::render_refined() {
+  refine_.stop();
+  if (!isVisible()) return;
+  refining_ = true;
+  scene_.set_antialiasing(true);
+  render_now();
+  scene_.set_antialiasing(false);
+  refining_ = false;
+}
+
+void SceneWidget::rendered() {
+  // A fast picture: refine it once nothing has changed for a moment.
+  if (!refining_) refine_.start();
 }
 
 void SceneWidget::mousePressEvent(QMouseEvent* event) {

@@ -1,8 +1,11 @@
 #pragma once
 /// @file
 /// The 3D view: a BodyScene in a VtkImageWidget. The mouse rotates, pans and zooms the camera;
-/// a left click without dragging on a body segment reports that segment. Included only inside
-/// gui/app.
+/// a left click without dragging on a body segment reports that segment. Moving pictures
+/// (playback, a turning camera) are drawn fast; once the picture has kept still for a moment it
+/// is drawn again anti-aliased, as are pictures taken for export. Included only inside gui/app.
+
+#include <QTimer>
 
 #include "app/vtk_image_widget.h"
 #include "core/click_tracker.h"
@@ -17,6 +20,10 @@ class SceneWidget : public VtkImageWidget {
   explicit SceneWidget(QWidget* parent = nullptr);
 
   BodyScene& scene() { return scene_; }
+  /// Renders the current picture anti-aliased now (exports, screenshots, tests).
+  void render_refined();
+  /// How long the picture must keep still before it is refined, ms.
+  static constexpr int kRefineDelayMs = 300;
 
  signals:
   /// A left click (press and release without dragging) on a body segment: its index in the
@@ -27,10 +34,13 @@ class SceneWidget : public VtkImageWidget {
   void mousePressEvent(QMouseEvent* event) override;
   void mouseMoveEvent(QMouseEvent* event) override;
   void mouseReleaseEvent(QMouseEvent* event) override;
+  void rendered() override;
 
  private:
   BodyScene scene_;
   ClickTracker click_;
+  QTimer refine_;
+  bool refining_ = false;
 };
 
 }  // namespace saltus::gui

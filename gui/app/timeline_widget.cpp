@@ -58,6 +58,8 @@ void TickStrip::paintEvent(QPaintEvent*) {
 }
 
 TimelineWidget::TimelineWidget(QWidget* parent) : QWidget(parent) {
+  // Focusable, so that the playback keys (scoped to it) work after a click on it.
+  setFocusPolicy(Qt::StrongFocus);
   auto* layout = new QGridLayout(this);
   layout->setContentsMargins(6, 2, 6, 2);
   layout->setVerticalSpacing(0);

@@ -27,6 +27,39 @@ AxisRange y_range(const ChartSpec& chart, bool right_axis) {
   return {lo - pad, hi + pad};
 }
 
+namespace {
+constexpr double kMaxLogDecades = 4.0;
+}  // namespace
+
+AxisRange log_y_range(const ChartSpec& chart) {
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = 0.0;
+  for (const LineSpec& line : chart.lines) {
+    if (line.right_axis) continue;
+    for (double y : line.y) {
+      if (!std::isfinite(y) || y <= 0) continue;
+      lo = std::min(lo, y);
+      hi = std::max(hi, y);
+    }
+  }
+  if (!(hi > 0)) return {1.0, 10.0};
+  // At most kMaxDecades below the largest value: a curve that touches zero must not spend the
+  // axis on its dips.
+  lo = std::max(lo, hi * std::pow(10.0, -kMaxLogDecades));
+  // A little room above the largest value and below the smallest, in log space (5 %), and at
+  // least one decade so that a flat curve still gets an axis with a label.
+  double log_lo = std::log10(lo), log_hi = std::log10(hi);
+  const double pad = 0.05 * std::max(log_hi - log_lo, 1.0);
+  log_lo -= pad;
+  log_hi += pad;
+  if (log_hi - log_lo < 1.0) {
+    const double mid = 0.5 * (log_lo + log_hi);
+    log_lo = mid - 0.5;
+    log_hi = mid + 0.5;
+  }
+  return {std::pow(10.0, log_lo), std::pow(10.0, log_hi)};
+}
+
 AxisRange x_range(const ChartSpec& chart) {
   double lo = std::numeric_limits<double>::infinity();
   double hi = -lo;

@@ -32,13 +32,20 @@ struct MarkerSpec {
   double x = 0.0;
   Rgb colour;
   bool dashed = false;
+  /// Legend entry ("keyframes (given)"); empty: none. One marker of a kind carries it.
+  std::string label;
 };
 
 struct ChartSpec {
   std::string title;
   std::string x_title;   ///< with unit, e.g. "time (s)"
   std::string y_title;   ///< with unit, e.g. "root force (N)"
-  std::string y2_title;  ///< right axis; empty when no line uses it
+  std::string y2_title;  ///< right axis; empty when no line uses it and y2_per_y is 0
+  /// Left y axis logarithmic (values <= 0 are not drawn there).
+  bool log_y = false;
+  /// > 0: the right axis is the left one in other units (right = left × y2_per_y, e.g. % of
+  /// body weight) and no line uses it.
+  double y2_per_y = 0.0;
   std::vector<LineSpec> lines;
   std::vector<MarkerSpec> markers;
   /// Labels for integer x positions 0, 1, ... (bar charts); empty: numeric axis.
@@ -52,6 +59,10 @@ struct AxisRange {
   double min = 0.0, max = 1.0;
 };
 AxisRange y_range(const ChartSpec& chart, bool right_axis);
+/// The left axis for a logarithmic scale: the positive values' range, at most four decades
+/// below the largest value and at least one decade wide, padded 5 % in log space; {1, 10} when
+/// nothing is positive.
+AxisRange log_y_range(const ChartSpec& chart);
 /// Smallest and largest x over all lines and markers (unpadded); {0, 1} when empty.
 AxisRange x_range(const ChartSpec& chart);
 

@@ -85,6 +85,18 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
     } else if (a == "--export-figures") {
       c.export_figures = value();
       after_export = true;
+    } else if (a == "--compare") {
+      c.compare = value();
+    } else if (a == "--export-video") {
+      c.export_video = value();
+    } else if (a == "--fps") {
+      c.video_fps = parse_double(a, value());
+      if (!(c.video_fps > 0 && c.video_fps <= 120))
+        throw std::invalid_argument("--fps must be in (0, 120]");
+    } else if (a == "--speed") {
+      c.video_speed = parse_double(a, value());
+      if (!(c.video_speed >= 0.05 && c.video_speed <= 10))
+        throw std::invalid_argument("--speed must be in [0.05, 10]");
     } else if (a == "--benchmark-playback") {
       c.benchmark = true;
     } else if (a == "--seconds") {
@@ -104,8 +116,12 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
   if (c.help || c.version) return c;
   if (!c.export_figures.empty() && c.result_dirs.empty())
     throw std::invalid_argument("--export-figures DIR needs at least one RESULT_DIR after it");
+  if (!c.compare.empty() && c.screenshot.empty())
+    throw std::invalid_argument(
+        "--compare B needs --screenshot FILE (the compare window's picture)");
   const bool needs_motion = c.optimize || c.time || c.stage || !c.screenshot.empty() ||
-                            !c.screenshot_view.empty() || !c.save_result.empty() || c.benchmark;
+                            !c.screenshot_view.empty() || !c.save_result.empty() || c.benchmark ||
+                            !c.export_video.empty() || !c.compare.empty();
   if (needs_motion && c.motion.empty() && c.batch())
     throw std::invalid_argument("give a motion file to show (saltus-gui MOTION ...)");
   return c;
@@ -114,8 +130,9 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
 std::string usage_text() {
   return R"(Usage: saltus-gui [MOTION] [options]
 
-Opens the desktop app, showing MOTION (*.motion.json) if given. With any of --screenshot,
---screenshot-view, --save-result, --export-figures or --benchmark-playback it runs without
+Opens the desktop app, showing MOTION (*.motion.json, or a .bvh capture imported onto the
+model) if given. With any of --screenshot, --screenshot-view, --save-result, --export-figures,
+--export-video or --benchmark-playback it runs without
 user interaction: it renders (under an X display; use xvfb-run on a headless machine), writes
 the files and exits (status 0 ok, 2 bad input or usage, 1 other failure).
 
@@ -135,6 +152,12 @@ the files and exits (status 0 ok, 2 bad input or usage, 1 other failure).
                           before/after, average root force) from `saltus optimize` folders,
                           and joint loads given vs scaled (Fig. 8) from `saltus study mass`
                           folders
+  --compare B             with --screenshot: the compare window of MOTION against B (a motion
+                          file or a result folder) instead of the main window
+  --export-video FILE     the 3D view's animation as .mp4 or .gif (time and residual in the
+                          picture; needs the ffmpeg program)
+  --fps F                 frames per second of the video (default 30, GIF 20)
+  --speed S               motion seconds per video second (default 1; 0.5 = slow motion)
   --benchmark-playback    play the motion for a few seconds and print frames per second
   --seconds S             length of the benchmark (default 5)
   --help, --version

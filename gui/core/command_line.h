@@ -5,6 +5,7 @@
 ///              [--stage before|after] [--camera side|front|top|follow] [--size WxH]
 ///              [--screenshot FILE] [--screenshot-view FILE] [--save-result DIR]
 ///              [--export-figures DIR RESULT_DIR...] [--benchmark-playback [--seconds S]]
+///              [--compare B] [--export-video FILE [--fps F] [--speed S]]
 /// Positional arguments before --export-figures name the motion; after it, result folders.
 
 #include <optional>
@@ -31,6 +32,10 @@ struct CommandLine {
   std::string screenshot_view;  ///< 3D view PNG
   std::string save_result;      ///< output folder like the CLI's --out
   std::string export_figures;   ///< folder for the paper-style figures
+  std::string compare;          ///< --screenshot shows the compare window against this
+  std::string export_video;     ///< .mp4 or .gif of the 3D view
+  double video_fps = 0.0;       ///< 0: the format's default
+  double video_speed = 1.0;     ///< motion seconds per video second
   bool benchmark = false;
   double benchmark_seconds = 5.0;
   bool help = false;
@@ -39,7 +44,7 @@ struct CommandLine {
   /// Whether the run writes files and exits by itself (no user interaction).
   bool batch() const {
     return !screenshot.empty() || !screenshot_view.empty() || !save_result.empty() ||
-           !export_figures.empty() || benchmark;
+           !export_figures.empty() || !export_video.empty() || benchmark;
   }
 };
 

@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <stdexcept>
 
 #include "saltus/base/input_error.h"
 #include "saltus/base/json_reader.h"
+#include "saltus/body/segment_names.h"
+#include "saltus/evaluation/residual_measures.h"
 
 namespace saltus::gui {
 
@@ -20,6 +23,7 @@ FolderRun folder_run(const std::string& dir) {
   if (fs::exists(optimized)) {
     run.motion_path = optimized.string();
     run.label = name + " (optimised)";
+    run.description = "optimised motion (saltus optimize folder)";
     return run;
   }
   const std::string result_path = (folder / "result.json").string();
@@ -35,6 +39,7 @@ FolderRun folder_run(const std::string& dir) {
     throw InputError(model.string(), "", "missing (the folder's copy of the body model)");
   run.model_path = model.string();
   run.label = name;
+  run.description = "interpolated keyframes (saltus evaluate folder)";
   return run;
 }
 
@@ -54,25 +59,65 @@ Rgb compare_colour(int run, int component) {
   return run == 0 ? kBlue[axis] : kOrange[axis];
 }
 
-ChartSpec compare_root_chart(bool moment, const std::array<const WrenchSeries*, 2>& runs,
-                             const std::array<std::string, 2>& labels, const ComponentMask& shown) {
-  // The legend names the runs (first solid, second dashed); the title fits half a window.
-  ChartSpec chart = root_wrench_chart_frame(moment);
-  const int first = moment ? 3 : 0;
+ChartSpec compare_root_chart(const RootChartStyle& style,
+                             const std::array<const WrenchSeries*, 2>& runs,
+                             const std::array<std::string, 2>& labels) {
+  ChartSpec chart = root_chart_frame(style);
+  const int first = style.moment ? 3 : 0;
+  const char* const axes[3] = {"x", "y", "z"};
   for (int r = 0; r < 2; ++r) {
     const WrenchSeries* series = runs[static_cast<std::size_t>(r)];
     if (!series) continue;
-    for (int i = first; i < first + 3; ++i) {
-      if (!shown[static_cast<std::size_t>(i)]) continue;
+    const std::string& label = labels[static_cast<std::size_t>(r)];
+    if (style.components) {
+      for (int a = 0; a < 3; ++a) {
+        if (!style.axes[static_cast<std::size_t>(a)]) continue;
+        LineSpec line;
+        line.label = std::string(axes[a]) + " " + label;
+        line.x = series->time;
+        line.y = series->component[static_cast<std::size_t>(first + a)];
+        line.colour = compare_colour(r, a);
+        style_compared_line(line, r == 1, true);
+        line.colour = compare_colour(r, a);  // the run's own shade, not a paler one
+        chart.lines.push_back(std::move(line));
+      }
+    } else {
       LineSpec line;
-      line.label = wrench_component_name(i) + ", " + labels[static_cast<std::size_t>(r)];
+      line.label = label;
       line.x = series->time;
-      line.y = series->component[static_cast<std::size_t>(i)];
-      line.colour = compare_colour(r, i);
-      line.dashed = r == 1;
-      line.width = 2.0;
+      line.y = style.moment ? series->moment_magnitude : series->force_magnitude;
+      line.colour = compare_colour(r, 1);
+      style_compared_line(line, r == 1, true);
+      line.colour = compare_colour(r, 1);
       chart.lines.push_back(std::move(line));
     }
+  }
+  return chart;
+}
+
+ChartSpec compare_joint_chart(const BodyModel& model, int segment, bool moment,
+                              const std::array<const std::vector<SampleRecord>*, 2>& runs,
+                              const std::array<std::string, 2>& labels) {
+  if (segment < 0 || segment >= model.size()) throw std::out_of_range("joint segment");
+  const Segment& s = model.segments[static_cast<std::size_t>(segment)];
+  ChartSpec chart;
+  chart.title = std::string(moment ? "Joint moment" : "Joint force") + " at the " +
+                joint_label(s.joint) + " (on the " + segment_label(s.name) + ")";
+  chart.x_title = "time (s)";
+  chart.y_title = moment ? "|M| (N·m)" : "|F| (N)";
+  for (int r = 0; r < 2; ++r) {
+    const std::vector<SampleRecord>* samples = runs[static_cast<std::size_t>(r)];
+    if (!samples) continue;
+    LineSpec line;
+    line.label = labels[static_cast<std::size_t>(r)];
+    for (const SampleRecord& record : *samples) {
+      const Vector6d& w = record.joint_wrench.at(static_cast<std::size_t>(segment));
+      line.x.push_back(record.time);
+      line.y.push_back(moment ? moment_magnitude(w) : force_magnitude(w));
+    }
+    style_compared_line(line, r == 1, true);
+    line.colour = compare_colour(r, 1);
+    chart.lines.push_back(std::move(line));
   }
   return chart;
 }

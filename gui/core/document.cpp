@@ -9,60 +9,117 @@
 
 namespace saltus::gui {
 
+GlyphTypicals GlyphTypicals::max(const GlyphTypicals& other) const {
+  return {std::max(residual_force, other.residual_force),
+          std::max(residual_moment, other.residual_moment),
+          std::max(joint_force, other.joint_force)};
+}
+
+Document::Dense Document::dense_of(const MotionFile& file, const MotionEvaluation& evaluation) {
+  Dense out;
+  const double duration =
+      evaluation.samples.empty() ? file.motion.flight_time() : evaluation.samples.back().time;
+  out.samples = evaluate_trajectory(file.model, evaluation.trajectory,
+                                    uniform_times(duration, plot_samples_for(duration)));
+  out.rotation = rotation_metrics(file.model, out.samples);
+  out.checks = saltus::flight_checks(file.motion.takeoff, out.samples);
+  return out;
+}
+
 void Document::load(const std::string& motion_path, const std::string& model_override,
                     int samples) {
-  MotionFile file = load_motion_file(motion_path, model_override);
+  MotionFile file;
+  std::shared_ptr<const CaptureFile> capture;
+  if (is_capture_path(motion_path)) {
+    // As load_motion_or_capture reads a capture, keeping the import for the views.
+    CaptureFileOptions options;
+    options.model = model_override;
+    auto imported = std::make_shared<CaptureFile>(import_capture_file(motion_path, options));
+    file.path = motion_path;
+    file.model = imported->model;
+    file.motion = imported->import.keyframes;
+    file.motion.model = imported->model_reference;
+    capture = std::move(imported);
+  } else {
+    file = load_motion_file(motion_path, model_override);
+  }
   EvaluateOptions options;
   options.samples = samples;
   MotionEvaluation evaluation = evaluate_motion(file.motion, file.model, options);
-  std::vector<RotationSample> rotation = rotation_metrics(file.model, evaluation.samples);
+  Dense dense = dense_of(file, evaluation);
+  std::vector<SampleRecord> capture_samples = capture_samples_of(capture.get(), file.model);
   // Only now that everything succeeded does the document change.
   file_ = std::move(file);
   model_override_ = model_override;
   evaluate_options_ = options;
   evaluation_ = std::move(evaluation);
-  rotation_ = std::move(rotation);
+  dense_ = std::move(dense);
   edited_ = false;
   loaded_model_ = file_->model;
+  capture_ = std::move(capture);
+  capture_samples_ = std::move(capture_samples);
   clear_optimization();
+}
+
+double Document::capture_duration() const {
+  return capture_ ? capture_->import.captured.flight_time() : 0.0;
+}
+
+std::vector<SampleRecord> Document::capture_samples_of(const CaptureFile* capture,
+                                                       const BodyModel& model) {
+  if (!capture) return {};
+  const double duration = capture->import.captured.flight_time();
+  return evaluate_trajectory(model, capture->import.trajectory,
+                             uniform_times(duration, plot_samples_for(duration)));
+}
+
+SampleRecord Document::capture_sample_at(double t) const {
+  if (!capture_) throw std::logic_error("no capture");
+  const double clamped = std::clamp(t, 0.0, capture_duration());
+  return evaluate_trajectory(file_->model, capture_->import.trajectory, {clamped}).front();
 }
 
 void Document::set_model(const BodyModel& model) {
   if (!loaded()) throw std::logic_error("no motion loaded");
-  if (model.size() != file_->model.size())
-    throw std::invalid_argument("the edited model has other segments than the motion's");
-  MotionEvaluation evaluation = evaluate_motion(file_->motion, model, evaluate_options_);
-  std::vector<RotationSample> rotation = rotation_metrics(model, evaluation.samples);
-  file_->model = model;
-  evaluation_ = std::move(evaluation);
-  rotation_ = std::move(rotation);
-  edited_ = true;
-  clear_optimization();
+  set_motion_and_model(file_->motion, model);
 }
 
 void Document::set_motion(const Motion& motion) {
   if (!loaded()) throw std::logic_error("no motion loaded");
-  MotionEvaluation evaluation = evaluate_motion(motion, file_->model, evaluate_options_);
-  std::vector<RotationSample> rotation = rotation_metrics(file_->model, evaluation.samples);
-  file_->motion = motion;
+  set_motion_and_model(motion, file_->model);
+}
+
+void Document::set_motion_and_model(const Motion& motion, const BodyModel& model) {
+  if (!loaded()) throw std::logic_error("no motion loaded");
+  if (model.size() != file_->model.size())
+    throw std::invalid_argument("the edited model has other segments than the motion's");
+  MotionFile file = *file_;
+  file.motion = motion;
+  file.model = model;
+  MotionEvaluation evaluation = evaluate_motion(motion, model, evaluate_options_);
+  Dense dense = dense_of(file, evaluation);
+  // The capture's residual depends on the masses.
+  std::vector<SampleRecord> capture_samples = capture_samples_of(capture_.get(), model);
+  file_ = std::move(file);
   evaluation_ = std::move(evaluation);
-  rotation_ = std::move(rotation);
+  dense_ = std::move(dense);
   edited_ = true;
+  capture_samples_ = std::move(capture_samples);
   clear_optimization();
 }
 
 void Document::set_optimization(OptimizationResult result, const OptimizeOptions& options) {
   if (!loaded()) throw std::logic_error("no motion loaded");
-  rotation_opt_before_ = rotation_metrics(file_->model, result.before.samples);
-  rotation_opt_after_ = rotation_metrics(file_->model, result.after.samples);
+  dense_opt_before_ = dense_of(*file_, result.before);
+  dense_opt_after_ = dense_of(*file_, result.after);
   optimization_ = std::move(result);
   optimize_options_ = options;
 }
 
 void Document::clear_optimization() {
   optimization_.reset();
-  rotation_opt_before_.clear();
-  rotation_opt_after_.clear();
+  dense_opt_before_ = Dense{};
+  dense_opt_after_ = Dense{};
 }
 
 Stage Document::available(Stage wanted) const {
@@ -74,9 +131,21 @@ const MotionEvaluation& Document::evaluation(Stage stage) const {
   return stage == Stage::kAfter ? optimization_->after : optimization_->before;
 }
 
+const Document::Dense& Document::dense(Stage stage) const {
+  if (!has_optimization()) return dense_;
+  return stage == Stage::kAfter ? dense_opt_after_ : dense_opt_before_;
+}
+
+const std::vector<SampleRecord>& Document::plot_samples(Stage stage) const {
+  return dense(stage).samples;
+}
+
 const std::vector<RotationSample>& Document::rotation(Stage stage) const {
-  if (!has_optimization()) return rotation_;
-  return stage == Stage::kAfter ? rotation_opt_after_ : rotation_opt_before_;
+  return dense(stage).rotation;
+}
+
+const FlightChecks& Document::flight_checks(Stage stage) const {
+  return dense(stage).checks;
 }
 
 int Document::frame_count(Stage stage) const {
@@ -127,19 +196,15 @@ namespace {
 constexpr double kScalePercentile = 0.9;
 
 template <typename Measure>
-double typical_over_stages(const Document& d, Measure measure) {
-  double typical = 0.0;
-  for (Stage stage : {Stage::kBefore, Stage::kAfter}) {
-    if (d.available(stage) != stage) continue;
-    std::vector<double> values;
-    for (const SampleRecord& s : d.evaluation(stage).samples)
-      values.push_back(measure(s));
-    if (values.empty()) continue;
-    const std::size_t k = static_cast<std::size_t>(kScalePercentile * (values.size() - 1) + 0.5);
-    std::nth_element(values.begin(), values.begin() + k, values.end());
-    typical = std::max(typical, values[k]);
-  }
-  return typical;
+double typical(const std::vector<SampleRecord>& samples, Measure measure) {
+  std::vector<double> values;
+  values.reserve(samples.size());
+  for (const SampleRecord& s : samples)
+    values.push_back(measure(s));
+  if (values.empty()) return 0.0;
+  const std::size_t k = static_cast<std::size_t>(kScalePercentile * (values.size() - 1) + 0.5);
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
+  return values[k];
 }
 
 double largest_joint_force(const SampleRecord& s) {
@@ -150,20 +215,15 @@ double largest_joint_force(const SampleRecord& s) {
 }
 }  // namespace
 
-GlyphScale Document::residual_force_scale(double max_length_m) const {
-  return GlyphScale(
-      typical_over_stages(*this, [](const SampleRecord& s) { return s.residual.head<3>().norm(); }),
-      max_length_m);
-}
-
-GlyphScale Document::residual_moment_scale(double max_length_m) const {
-  return GlyphScale(
-      typical_over_stages(*this, [](const SampleRecord& s) { return s.residual.tail<3>().norm(); }),
-      max_length_m);
-}
-
-GlyphScale Document::joint_force_scale(double max_length_m) const {
-  return GlyphScale(typical_over_stages(*this, largest_joint_force), max_length_m);
+GlyphTypicals Document::glyph_typicals(Stage stage) const {
+  const std::vector<SampleRecord>& samples = evaluation(available(stage)).samples;
+  GlyphTypicals out;
+  out.residual_force =
+      typical(samples, [](const SampleRecord& s) { return s.residual.head<3>().norm(); });
+  out.residual_moment =
+      typical(samples, [](const SampleRecord& s) { return s.residual.tail<3>().norm(); });
+  out.joint_force = typical(samples, largest_joint_force);
+  return out;
 }
 
 void Document::save_result(const std::string& out_dir) const {

@@ -5,14 +5,18 @@
 /// rotation metrics of both and the glyph scales. All numbers come from library calls; the
 /// views only ask for them.
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "core/glyph_scale.h"
 #include "core/parabola.h"
+#include "core/plot_series.h"
 #include "saltus/evaluation/evaluate.h"
+#include "saltus/evaluation/flight_checks.h"
 #include "saltus/evaluation/rotation_metrics.h"
+#include "saltus/formats/capture_files.h"
 #include "saltus/optim/optimize.h"
 
 namespace saltus::gui {
@@ -20,11 +24,25 @@ namespace saltus::gui {
 /// Which version of the motion: the keyframe interpolation, or the optimised one.
 enum class Stage { kBefore, kAfter };
 
+/// Typical sizes of what the arrows show, for their scales (GlyphScale): the 90th percentile
+/// over the samples of a stage (one spike at an end of the flight must not shrink every other
+/// arrow to nothing).
+struct GlyphTypicals {
+  double residual_force = 0.0;   ///< N
+  double residual_moment = 0.0;  ///< N·m
+  double joint_force = 0.0;      ///< N, the largest joint force of a sample (root excluded)
+  /// The larger of each, e.g. for two views that must share one scale.
+  GlyphTypicals max(const GlyphTypicals& other) const;
+};
+
 class Document {
  public:
   /// Loads a motion file and the model it names (or `model_override`, a name or path) and
-  /// evaluates it with `samples` time samples. Throws InputError for bad files and
-  /// std::invalid_argument for bad options; on failure the document keeps what it had.
+  /// evaluates it with `samples` time samples. A motion capture (a .bvh path, is_capture_path)
+  /// is imported onto the model (import_capture_file, the defaults of `saltus import`): the
+  /// motion is its picked keyframes, and the capture stays (capture()). Throws InputError for
+  /// bad files and std::invalid_argument for bad options; on failure the document keeps what it
+  /// had.
   void load(const std::string& motion_path, const std::string& model_override = "",
             int samples = kDefaultSamples);
   bool loaded() const { return file_.has_value(); }
@@ -34,6 +52,8 @@ class Document {
   /// Replaces the model by an edited one with the same segments (e.g. other masses) and
   /// re-evaluates the motion; drops the optimisation. On failure nothing changes.
   void set_model(const BodyModel& model);
+  /// Both at once, evaluated once (undo and redo of an edit). On failure nothing changes.
+  void set_motion_and_model(const Motion& motion, const BodyModel& model);
   /// The model as loaded (before any set_model): mass factors are relative to it.
   const BodyModel& loaded_model() const { return loaded_model_; }
   /// Whether the motion or the model was edited since it was loaded.
@@ -55,7 +75,11 @@ class Document {
   /// The evaluation of a stage. With an optimisation both stages come from it (one sample grid);
   /// otherwise kBefore is the document's own evaluation.
   const MotionEvaluation& evaluation(Stage stage) const;
+  /// The stage on the dense plot grid (kPlotSamples samples over the flight), its rotation
+  /// quantities and its flight checks.
+  const std::vector<SampleRecord>& plot_samples(Stage stage) const;
   const std::vector<RotationSample>& rotation(Stage stage) const;
+  const FlightChecks& flight_checks(Stage stage) const;
 
   double duration() const { return file_->motion.flight_time(); }
   /// Sample grid size of a stage (the timeline's frames).
@@ -71,13 +95,22 @@ class Document {
   /// The ballistic CoM path of the take-off state over the flight.
   ParabolaSamples parabola(int count) const;
 
-  /// Scales shared by both stages, so that before and after compare: residual force (N) and
-  /// moment (N·m) about the CoM, and the force across the joints except the root (N). Full scale
-  /// is the larger stage's 90th percentile over the samples (rounded up to 1, 2, 5 × 10^k): one
-  /// spike at an end of the flight must not shrink every other arrow to nothing.
-  GlyphScale residual_force_scale(double max_length_m) const;
-  GlyphScale residual_moment_scale(double max_length_m) const;
-  GlyphScale joint_force_scale(double max_length_m) const;
+  /// Typical arrow sizes of the stage shown: after optimisation the arrows are scaled to what
+  /// remains, so that the residual is seen, not drawn as a dot on a 1000 N scale.
+  GlyphTypicals glyph_typicals(Stage stage) const;
+
+  /// The motion capture the motion was imported from, null for a motion file. Its frames can be
+  /// picked as keyframes (core/capture_keyframes.h); it is drawn beside the motion.
+  const CaptureFile* capture() const { return capture_.get(); }
+  /// The captured flight's length (s): its own trajectory is defined on [0, capture_duration()].
+  double capture_duration() const;
+  /// The capture's own motion on the dense plot grid, with the model in use (a mass edit
+  /// changes its residual as it changes the motion's): how physically correct the capture is.
+  /// Empty without a capture.
+  const std::vector<SampleRecord>& capture_plot_samples() const { return capture_samples_; }
+  /// The capture at time t of the motions' clock (clamped to its flight): one inverse-dynamics
+  /// evaluation of its own trajectory. Requires capture().
+  SampleRecord capture_sample_at(double t) const;
 
   /// Writes the outputs the CLI would: `saltus optimize`'s when optimised, else `saltus
   /// evaluate`'s (result.json, trajectories, model.json, ...), all or nothing.
@@ -89,12 +122,26 @@ class Document {
   bool edited_ = false;
   BodyModel loaded_model_;
   EvaluateOptions evaluate_options_;
+  /// What the plots and the teaching view read of one stage.
+  struct Dense {
+    std::vector<SampleRecord> samples;
+    std::vector<RotationSample> rotation;
+    FlightChecks checks;
+  };
+  static Dense dense_of(const MotionFile& file, const MotionEvaluation& evaluation);
+  const Dense& dense(Stage stage) const;
+
+  static std::vector<SampleRecord> capture_samples_of(const CaptureFile* capture,
+                                                      const BodyModel& model);
+
   MotionEvaluation evaluation_;
-  std::vector<RotationSample> rotation_;
+  Dense dense_;
+  std::shared_ptr<const CaptureFile> capture_;  ///< immutable: shared by copies and snapshots
+  std::vector<SampleRecord> capture_samples_;
   std::optional<OptimizationResult> optimization_;
   OptimizeOptions optimize_options_;
-  std::vector<RotationSample> rotation_opt_before_;
-  std::vector<RotationSample> rotation_opt_after_;
+  Dense dense_opt_before_;
+  Dense dense_opt_after_;
 };
 
 }  // namespace saltus::gui

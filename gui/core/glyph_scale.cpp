@@ -44,12 +44,16 @@ double GlyphScale::fraction(double magnitude) const {
 }
 
 std::string GlyphScale::legend(const std::string& unit) const {
-  return format_number(max_length_m_) + " m = " + format_number(full_scale_) + " " + unit;
+  return legend_number(max_length_m_) + " m = " + legend_number(full_scale_) + " " + unit;
 }
 
-std::string format_number(double value) {
+std::string legend_number(double value) {
   char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3g", value);
+  const double rounded = std::round(value);
+  if (std::abs(value) >= 1.0 && std::abs(value) < 1e6 && std::abs(value - rounded) < 1e-9)
+    std::snprintf(buffer, sizeof buffer, "%.0f", rounded);
+  else
+    std::snprintf(buffer, sizeof buffer, "%.3g", value);
   return buffer;
 }
 

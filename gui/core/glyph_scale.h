@@ -38,7 +38,7 @@ class GlyphScale {
   /// magnitude / full scale, clamped to [0, 1].
   double fraction(double magnitude) const;
   Rgb colour(double magnitude) const { return magnitude_colour(fraction(magnitude)); }
-  /// Legend text, e.g. "1 m = 50 N".
+  /// Legend text, e.g. "1 m = 50 N", "1 m = 1000 N".
   std::string legend(const std::string& unit) const;
 
  private:
@@ -46,7 +46,8 @@ class GlyphScale {
   double max_length_m_ = 1.0;
 };
 
-/// Formats a value with up to 3 significant digits and no trailing zeros ("50", "0.25", "1e+03").
-std::string format_number(double value);
+/// A legend's number: up to 3 significant digits without trailing zeros, and whole numbers up to
+/// a million written out ("0.25", "50", "1000", "20000"; never "1e+03").
+std::string legend_number(double value);
 
 }  // namespace saltus::gui

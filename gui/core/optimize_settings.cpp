@@ -31,8 +31,8 @@ std::string times_text(const std::vector<double>& times) {
 OptimizeOptions to_optimize_options(const OptimizeSettings& s) {
   if (!(s.epsilon > 0) || !std::isfinite(s.epsilon))
     throw std::invalid_argument("epsilon must be positive");
-  if (s.knots_per_interval < 1 || s.knots_per_interval > kMaxKnotsPerInterval)
-    throw std::invalid_argument("knots per interval must be in 1-50");
+  if (s.knots_per_interval < 0 || s.knots_per_interval > kMaxKnotsPerInterval)
+    throw std::invalid_argument("knots per interval must be auto or 1-50");
   if (s.max_iterations < 0 || s.max_iterations > kMaxIterations)
     throw std::invalid_argument("max iterations must be in 0-100000");
   if (s.samples < kMinSamples || s.samples > kMaxSamples)
@@ -43,7 +43,8 @@ OptimizeOptions to_optimize_options(const OptimizeSettings& s) {
   o.nlp.formulation = s.strict ? Formulation::kStrict : Formulation::kRelaxed;
   o.nlp.epsilon = s.epsilon;
   o.nlp.optimize_timing = s.optimize_timing;
-  o.nlp.knots_per_interval = s.knots_per_interval;
+  o.automatic_resolution = s.knots_per_interval == 0;
+  o.nlp.knots_per_interval = std::max(1, s.knots_per_interval);
   o.nlp.samples = s.samples;
   o.nlp.joint_turn_limit = s.max_joint_turn_deg / kDegreesPerRadian;
   o.solver.max_iterations = s.max_iterations;
@@ -65,8 +66,10 @@ std::vector<ResultRow> result_table(const OptimizationResult& r, const OptimizeO
                   std::to_string(r.after.keyframe_times.size())});
   // K before is the one asked for; after, the one used (optimize_motion refines the knots when
   // the interpolation cannot pass through the keyframes).
-  rows.push_back({"knots per keyframe interval K", std::to_string(options.nlp.knots_per_interval),
-                  std::to_string(r.knots_per_interval)});
+  rows.push_back(
+      {"knots per keyframe interval K",
+       options.automatic_resolution ? "auto" : std::to_string(options.nlp.knots_per_interval),
+       std::to_string(r.knots_per_interval)});
   rows.push_back({"variables", "", std::to_string(r.variables)});
   rows.push_back({"constraints", "", std::to_string(r.constraints)});
   rows.push_back({"objective J (N²)", number("%.4g", b.objective), number("%.4g", a.objective)});

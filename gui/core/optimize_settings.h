@@ -14,7 +14,7 @@ struct OptimizeSettings {
   bool strict = false;          ///< strict spacetime constraints instead of the relaxed model
   double epsilon = 100.0;       ///< strict bound on each |F_i|, N or N·m
   bool optimize_timing = true;  ///< interior keyframe times are variables
-  int knots_per_interval = 1;
+  int knots_per_interval = 0;   ///< 0: automatic resolution (`--knots-per-interval auto`)
   int max_iterations = SolverOptions{}.max_iterations;  ///< the library's (and CLI's) default
   int samples = kDefaultSamples;
   /// Soft limit on a joint's turn between two control points (`--max-joint-turn`), 0 = none.

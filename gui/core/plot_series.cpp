@@ -1,15 +1,20 @@
 #include "core/plot_series.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include "saltus/base/input_error.h"
+#include "saltus/body/segment_names.h"
+#include "saltus/evaluation/force_metrics.h"
+#include "saltus/evaluation/residual_measures.h"
 
 namespace saltus::gui {
 
 namespace {
 
 const char* const kColumns[6] = {"root_fx", "root_fy", "root_fz", "root_mx", "root_my", "root_mz"};
+const char* const kAxisNames[3] = {"x", "y", "z"};
 
 /// The paler "before" version of a colour: 45 % towards white.
 Rgb paler(const Rgb& c) {
@@ -17,28 +22,9 @@ Rgb paler(const Rgb& c) {
   return {c.r + k * (1 - c.r), c.g + k * (1 - c.g), c.b + k * (1 - c.b)};
 }
 
-/// Before/after styling only when both are drawn: alone, a motion's lines are plain and solid.
-void style_stage(LineSpec& line, bool after, bool comparing) {
-  if (!comparing) {
-    line.width = 2.2;
-    return;
-  }
-  line.dashed = !after;
-  line.width = after ? 2.5 : 1.8;
-  if (!after) line.colour = paler(line.colour);
-}
-
 std::string stage_suffix(int stage, bool comparing) {
   if (!comparing) return "";
-  return stage == 0 ? ", before" : ", after";
-}
-
-void add_keyframe_markers(ChartSpec& chart, const std::vector<double>& before,
-                          const std::vector<double>& after) {
-  for (double t : before)
-    chart.markers.push_back({t, given_keyframe_colour(), true});
-  for (double t : after)
-    chart.markers.push_back({t, optimised_keyframe_colour(), false});
+  return stage == 0 ? " before" : " after";
 }
 
 std::vector<double> times_of(const std::vector<RotationSample>& samples) {
@@ -58,7 +44,25 @@ std::vector<double> values_of(const std::vector<RotationSample>& samples, Get ge
   return out;
 }
 
+void fill_magnitudes(WrenchSeries& series) {
+  const std::size_t n = series.time.size();
+  series.force_magnitude.resize(n);
+  series.moment_magnitude.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    Vector6d w;
+    for (int i = 0; i < 6; ++i)
+      w[i] = series.component[static_cast<std::size_t>(i)][k];
+    series.force_magnitude[k] = force_magnitude(w);
+    series.moment_magnitude[k] = moment_magnitude(w);
+  }
+}
+
 }  // namespace
+
+int plot_samples_for(double duration) {
+  const int check = static_cast<int>(std::ceil(duration / kCheckMaxSpacing)) + 1;
+  return std::max(kPlotSamples, check);
+}
 
 WrenchSeries root_wrench_series(const std::vector<SampleRecord>& samples) {
   WrenchSeries out;
@@ -68,8 +72,10 @@ WrenchSeries root_wrench_series(const std::vector<SampleRecord>& samples) {
   for (const SampleRecord& s : samples) {
     out.time.push_back(s.time);
     for (int i = 0; i < 6; ++i)
-      out.component[i].push_back(s.root_wrench[i]);
+      out.component[static_cast<std::size_t>(i)].push_back(s.root_wrench[i]);
   }
+  out.force_magnitude = root_force_magnitudes(samples);
+  out.moment_magnitude = root_moment_magnitudes(samples);
   return out;
 }
 
@@ -84,10 +90,12 @@ WrenchSeries root_wrench_series(const CsvTable& table, const std::string& file) 
   }
   WrenchSeries out;
   for (const std::vector<double>& row : table.rows) {
-    out.time.push_back(row.at(t));
+    out.time.push_back(row.at(static_cast<std::size_t>(t)));
     for (int i = 0; i < 6; ++i)
-      out.component[i].push_back(row.at(columns[i]));
+      out.component[static_cast<std::size_t>(i)].push_back(
+          row.at(static_cast<std::size_t>(columns[i])));
   }
+  fill_magnitudes(out);
   return out;
 }
 
@@ -109,6 +117,10 @@ Rgb component_colour(int component) {
   }
 }
 
+Rgb magnitude_curve_colour(bool moment) {
+  return moment ? Rgb{0.10, 0.50, 0.62} : Rgb{0.72, 0.18, 0.42};
+}
+
 Rgb given_keyframe_colour() {
   return {0.45, 0.45, 0.45};
 }
@@ -116,67 +128,158 @@ Rgb optimised_keyframe_colour() {
   return {0.95, 0.55, 0.05};
 }
 
-ChartSpec root_wrench_chart_frame(bool moment) {
+void style_compared_line(LineSpec& line, bool second, bool comparing) {
+  if (!comparing) {
+    line.width = 2.2;
+    return;
+  }
+  line.dashed = !second;
+  line.width = second ? 2.6 : 1.8;
+  if (!second) line.colour = paler(line.colour);
+}
+
+void add_keyframe_markers(ChartSpec& chart, const std::vector<double>& given,
+                          const std::vector<double>& optimised) {
+  for (std::size_t i = 0; i < given.size(); ++i)
+    chart.markers.push_back(
+        {given[i], given_keyframe_colour(), true, i == 0 ? "keyframes (given)" : ""});
+  for (std::size_t i = 0; i < optimised.size(); ++i)
+    chart.markers.push_back(
+        {optimised[i], optimised_keyframe_colour(), false, i == 0 ? "keyframes (optimised)" : ""});
+}
+
+ChartSpec root_chart_frame(const RootChartStyle& style) {
   ChartSpec chart;
-  chart.title = moment ? "Root moment F4-F6 (root frame)" : "Root force F1-F3 (root frame)";
   chart.x_title = "time (s)";
-  chart.y_title = moment ? "root moment (N·m)" : "root force (N)";
+  if (style.components) {
+    chart.title = style.moment ? "Root moment F4-F6 (root frame)" : "Root force F1-F3 (root frame)";
+    chart.y_title = style.moment ? "root moment (N·m)" : "root force (N)";
+  } else {
+    chart.title = style.moment ? "Root moment |M| (zero in a valid flight)"
+                               : "Root force |F| (zero in a valid flight)";
+    chart.y_title = style.moment ? "|M| (N·m)" : "|F| (N)";
+    chart.log_y = style.log_scale;
+  }
+  if (!style.moment && style.body_weight_N > 0) {
+    chart.y2_title = "% of body weight";
+    chart.y2_per_y = 100.0 / style.body_weight_N;
+  }
+  return chart;
+}
+
+Rgb capture_curve_colour() {
+  return {0.36, 0.50, 0.36};
+}
+
+ChartSpec root_chart(const RootChartStyle& style, const WrenchSeries& before,
+                     const WrenchSeries* after, const std::vector<double>& keyframes_before,
+                     const std::vector<double>& keyframes_after, const WrenchSeries* capture) {
+  ChartSpec chart = root_chart_frame(style);
+  const bool comparing = after != nullptr;
+  // The log axis is there to show "after" beside a far larger "before" (or the capture's);
+  // a lone curve reads better on a linear one (its dips to zero would fill the log axis with
+  // spikes).
+  chart.log_y = chart.log_y && (comparing || capture);
+  const int first = style.moment ? 3 : 0;
+  if (capture) {
+    // First, so that the motion's own curves are drawn over it.
+    const int axes = style.components ? 3 : 1;
+    for (int a = 0; a < axes; ++a) {
+      if (style.components && !style.axes[static_cast<std::size_t>(a)]) continue;
+      LineSpec line;
+      line.x = capture->time;
+      if (style.components) {
+        line.label = std::string(kAxisNames[a]) + " capture";
+        line.y = capture->component[static_cast<std::size_t>(first + a)];
+        line.colour = component_colour(a);
+        line.colour = {0.5 * (line.colour.r + capture_curve_colour().r),
+                       0.5 * (line.colour.g + capture_curve_colour().g),
+                       0.5 * (line.colour.b + capture_curve_colour().b)};
+      } else {
+        line.label = std::string(style.moment ? "|M|" : "|F|") + " capture";
+        line.y = style.moment ? capture->moment_magnitude : capture->force_magnitude;
+        line.colour = capture_curve_colour();
+      }
+      line.width = 1.4;
+      chart.lines.push_back(std::move(line));
+    }
+  }
+  const std::size_t first_motion_line = chart.lines.size();
+  for (int stage = 0; stage < 2; ++stage) {
+    const WrenchSeries* series = stage == 0 ? &before : after;
+    if (!series) continue;
+    if (style.components) {
+      for (int a = 0; a < 3; ++a) {
+        if (!style.axes[static_cast<std::size_t>(a)]) continue;
+        LineSpec line;
+        line.label = std::string(kAxisNames[a]) + stage_suffix(stage, comparing);
+        line.x = series->time;
+        line.y = series->component[static_cast<std::size_t>(first + a)];
+        line.colour = component_colour(a);
+        style_compared_line(line, stage == 1, comparing);
+        chart.lines.push_back(std::move(line));
+      }
+    } else {
+      LineSpec line;
+      line.label = (style.moment ? "|M|" : "|F|") + stage_suffix(stage, comparing);
+      line.x = series->time;
+      line.y = style.moment ? series->moment_magnitude : series->force_magnitude;
+      line.colour = magnitude_curve_colour(style.moment);
+      style_compared_line(line, stage == 1, comparing);
+      chart.lines.push_back(std::move(line));
+    }
+  }
+  // Beside the capture, a lone curve is the keyframes' interpolation.
+  if (capture && !comparing)
+    for (std::size_t i = first_motion_line; i < chart.lines.size(); ++i)
+      chart.lines[i].label += " keyframes";
+  add_keyframe_markers(chart, keyframes_before,
+                       comparing ? keyframes_after : std::vector<double>{});
   return chart;
 }
 
 ChartSpec root_wrench_chart(bool moment, const WrenchSeries& before, const WrenchSeries* after,
                             const ComponentMask& shown, const std::vector<double>& keyframes_before,
                             const std::vector<double>& keyframes_after) {
-  ChartSpec chart = root_wrench_chart_frame(moment);
+  RootChartStyle style;
+  style.moment = moment;
+  style.components = true;
   const int first = moment ? 3 : 0;
-  for (int stage = 0; stage < 2; ++stage) {
-    const WrenchSeries* series = stage == 0 ? &before : after;
-    if (!series) continue;
-    for (int i = first; i < first + 3; ++i) {
-      if (!shown[i]) continue;
-      LineSpec line;
-      line.label = wrench_component_name(i) + stage_suffix(stage, after != nullptr);
-      line.x = series->time;
-      line.y = series->component[i];
-      line.colour = component_colour(i);
-      style_stage(line, stage == 1, after != nullptr);
-      chart.lines.push_back(std::move(line));
-    }
-  }
-  add_keyframe_markers(chart, keyframes_before, after ? keyframes_after : std::vector<double>{});
-  return chart;
+  for (int a = 0; a < 3; ++a)
+    style.axes[static_cast<std::size_t>(a)] = shown[static_cast<std::size_t>(first + a)];
+  return root_chart(style, before, after, keyframes_before, keyframes_after);
 }
 
 ChartSpec joint_load_chart(const BodyModel& model, int segment,
                            const std::vector<SampleRecord>& before,
                            const std::vector<SampleRecord>* after) {
   if (segment < 0 || segment >= model.size()) throw std::out_of_range("joint load segment");
-  const Segment& s = model.segments[segment];
+  const Segment& s = model.segments[static_cast<std::size_t>(segment)];
   ChartSpec chart;
-  chart.title = "Loads at joint " + s.joint + " (on " + s.name + ")";
+  chart.title = segment == 0 ? "Loads the world must supply at the " + segment_label(s.name)
+                             : "Loads at the " + joint_label(s.joint) + " (on the " +
+                                   segment_label(s.name) + ")";
   chart.x_title = "time (s)";
   chart.y_title = "force |F| (N)";
   chart.y2_title = "moment |M| (N·m)";
-  const Rgb force_colour{0.75, 0.20, 0.45};
-  const Rgb moment_colour{0.10, 0.55, 0.60};
+  const bool comparing = after != nullptr;
   for (int stage = 0; stage < 2; ++stage) {
     const std::vector<SampleRecord>* samples = stage == 0 ? &before : after;
     if (!samples) continue;
     LineSpec force, torque;
-    const std::string suffix = stage_suffix(stage, after != nullptr);
-    force.label = "|F| force" + suffix;
-    torque.label = "|M| moment" + suffix;
-    force.colour = force_colour;
-    torque.colour = moment_colour;
+    force.label = "|F|" + stage_suffix(stage, comparing);
+    torque.label = "|M|" + stage_suffix(stage, comparing);
+    force.colour = magnitude_curve_colour(false);
+    torque.colour = magnitude_curve_colour(true);
     torque.right_axis = true;
     for (const SampleRecord& r : *samples) {
       force.x.push_back(r.time);
       torque.x.push_back(r.time);
-      force.y.push_back(r.joint_wrench.at(segment).head<3>().norm());
-      torque.y.push_back(r.joint_wrench.at(segment).tail<3>().norm());
+      force.y.push_back(force_magnitude(r.joint_wrench.at(static_cast<std::size_t>(segment))));
+      torque.y.push_back(moment_magnitude(r.joint_wrench.at(static_cast<std::size_t>(segment))));
     }
-    style_stage(force, stage == 1, after != nullptr);
-    style_stage(torque, stage == 1, after != nullptr);
+    style_compared_line(force, stage == 1, comparing);
+    style_compared_line(torque, stage == 1, comparing);
     chart.lines.push_back(std::move(force));
     chart.lines.push_back(std::move(torque));
   }
@@ -206,18 +309,18 @@ ChartSpec rotation_chart(RotationQuantity quantity, const std::vector<RotationSa
       chart.y_title = "inertia I_xx (kg·m²)";
       chart.y2_title = "spin |ω_x| (rad/s)";
       quantities = {
-          {"inertia about x, I_xx",
+          {"I_xx",
            {0.50, 0.25, 0.70},
            false,
            [](const RotationSample& s) { return s.somersault_inertia; }},
-          {"somersault rate |ω_x|",
+          {"|ω_x|",
            {0.05, 0.55, 0.55},
            true,
            [](const RotationSample& s) { return std::abs(s.somersault_rate); }},
       };
       break;
     case RotationQuantity::kAngularMomentum:
-      chart.title = "Angular momentum about the CoM (constant in valid flight)";
+      chart.title = "Angular momentum about the CoM (constant in a valid flight)";
       chart.y_title = "L (kg·m²/s)";
       quantities = {
           {"L_x", component_colour(0), false,
@@ -236,14 +339,14 @@ ChartSpec rotation_chart(RotationQuantity quantity, const std::vector<RotationSa
            {0.05, 0.55, 0.55},
            false,
            [](const RotationSample& s) { return s.somersault_rate; }},
-          {"twist (long axis)",
+          {"twist",
            {0.85, 0.45, 0.10},
            false,
            [](const RotationSample& s) { return s.twist_rate; }},
       };
       break;
     case RotationQuantity::kCounts:
-      chart.title = "Somersaults and twists so far (negative: backward / to the right)";
+      chart.title = "Somersaults and twists so far (about world x and the body's long axis)";
       chart.y_title = "revolutions";
       quantities = {
           {"somersaults",
@@ -254,17 +357,18 @@ ChartSpec rotation_chart(RotationQuantity quantity, const std::vector<RotationSa
       };
       break;
   }
+  const bool comparing = after != nullptr;
   for (int stage = 0; stage < 2; ++stage) {
     const std::vector<RotationSample>* samples = stage == 0 ? &before : after;
     if (!samples) continue;
     for (const Quantity& q : quantities) {
       LineSpec line;
-      line.label = q.label + stage_suffix(stage, after != nullptr);
+      line.label = q.label + stage_suffix(stage, comparing);
       line.x = times_of(*samples);
       line.y = values_of(*samples, q.get);
       line.colour = q.colour;
       line.right_axis = q.right_axis;
-      style_stage(line, stage == 1, after != nullptr);
+      style_compared_line(line, stage == 1, comparing);
       chart.lines.push_back(std::move(line));
     }
   }

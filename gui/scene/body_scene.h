@@ -1,13 +1,14 @@
 #pragma once
 /// @file
-/// The 3D scene of one motion: the body's segments as capsules (left blue, right orange), the
-/// trampoline bed and a floor grid, the ballistic CoM parabola, the motion's own CoM trace and the
-/// current CoM, the residual force and moment about the CoM as arrows scaled and coloured by
-/// magnitude (with legends), optional joint-force arrows, translucent keyframe poses and a text
-/// panel of the rotation quantities. Camera presets: side, front, top, follow. A segment can be
-/// picked at a pixel and highlighted.
+/// The 3D scene of one motion, in layers (each its own class in gui/scene): the athlete drawn
+/// from the model's shapes (body_layer), the apparatus the motion implies and a floor grid
+/// (environment_layer), the CoM parabola, the motion's CoM path and the CoM now (path_layer),
+/// the residual force and moment arrows and optional joint-force arrows (glyph_layer), and the
+/// words (text_layer). The cameras frame the athlete and follow it (scene_camera); a small
+/// inset shows the whole flight meanwhile. A segment can be picked at a pixel and highlighted.
 
 #include <memory>
+#include <optional>
 
 #include "core/document.h"
 #include "core/scene_options.h"
@@ -23,12 +24,13 @@ class BodyScene {
   BodyScene(const BodyScene&) = delete;
   BodyScene& operator=(const BodyScene&) = delete;
 
-  /// Adds the scene's renderers to a window: the scene itself, and on a layer above it the CoM
-  /// marker and the residual arrows, which start inside the trunk and must not be hidden by it.
+  /// Adds the scene's renderers to a window: the scene, the whole-flight inset in a corner of
+  /// it, and on a layer above both the CoM ball and the residual arrows, which start inside the
+  /// trunk and must not be hidden by it.
   void attach(vtkRenderWindow* window);
 
   /// Shows a stage of the document (which must stay alive and unchanged until the next call);
-  /// null clears the scene. Keeps the camera (call reset_camera() to fit a new flight).
+  /// null clears the scene. Keeps the camera (call reset_camera() to frame a new motion).
   void set_document(const Document* document, Stage stage);
   void set_options(const SceneOptions& options);
   const SceneOptions& options() const;
@@ -40,16 +42,27 @@ class BodyScene {
   static constexpr double kTextRefreshPerSecond = 8.0;
   double time() const;
 
-  /// Points the camera; kFollow keeps following the CoM as time changes.
+  /// Points the camera (SceneCamera): every preset frames the athlete and follows it.
   void set_camera(CameraPreset preset);
   CameraPreset camera() const;
-  /// The current preset again, fitted to the whole flight.
+  /// The current preset again, at the current time.
   void reset_camera();
+
+  /// Arrow scales from these typical sizes (compare: both views share the larger run's), or,
+  /// with nullopt, from the stage shown (the default).
+  void set_glyph_typicals(std::optional<GlyphTypicals> typicals);
+  /// Anti-aliased edges (FXAA, a post-processing pass). Off by default: in software OpenGL the
+  /// pass costs several frames' worth of time, so the app draws moving pictures without it and
+  /// a still picture, an export or a video frame with it.
+  void set_antialiasing(bool on);
+  bool antialiasing() const;
+  /// For videos: the time and the residual in a line at the top right instead of the numbers
+  /// and the legend.
+  void set_video_overlay(bool on);
 
   /// The body segment drawn at a pixel of the render window (x from the left, y from the
   /// bottom, device pixels): its index in the model, the nearest along the line of sight; -1
-  /// where no segment is (background, trampoline, arrows, or no document). The red face marker
-  /// counts as the segment it sits on.
+  /// where no segment is (background, apparatus, arrows, or no document).
   int segment_at(int x, int y) const;
   /// Draws a segment brighter and outlined (-1: none). Stays across set_document while the
   /// index exists in the new model.

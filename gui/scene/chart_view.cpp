@@ -72,11 +72,15 @@ struct ChartView::Impl {
       chart->SetActionToButton(action, vtkContextMouseEvent::NO_BUTTON);
     chart->SetZoomWithMouseWheel(false);
     chart->SetShowLegend(true);
-    // Outside the plot area, on the right: small charts would otherwise hide their curves.
-    chart->GetLegend()->SetInline(false);
+    // Inside the plot, top right, on a pale box: short entries ("before", "after") cost a
+    // corner of the plot, not a column beside it.
+    chart->GetLegend()->SetInline(true);
     chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
     chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
-    chart->GetLegend()->GetBrush()->SetColor(255, 255, 255, 215);
+    chart->GetLegend()->GetBrush()->SetColor(255, 255, 255, 200);
+    chart->GetLegend()->GetPen()->SetColor(190, 190, 190, 255);
+    // Which axes show is decided per chart (a right axis in other units has no plots).
+    chart->SetAutoAxes(false);
     apply_fonts();
   }
 
@@ -94,7 +98,6 @@ struct ChartView::Impl {
     chart->ClearPlots();
     tables.clear();
     chart->SetTitle(spec.title);
-    chart->SetShowLegend(spec.legend && !spec.lines.empty());
     vtkAxis* bottom = chart->GetAxis(vtkAxis::BOTTOM);
     vtkAxis* left_axis = chart->GetAxis(vtkAxis::LEFT);
     vtkAxis* right_axis = chart->GetAxis(vtkAxis::RIGHT);
@@ -102,15 +105,18 @@ struct ChartView::Impl {
     left_axis->SetTitle(spec.y_title);
     right_axis->SetTitle(spec.y2_title);
 
-    left = y_range(spec, false);
     uses_right = false;
     for (const LineSpec& line : spec.lines)
       uses_right = uses_right || line.right_axis;
+    left = spec.log_y ? log_y_range(spec) : y_range(spec, false);
     right = y_range(spec, true);
+    const bool linked_right = !uses_right && spec.y2_per_y > 0;
+    if (linked_right) right = {left.min * spec.y2_per_y, left.max * spec.y2_per_y};
     AxisRange x = x_range(spec);
     const bool bars = !spec.x_labels.empty();
     if (bars) x = {-0.5, static_cast<double>(spec.x_labels.size()) - 0.5};
 
+    bool any_legend = false;
     for (const LineSpec& line : spec.lines) {
       auto table =
           make_table(spec.x_title.empty() ? "x" : spec.x_title, line.label, line.x, line.y);
@@ -122,6 +128,8 @@ struct ChartView::Impl {
       plot->SetColor(line.colour.r, line.colour.g, line.colour.b);
       plot->SetWidth(static_cast<float>(line.width));
       plot->SetLabel(line.label);
+      plot->SetLegendVisibility(!line.label.empty());
+      any_legend = any_legend || !line.label.empty();
       if (line.dashed) plot->GetPen()->SetLineType(vtkPen::DASH_LINE);
       if (auto* points = vtkPlotPoints::SafeDownCast(plot)) {
         // Lines carry no markers (hundreds of samples); point series (keyframes) do.
@@ -133,23 +141,33 @@ struct ChartView::Impl {
     }
 
     for (const MarkerSpec& marker : spec.markers) {
-      auto table = make_table("x", "marker", {marker.x, marker.x}, {left.min, left.max});
+      auto table = make_table("x", marker.label.empty() ? "marker" : marker.label,
+                              {marker.x, marker.x}, {left.min, left.max});
       tables.push_back(table);
       vtkPlot* plot = chart->AddPlot(vtkChart::LINE);
       plot->SetInputData(table, 0, 1);
       plot->SetColor(marker.colour.r, marker.colour.g, marker.colour.b);
       plot->SetWidth(1.0f);
       if (marker.dashed) plot->GetPen()->SetLineType(vtkPen::DOT_LINE);
-      plot->SetLegendVisibility(false);
+      plot->SetLabel(marker.label);
+      plot->SetLegendVisibility(!marker.label.empty());
+      any_legend = any_legend || !marker.label.empty();
       plot->SetSelectable(false);
     }
+    chart->SetShowLegend(spec.legend && any_legend);
 
     for (vtkAxis* axis : {bottom, left_axis, right_axis})
       axis->SetBehavior(vtkAxis::FIXED);
     bottom->SetRange(x.min, x.max);
-    left_axis->SetRange(left.min, left.max);
-    right_axis->SetRange(right.min, right.max);
-    right_axis->SetVisible(uses_right);
+    left_axis->SetLogScale(spec.log_y);
+    right_axis->SetLogScale(spec.log_y && linked_right);
+    // Unscaled: in data units whether or not the axis is logarithmic.
+    left_axis->SetUnscaledRange(left.min, left.max);
+    right_axis->SetUnscaledRange(right.min, right.max);
+    bottom->SetVisible(true);
+    left_axis->SetVisible(true);
+    right_axis->SetVisible(uses_right || linked_right);
+    chart->GetAxis(vtkAxis::TOP)->SetVisible(false);
     if (bars) {
       vtkNew<vtkDoubleArray> positions;
       vtkNew<vtkStringArray> labels;

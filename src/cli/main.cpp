@@ -284,8 +284,20 @@ int run_optimize(const OptimizeArgs& args) {
                 result.before.metrics.rms_moment_Nm, result.after.metrics.rms_moment_Nm,
                 result.before.metrics.max_moment_Nm, result.after.metrics.max_moment_Nm);
     std::printf("  keyframe times:");
-    for (std::size_t i = 0; i < result.after.keyframe_times.size(); ++i)
+    int undetermined = 0;
+    for (std::size_t i = 0; i < result.after.keyframe_times.size(); ++i) {
+      const double spread = result.keyframe_time_spreads[i];
       std::printf(" %.3f->%.3f", result.before.keyframe_times[i], result.after.keyframe_times[i]);
+      if (spread > saltus::kDeterminedTimeSpread) {
+        std::printf("(±%.2f)", spread);
+        ++undetermined;
+      }
+    }
+    if (undetermined > 0)
+      std::printf(
+          "\n  (±s: %d time(s) the keyframes and their tolerances leave undetermined: each could "
+          "move so far with the average root force within %.1f N of its optimum)",
+          undetermined, saltus::kTimeSpreadForceRise);
     std::printf(
         "\n  keyframes: max root translation error %.3g m (tolerance %.3g), max quaternion "
         "error %.3g (tolerance %.3g)\n",

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <vector>
 
 #include "saltus/formats/trajectory_csv.h"
 #include "support/cli_runner.h"
@@ -93,10 +94,24 @@ TEST(CliOptimize, ReducesTheResidualKeepsKeyframesAndReloads) {
   const auto stored = read_json(out + "/optimized.motion.json");
   EXPECT_EQ(resolution["knots"], stored["spline"]["knots"]);
   int spans = 0;
-  for (const auto& s : resolution["subdivisions"]) spans += s.get<int>();
+  for (const auto& s : resolution["subdivisions"])
+    spans += s.get<int>();
   EXPECT_EQ(resolution["knots"].size(), static_cast<std::size_t>(spans + 7));
   EXPECT_EQ(resolution["subdivisions"].size(), stored["keyframes"].size() - 1);
   ASSERT_FALSE(resolution["levels"].empty());
+  // Each keyframe time's spread: none for the fixed first and last, and the undetermined list
+  // is exactly the times whose spread exceeds 0.02 s.
+  const auto& spreads = result["keyframe_time_spread_s"];
+  ASSERT_EQ(spreads.size(), stored["keyframes"].size());
+  EXPECT_EQ(spreads.front().get<double>(), 0.0);
+  EXPECT_EQ(spreads.back().get<double>(), 0.0);
+  std::vector<int> wide;
+  for (std::size_t i = 0; i < spreads.size(); ++i) {
+    EXPECT_GE(spreads[i].get<double>(), 0.0);
+    EXPECT_LE(spreads[i].get<double>(), 0.25 + 1e-12);  // --max-time-shift
+    if (spreads[i].get<double>() > 0.02) wide.push_back(static_cast<int>(i));
+  }
+  EXPECT_EQ(result["keyframe_times_undetermined"].get<std::vector<int>>(), wide);
   // The level kept is the one the "after" figures describe.
   double kept = 1e300;
   for (const auto& level : resolution["levels"])

@@ -4,10 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <QImage>
+#include <QProcess>
+#include <QStandardPaths>
 #include <filesystem>
 
+#include "core/video_plan.h"
 #include "gui/support/image_checks.h"
 #include "gui_core/test_motion.h"
+#include "saltus/formats/motion_file.h"
 #include "support/cli_runner.h"
 
 namespace saltus::gui {
@@ -47,6 +51,55 @@ TEST(GuiBatch, OptimisesAndWritesAScreenshotWithoutInteraction) {
     EXPECT_TRUE(std::filesystem::exists(dir.path() / "result" / file)) << file;
 }
 
+TEST(GuiBatch, CompareFlagWritesTheCompareWindow) {
+  saltus::test::TempDir dir;
+  const std::string other =
+      std::string(SALTUS_EXAMPLES_DIR) + "/motions/M2-tucked-back-somersault.motion.json";
+  const saltus::test::CliRun run =
+      run_gui("'" + test::gui_test_motion_path() + "' --compare '" + other +
+              "' --time 0.5 --size 1200x700 --screenshot '" + (dir / "compare.png") + "'");
+  ASSERT_EQ(run.status, 0) << run.output;
+  const QImage shot(QString::fromStdString(dir / "compare.png"));
+  EXPECT_EQ(shot.width(), 1200);
+  EXPECT_EQ(shot.height(), 700);
+  expect_sane_png(dir / "compare.png", 1200, 700);
+  // Not the main window's picture of the same motion at the same size.
+  const saltus::test::CliRun main =
+      run_gui("'" + test::gui_test_motion_path() + "' --time 0.5 --size 1200x700 --screenshot '" +
+              (dir / "main.png") + "'");
+  ASSERT_EQ(main.status, 0) << main.output;
+  EXPECT_GT(test::block_difference(shot, QImage(QString::fromStdString(dir / "main.png"))), 0.2);
+  // Bad input: a missing second motion, status 2, no picture.
+  const saltus::test::CliRun bad =
+      run_gui("'" + test::gui_test_motion_path() + "' --compare '" + (dir / "absent.json") +
+              "' --screenshot '" + (dir / "bad.png") + "'");
+  EXPECT_EQ(bad.status, 2) << bad.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad.png"));
+}
+
+TEST(GuiBatch, ExportVideoFlagWritesThePlannedFrames) {
+  if (QStandardPaths::findExecutable("ffmpeg").isEmpty() ||
+      QStandardPaths::findExecutable("ffprobe").isEmpty())
+    GTEST_SKIP() << "ffmpeg is not installed (tools/bootstrap.sh installs it)";
+  saltus::test::TempDir dir;
+  const std::string gif = dir / "flight.gif";
+  const saltus::test::CliRun run = run_gui("'" + test::gui_test_motion_path() +
+                                           "' --export-video '" + gif + "' --fps 10 --speed 2");
+  ASSERT_EQ(run.status, 0) << run.output;
+  const double duration = load_motion_file(test::gui_test_motion_path()).motion.flight_time();
+  const VideoPlan plan = plan_video(duration, 10.0, 2.0);
+  QProcess p;
+  p.start("ffprobe", {"-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries",
+                      "stream=nb_read_frames", "-of", "default=noprint_wrappers=1:nokey=1",
+                      QString::fromStdString(gif)});
+  p.waitForFinished(60000);
+  EXPECT_EQ(QString::fromLocal8Bit(p.readAllStandardOutput()).trimmed().toInt(), plan.frames())
+      << run.output;
+  const saltus::test::CliRun bad =
+      run_gui("'" + test::gui_test_motion_path() + "' --export-video '" + (dir / "v.avi") + "'");
+  EXPECT_EQ(bad.status, 2) << bad.output;
+}
+
 TEST(GuiBatch, ExportsPaperFiguresFromCliOutputFolders) {
   saltus::test::TempDir dir;
   // Two `saltus optimize` runs, as a user would make them (few iterations: a smoke test).
@@ -62,6 +115,7 @@ TEST(GuiBatch, ExportsPaperFiguresFromCliOutputFolders) {
   ASSERT_EQ(run.status, 0) << run.output;
   for (const char* file :
        {"relaxed_root_force.png", "relaxed_root_moment.png", "relaxed_keyframe_times.png",
+        "relaxed_root_force_components.png", "relaxed_root_moment_components.png",
         "fixed-times_root_force.png", "fixed-times_root_moment.png",
         "fixed-times_keyframe_times.png", "average_root_force.png"})
     expect_sane_png((dir.path() / "figures" / file).string(), 1200, 600);
@@ -88,6 +142,17 @@ TEST(GuiBatch, ExportsTheMassStudyLoadsFigureNextToOptimizeFigures) {
        {"relaxed_root_force.png", "relaxed_root_moment.png", "average_root_force.png"})
     expect_sane_png((dir.path() / "figures" / file).string(), 1200, 600);
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "figures" / "mass-M1_root_force.png"));
+}
+
+TEST(GuiBatch, WithoutADisplayItSaysToUseXvfbRunAndDoesNotAbort) {
+  // No DISPLAY at all, and a DISPLAY with no X server behind it (Qt would abort, status 134).
+  for (const std::string& env : {std::string("env -u DISPLAY -u WAYLAND_DISPLAY "),
+                                 std::string("env -u WAYLAND_DISPLAY DISPLAY=:97 ")}) {
+    const saltus::test::CliRun run = saltus::test::run_command(env + SALTUS_GUI_PATH + " '" +
+                                                               test::gui_test_motion_path() + "'");
+    EXPECT_EQ(run.status, 1) << env << run.output;
+    EXPECT_NE(run.output.find("xvfb-run -a saltus-gui"), std::string::npos) << run.output;
+  }
 }
 
 TEST(GuiBatch, BadInputAndUsageExitWithStatus2) {

@@ -11,8 +11,15 @@
 #include <fstream>
 
 #include <nlohmann/json.hpp>
+#include "app/batch.h"
+#include "app/compare_controller.h"
 #include "app/compare_window.h"
+#include "app/edit_controller.h"
+#include "app/file_controller.h"
 #include "app/main_window.h"
+#include "app/plots_panel.h"
+#include "app/run_controller.h"
+#include "app/view_controller.h"
 #include "gui/support/image_checks.h"
 #include "gui/support/open_motion_fixture.h"
 #include "gui_core/test_motion.h"
@@ -49,11 +56,12 @@ void expect_drawn(const QImage& view, const char* name) {
 }
 
 TEST_F(CompareWindowTest, SameMotionWithAScaledModelSideBySide) {
-  EXPECT_EQ(window_->compare_window(), nullptr);
+  EXPECT_EQ(window_->compare().window(), nullptr);
   QString error;
-  ASSERT_TRUE(window_->compare_with_model(QString::fromStdString(scaled_model_file()), &error))
+  ASSERT_TRUE(
+      window_->compare().compare_with_model(QString::fromStdString(scaled_model_file()), &error))
       << error.toStdString();
-  CompareWindow* compare = window_->compare_window();
+  CompareWindow* compare = window_->compare().window();
   ASSERT_NE(compare, nullptr);
   compare->resize(1400, 900);
   ASSERT_TRUE(QTest::qWaitForWindowExposed(compare));
@@ -71,42 +79,88 @@ TEST_F(CompareWindowTest, SameMotionWithAScaledModelSideBySide) {
   expect_drawn(first, "first view");
   expect_drawn(second, "second view");
 
-  // Twice the main window's series (three force components per run), in two colours.
+  // |F| of both runs, each named once by its model: the first dashed, the second solid, as
+  // before and after are in the main window.
   const ChartSpec& force = compare->force_chart();
-  ASSERT_EQ(force.lines.size(), 6u);
-  EXPECT_EQ(compare->moment_chart().lines.size(), 6u);
-  EXPECT_NE(force.lines[0].label.find("zatsiorsky-66kg"), std::string::npos)
-      << force.lines[0].label;
-  EXPECT_NE(force.lines[3].label.find("thighs x1.5"), std::string::npos) << force.lines[3].label;
-  EXPECT_NE(force.lines[0].y, force.lines[3].y);  // heavier thighs change the root force
+  ASSERT_EQ(force.lines.size(), 2u);
+  EXPECT_EQ(compare->moment_chart().lines.size(), 2u);
+  EXPECT_EQ(force.lines[0].label, "model zatsiorsky-66kg");
+  EXPECT_EQ(force.lines[1].label, "model thighs x1.5");
+  EXPECT_TRUE(force.lines[0].dashed);
+  EXPECT_FALSE(force.lines[1].dashed);
+  EXPECT_NE(force.lines[0].y, force.lines[1].y);  // heavier thighs change the root force
+  // The loads at a joint, for both runs: the right hip carries the heavier thigh.
+  compare->show_joint(window_->document().file().model.joint_index("hip_r"));
+  ASSERT_EQ(compare->joint_force_chart().lines.size(), 2u);
+  EXPECT_NE(compare->joint_force_chart().title.find("right hip"), std::string::npos)
+      << compare->joint_force_chart().title;
+  EXPECT_NE(compare->joint_force_chart().lines[0].y, compare->joint_force_chart().lines[1].y);
+  // One arrow scale for both views: the larger run's.
+  const GlyphTypicals shared = compare->shared_glyph_typicals();
+  for (int i = 0; i < 2; ++i) {
+    const GlyphTypicals own = compare->run(i).document->glyph_typicals(compare->run(i).stage);
+    EXPECT_GE(shared.residual_force, own.residual_force);
+  }
 
   QDir().mkpath(SALTUS_GUI_CANDIDATE_DIR);
   compare->grab().toImage().save(QString(SALTUS_GUI_CANDIDATE_DIR) + "/compare_window.png");
 
-  window_->close_compare();
-  EXPECT_EQ(window_->compare_window(), nullptr);
+  window_->compare().close();
+  EXPECT_EQ(window_->compare().window(), nullptr);
+}
+
+TEST_F(CompareWindowTest, AnotherModelIsOptimisedLikeTheRunShown) {
+  // The paper's Fig. 8 explored: the optimised motion with the given masses against the
+  // optimised motion with heavier thighs, the joint loads of both.
+  OptimizeSettings s;
+  s.max_iterations = 4;
+  s.samples = 31;
+  QString error;
+  ASSERT_TRUE(window_->runs().start(s, &error)) << error.toStdString();
+  ASSERT_TRUE(window_->runs().wait(300000));
+  ASSERT_TRUE(window_->runs().show_run(0, &error)) << error.toStdString();
+  ASSERT_TRUE(
+      window_->compare().compare_with_model(QString::fromStdString(scaled_model_file()), &error))
+      << error.toStdString();
+  EXPECT_TRUE(window_->compare().optimising());
+  ASSERT_TRUE(window_->compare().wait(300000));
+  CompareWindow* compare = window_->compare().window();
+  ASSERT_NE(compare, nullptr);
+  EXPECT_EQ(compare->run(0).stage, Stage::kAfter);
+  EXPECT_EQ(compare->run(1).stage, Stage::kAfter);
+  ASSERT_TRUE(compare->run(1).document->has_optimization());
+  // With the same settings as the run shown.
+  EXPECT_EQ(compare->run(1).document->optimization_options().nlp.samples, 31);
+  EXPECT_NE(compare->run(1).description.indexOf("optimised"), -1);
+  EXPECT_EQ(compare->run(1).document->file().model.name, "thighs x1.5");
+  compare->show_joint(window_->document().file().model.joint_index("hip_r"));
+  ASSERT_EQ(compare->joint_force_chart().lines.size(), 2u);
+  EXPECT_NE(compare->joint_force_chart().lines[0].y, compare->joint_force_chart().lines[1].y);
 }
 
 TEST_F(CompareWindowTest, BeforeAndAfterOfAnOptimisation) {
   QString error;
-  EXPECT_FALSE(window_->compare_before_after(&error));  // nothing optimised yet
+  EXPECT_FALSE(window_->compare().compare_before_after(&error));  // nothing optimised yet
   EXPECT_FALSE(error.isEmpty());
   OptimizeSettings s;
   s.max_iterations = 2;
   s.samples = 21;
-  ASSERT_TRUE(window_->start_optimization(s, &error)) << error.toStdString();
-  ASSERT_TRUE(window_->wait_for_optimization(300000));
+  ASSERT_TRUE(window_->runs().start(s, &error)) << error.toStdString();
+  ASSERT_TRUE(window_->runs().wait(300000));
   ASSERT_TRUE(window_->document().has_optimization());
-  ASSERT_TRUE(window_->compare_before_after(&error)) << error.toStdString();
-  CompareWindow* compare = window_->compare_window();
+  ASSERT_TRUE(window_->compare().compare_before_after(&error)) << error.toStdString();
+  CompareWindow* compare = window_->compare().window();
   ASSERT_NE(compare, nullptr);
   EXPECT_EQ(compare->run(0).stage, Stage::kBefore);
   EXPECT_EQ(compare->run(1).stage, Stage::kAfter);
-  EXPECT_EQ(compare->force_chart().lines.size(), 6u);
+  ASSERT_EQ(compare->force_chart().lines.size(), 2u);
+  // Before dashed, after solid: the main window's style.
+  EXPECT_TRUE(compare->force_chart().lines[0].dashed);
+  EXPECT_FALSE(compare->force_chart().lines[1].dashed);
   // Closing the compare window leaves the main window as it was.
   compare->close();
   QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
-  EXPECT_EQ(window_->compare_window(), nullptr);
+  EXPECT_EQ(window_->compare().window(), nullptr);
   EXPECT_TRUE(window_->document().has_optimization());
 }
 
@@ -117,20 +171,42 @@ TEST_F(CompareWindowTest, ResultFolderAndBadInputShowTheLibrarysMessage) {
       (dir_ / "relaxed") + "'");
   ASSERT_TRUE(cli.status == 0 || cli.status == 3) << cli.output;
   QString error;
-  ASSERT_TRUE(window_->compare_with_folder(QString::fromStdString(dir_ / "relaxed"), &error))
+  ASSERT_TRUE(
+      window_->compare().compare_with_folder(QString::fromStdString(dir_ / "relaxed"), &error))
       << error.toStdString();
-  ASSERT_NE(window_->compare_window(), nullptr);
-  EXPECT_EQ(window_->compare_window()->run(1).label, "relaxed (optimised)");
+  ASSERT_NE(window_->compare().window(), nullptr);
+  EXPECT_EQ(window_->compare().window()->run(1).label, "relaxed (optimised)");
+  // The folder's motion is the optimised one: said so, not "interpolated keyframes".
+  EXPECT_NE(window_->compare().window()->run(1).description.indexOf("optimised"), -1);
 
-  EXPECT_FALSE(window_->compare_with_folder(QString::fromStdString(dir_ / "absent"), &error));
+  EXPECT_FALSE(
+      window_->compare().compare_with_folder(QString::fromStdString(dir_ / "absent"), &error));
   EXPECT_NE(error.indexOf("absent"), -1) << error.toStdString();
   const std::string bad = dir_ / "bad.motion.json";
   std::ofstream(bad) << "{\"format\": \"saltus-motion/1\"}\n";
-  EXPECT_FALSE(window_->compare_with_motion(QString::fromStdString(bad), &error));
+  EXPECT_FALSE(window_->compare().compare_with_motion(QString::fromStdString(bad), &error));
   EXPECT_NE(error.indexOf("bad.motion.json"), -1) << error.toStdString();
   // The window opened before is still there and unchanged.
-  ASSERT_NE(window_->compare_window(), nullptr);
-  EXPECT_EQ(window_->compare_window()->run(1).label, "relaxed (optimised)");
+  ASSERT_NE(window_->compare().window(), nullptr);
+  EXPECT_EQ(window_->compare().window()->run(1).label, "relaxed (optimised)");
+}
+
+TEST_F(CompareWindowTest, BatchWritesTheCompareWindowAgainstAResultFolder) {
+  const saltus::test::CliRun cli = saltus::test::run_cli(
+      "optimize '" + test::gui_test_motion_path() + "' --max-iter 3 --samples 21 --quiet --out '" +
+      (dir_ / "M1-opt") + "'");
+  ASSERT_TRUE(cli.status == 0 || cli.status == 3) << cli.output;
+  const QString png = QString::fromStdString(dir_ / "compare.png");
+  EXPECT_EQ(write_compare_screenshot(*window_, QString::fromStdString(dir_ / "M1-opt"), 0.8,
+                                     QSize(1400, 900), png),
+            0);
+  const QImage picture(png);
+  ASSERT_EQ(picture.size(), QSize(1400, 900));
+  EXPECT_GT(test::blank_check(picture).distinct_colours, 30);
+  // Bad input: the library's message and status 2.
+  EXPECT_EQ(write_compare_screenshot(*window_, QString::fromStdString(dir_ / "absent"), 0.8,
+                                     QSize(1400, 900), png),
+            2);
 }
 
 }  // namespace

@@ -12,9 +12,15 @@
 #include <QTest>
 
 #include "app/chart_widget.h"
+#include "app/compare_controller.h"
+#include "app/edit_controller.h"
+#include "app/file_controller.h"
 #include "app/keyframe_panel.h"
 #include "app/main_window.h"
 #include "app/model_panel.h"
+#include "app/plots_panel.h"
+#include "app/run_controller.h"
+#include "app/view_controller.h"
 #include "gui/support/image_checks.h"
 #include "gui/support/open_motion_fixture.h"
 #include "gui_core/test_motion.h"
@@ -49,7 +55,7 @@ class KeyframeEditTest : public test::OpenMotionTest {
 };
 
 TEST_F(KeyframeEditTest, MovingAnAngleSliderChangesTheRootForcePlot) {
-  KeyframePanel* panel = window_->keyframe_panel();
+  KeyframePanel* panel = window_->edits().keyframe_panel();
   ASSERT_NE(panel, nullptr);
   const int knee = window_->document().file().model.joint_index("knee_l");
   panel->select(2, knee);
@@ -67,7 +73,7 @@ TEST_F(KeyframeEditTest, MovingAnAngleSliderChangesTheRootForcePlot) {
   sliders[0]->setValue(sliders[0]->value() - 400);
   QApplication::processEvents();
 
-  EXPECT_TRUE(window_->document().edited());
+  EXPECT_TRUE(window_->workspace().motion_unsaved());
   EXPECT_TRUE(panel->problem().isEmpty()) << panel->problem().toStdString();
   const ChartSpec after = force_chart();
   ASSERT_EQ(after.lines.size(), before.lines.size());
@@ -88,23 +94,24 @@ TEST_F(KeyframeEditTest, BadEditsShowTheMessageAndChangeNothing) {
   const std::size_t n = motion().keyframes.size();
   const double t2 = motion().keyframes[2].time;
   QString error;
-  EXPECT_FALSE(window_->set_keyframe_time(1, t2, &error));
+  EXPECT_FALSE(window_->edits().set_keyframe_time(1, t2, &error));
   EXPECT_NE(error.indexOf("before keyframe 3"), -1) << error.toStdString();
-  EXPECT_EQ(window_->keyframe_panel()->problem(), error);
-  EXPECT_FALSE(window_->document().edited());
-  EXPECT_FALSE(window_->delete_keyframe(0, &error));
-  EXPECT_FALSE(window_->add_keyframe(motion().keyframes[1].time, &error));
+  EXPECT_EQ(window_->edits().keyframe_panel()->problem(), error);
+  EXPECT_FALSE(window_->workspace().motion_unsaved());
+  EXPECT_FALSE(window_->edits().delete_keyframe(0, &error));
+  EXPECT_FALSE(window_->edits().add_keyframe(motion().keyframes[1].time, &error));
   EXPECT_EQ(motion().keyframes.size(), n);
 
   // Add one in the first interval, then delete it again.
   const double t = 0.5 * motion().keyframes[1].time;
-  ASSERT_TRUE(window_->add_keyframe(t, &error)) << error.toStdString();
-  EXPECT_TRUE(window_->keyframe_panel()->problem().isEmpty());
+  ASSERT_TRUE(window_->edits().add_keyframe(t, &error)) << error.toStdString();
+  EXPECT_TRUE(window_->edits().keyframe_panel()->problem().isEmpty());
   ASSERT_EQ(motion().keyframes.size(), n + 1);
   EXPECT_DOUBLE_EQ(motion().keyframes[1].time, t);
-  EXPECT_EQ(window_->keyframe_panel()->selected_keyframe(), 1);
-  EXPECT_EQ(window_->keyframe_panel()->findChild<QListWidget*>()->count(), static_cast<int>(n + 1));
-  ASSERT_TRUE(window_->delete_keyframe(1, &error)) << error.toStdString();
+  EXPECT_EQ(window_->edits().keyframe_panel()->selected_keyframe(), 1);
+  EXPECT_EQ(window_->edits().keyframe_panel()->findChild<QListWidget*>()->count(),
+            static_cast<int>(n + 1));
+  ASSERT_TRUE(window_->edits().delete_keyframe(1, &error)) << error.toStdString();
   EXPECT_EQ(motion().keyframes.size(), n);
 }
 
@@ -112,11 +119,12 @@ TEST_F(KeyframeEditTest, EditedMotionSavesAndLoadsBack) {
   saltus::test::TempDir dir;
   const int hip = window_->document().file().model.joint_index("hip_r");
   QString error;
-  ASSERT_TRUE(window_->set_keyframe_angles(1, hip, -30.0, 5.0, 0.0, &error)) << error.toStdString();
+  ASSERT_TRUE(window_->edits().set_keyframe_angles(1, hip, -30.0, 5.0, 0.0, &error))
+      << error.toStdString();
   const QString path = QString::fromStdString(dir / "edited.motion.json");
   // Saved next to nothing: the model is named as in the original ("zatsiorsky-66kg"), found
   // among the bundled models.
-  ASSERT_TRUE(window_->save_motion(path, &error)) << error.toStdString();
+  ASSERT_TRUE(window_->files().save_motion(path, &error)) << error.toStdString();
   const Motion edited = motion();
   MainWindow second(false);
   ASSERT_TRUE(second.open_motion(path, &error)) << error.toStdString();
@@ -129,7 +137,7 @@ TEST_F(KeyframeEditTest, EditedMotionSavesAndLoadsBack) {
 }
 
 TEST_F(KeyframeEditTest, MassTableScalesASegmentAndRejectsBadFactors) {
-  ModelPanel* panel = window_->model_panel();
+  ModelPanel* panel = window_->edits().model_panel();
   ASSERT_NE(panel, nullptr);
   const BodyModel& model = window_->document().file().model;
   const int thigh = model.segment_index("thigh_r");
@@ -163,7 +171,7 @@ TEST_F(KeyframeEditTest, MassTableScalesASegmentAndRejectsBadFactors) {
   saltus::test::TempDir dir;
   QString error;
   const QString path = QString::fromStdString(dir / "heavy-thigh.json");
-  ASSERT_TRUE(window_->save_model(path, &error)) << error.toStdString();
+  ASSERT_TRUE(window_->files().save_model(path, &error)) << error.toStdString();
   const BodyModel saved = load_body_model(path.toStdString());
   EXPECT_EQ(saved.name, "heavy-thigh");
   EXPECT_NEAR(saved.segments[thigh].mass, 1.5 * thigh_mass, 1e-12);

@@ -19,7 +19,13 @@
 #include <QUrl>
 #include <filesystem>
 
+#include "app/compare_controller.h"
+#include "app/edit_controller.h"
+#include "app/file_controller.h"
 #include "app/main_window.h"
+#include "app/plots_panel.h"
+#include "app/run_controller.h"
+#include "app/view_controller.h"
 #include "gui/support/image_checks.h"
 #include "gui_core/test_motion.h"
 #include "support/cli_runner.h"
@@ -90,8 +96,8 @@ TEST(MainWindowEmpty, StartsWithoutAMotionAndSaysWhatToDo) {
   ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
   EXPECT_FALSE(window.document().loaded());
   QString error;
-  EXPECT_FALSE(window.save_result("/tmp/never-written", &error));
-  EXPECT_FALSE(window.start_optimization(OptimizeSettings{}, &error));
+  EXPECT_FALSE(window.files().save_result("/tmp/never-written", &error));
+  EXPECT_FALSE(window.runs().start(OptimizeSettings{}, &error));
   EXPECT_FALSE(error.isEmpty());
   QTest::keyClick(&window, Qt::Key_Space);  // nothing to play: no crash
   const QImage picture = window.grab_window();
@@ -106,20 +112,23 @@ TEST(MainWindowSettings, RemembersPanelValuesAndRecentFiles) {
   QSettings().clear();
   {
     MainWindow first(true);
+    // Its run is unsaved: closing asks; here the answer is "discard", as a user would click.
+    first.files().set_discard_prompt(
+        [](const QString&) { return FileController::DiscardAnswer::kDiscard; });
     first.show();
     ASSERT_TRUE(first.open_motion(motion_path()));
     OptimizeSettings s;
     s.max_iterations = 2;
     s.samples = 21;
     s.optimize_timing = false;
-    ASSERT_TRUE(first.start_optimization(s));
-    ASSERT_TRUE(first.wait_for_optimization(300000));
+    ASSERT_TRUE(first.runs().start(s));
+    ASSERT_TRUE(first.runs().wait(300000));
     first.close();
   }
   MainWindow second(true);
-  EXPECT_EQ(second.optimize_settings().max_iterations, 2);
-  EXPECT_EQ(second.optimize_settings().samples, 21);
-  EXPECT_FALSE(second.optimize_settings().optimize_timing);
+  EXPECT_EQ(second.runs().settings().max_iterations, 2);
+  EXPECT_EQ(second.runs().settings().samples, 21);
+  EXPECT_FALSE(second.runs().settings().optimize_timing);
   const QStringList recent = QSettings().value("files/recent").toStringList();
   ASSERT_FALSE(recent.isEmpty());
   EXPECT_EQ(QFileInfo(recent.front()).fileName(), QFileInfo(motion_path()).fileName());
@@ -148,15 +157,15 @@ TEST_F(MainWindowTest, OptimisesInTheBackgroundAndMatchesTheBaseline) {
   // timer that arrive while it runs; a blocked GUI thread would deliver none.
   int ticks = 0;
   QTimer timer;
-  QObject::connect(&timer, &QTimer::timeout, [&] { ticks += window_->optimization_running(); });
+  QObject::connect(&timer, &QTimer::timeout, [&] { ticks += window_->runs().running(); });
   timer.start(10);
   QElapsedTimer clock;
   clock.start();
   QString error;
-  ASSERT_TRUE(window_->start_optimization(few_iterations(), &error)) << error.toStdString();
-  EXPECT_TRUE(window_->optimization_running());
-  EXPECT_FALSE(window_->start_optimization(few_iterations(), &error));  // one at a time
-  ASSERT_TRUE(window_->wait_for_optimization(300000));
+  ASSERT_TRUE(window_->runs().start(few_iterations(), &error)) << error.toStdString();
+  EXPECT_TRUE(window_->runs().running());
+  EXPECT_FALSE(window_->runs().start(few_iterations(), &error));  // one at a time
+  ASSERT_TRUE(window_->runs().wait(300000));
   const qint64 elapsed_ms = clock.elapsed();
   timer.stop();
   // Software OpenGL makes every repaint slow (the progress display repaints the window), so
@@ -186,17 +195,19 @@ TEST_F(MainWindowTest, OptimisesInTheBackgroundAndMatchesTheBaseline) {
 TEST_F(MainWindowTest, CancelStopsTheOptimisationAtTheNextIteration) {
   OptimizeSettings many = few_iterations();
   many.max_iterations = 500;
-  QObject::connect(window_.get(), &MainWindow::optimization_finished, [] {});
-  ASSERT_TRUE(window_->start_optimization(many));
+  ASSERT_TRUE(window_->runs().start(many));
   // Cancel once the solver is iterating (or at once if it is quick to get there).
   QElapsedTimer clock;
   clock.start();
   while (clock.elapsed() < 1500)
     QApplication::processEvents(QEventLoop::AllEvents, 20);
-  window_->cancel_optimization();
-  ASSERT_TRUE(window_->wait_for_optimization(60000));
-  ASSERT_TRUE(window_->document().has_optimization());
-  const SolveReport& solve = window_->document().optimization().solve;
+  window_->runs().cancel();
+  ASSERT_TRUE(window_->runs().wait(60000));
+  // The run is kept in the list, whatever it reached.
+  const RunList& runs = window_->workspace().runs();
+  ASSERT_EQ(runs.size(), 1);
+  ASSERT_TRUE(runs.showable(0));
+  const SolveReport& solve = runs.at(0).result->solve;
   EXPECT_LT(solve.iterations, 500);
   EXPECT_TRUE(solve.status == "cancelled" || solve.status == "solved") << solve.status;
 }
@@ -222,13 +233,14 @@ TEST_F(MainWindowTest, BadMotionShowsTheLibrarysMessageAndKeepsTheOpenMotion) {
 TEST_F(MainWindowTest, SavesTheResultAndExportsPictures) {
   saltus::test::TempDir dir;
   QString error;
-  ASSERT_TRUE(window_->save_result(QString::fromStdString(dir / "result"), &error))
+  ASSERT_TRUE(window_->files().save_result(QString::fromStdString(dir / "result"), &error))
       << error.toStdString();
   for (const char* file : {"result.json", "trajectory.csv", "model.json"})
     EXPECT_TRUE(std::filesystem::exists(dir.path() / "result" / file)) << file;
 
   QStringList written;
-  ASSERT_TRUE(window_->export_plots(QString::fromStdString(dir / "plots"), &written, &error))
+  ASSERT_TRUE(
+      window_->plots().export_figures(QString::fromStdString(dir / "plots"), &written, &error))
       << error.toStdString();
   EXPECT_EQ(written.size(), 4);
   for (const QString& name : written) {
@@ -238,7 +250,8 @@ TEST_F(MainWindowTest, SavesTheResultAndExportsPictures) {
     EXPECT_GT(test::blank_check(plot).distinct_colours, 8) << name.toStdString();
   }
 
-  ASSERT_TRUE(window_->export_window_png(QString::fromStdString(dir / "window.png"), &error));
+  ASSERT_TRUE(
+      window_->files().export_window_png(QString::fromStdString(dir / "window.png"), &error));
   const QImage window_png(QString::fromStdString(dir / "window.png"));
   EXPECT_EQ(window_png.width(), kWidth);
   EXPECT_EQ(window_png.height(), kHeight);
@@ -288,7 +301,7 @@ TEST_F(MainWindowTest, DisplayOptionsChangeThePicture) {
               QString::fromStdString(camera_preset_name(preset)) + ".png");
   }
   options = SceneOptions{};
-  options.ghosts = options.trampoline = options.floor_grid = options.parabola = false;
+  options.ghosts = options.apparatus = options.floor_grid = options.parabola = false;
   window_->set_scene_options(options);
   EXPECT_NE(window_->grab_view(), plain);
 }

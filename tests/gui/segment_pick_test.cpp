@@ -23,11 +23,18 @@
 #include <string>
 #include <vector>
 
+#include "app/compare_controller.h"
+#include "app/edit_controller.h"
+#include "app/file_controller.h"
 #include "app/main_window.h"
+#include "app/plots_panel.h"
+#include "app/run_controller.h"
 #include "app/scene_widget.h"
+#include "app/view_controller.h"
 #include "gui/support/image_checks.h"
 #include "gui/support/open_motion_fixture.h"
 #include "gui_core/test_motion.h"
+#include "saltus/body/segment_names.h"
 
 namespace saltus::gui {
 namespace {
@@ -100,7 +107,7 @@ class SegmentPickTest : public test::OpenMotionTest {
   std::vector<int> visible_segments(std::size_t count) const {
     std::vector<int> out;
     for (int i = 0; i < model().size() && out.size() < count; ++i)
-      if (i != window_->selected_joint() && in_front(i)) out.push_back(i);
+      if (i != window_->plots().selected_joint() && in_front(i)) out.push_back(i);
     return out;
   }
 
@@ -133,8 +140,8 @@ TEST_F(SegmentPickTest, ClickOnASegmentSelectsItsJointAndHighlightsIt) {
   ASSERT_NE(tabs, nullptr);
   // Opened on the root plots, the joint plot at the left knee, nothing highlighted.
   EXPECT_EQ(tabs->currentIndex(), 0);
-  EXPECT_EQ(window_->selected_joint(), model().joint_index("knee_l"));
-  EXPECT_EQ(window_->highlighted_segment(), -1);
+  EXPECT_EQ(window_->plots().selected_joint(), model().joint_index("knee_l"));
+  EXPECT_EQ(window_->view().highlighted_segment(), -1);
   const QImage plain = window_->grab_view();
   EXPECT_LT(test::colour_fraction(plain, kOutline), 1e-5);
 
@@ -146,10 +153,12 @@ TEST_F(SegmentPickTest, ClickOnASegmentSelectsItsJointAndHighlightsIt) {
     const Segment& s = model().segments[static_cast<std::size_t>(target)];
     SCOPED_TRACE("clicked " + s.name);
     click(centre_on_screen(target));
-    EXPECT_EQ(window_->selected_joint(), target);
-    EXPECT_EQ(window_->highlighted_segment(), target);
+    EXPECT_EQ(window_->plots().selected_joint(), target);
+    EXPECT_EQ(window_->view().highlighted_segment(), target);
     EXPECT_EQ(tabs->currentIndex(), 1) << "the joint-load plot is not shown";
-    EXPECT_TRUE(joint_list->currentText().startsWith(QString::fromStdString(s.joint + " ")))
+    // Named as people name it ("Left knee (left lower leg)").
+    EXPECT_TRUE(joint_list->currentText().startsWith(
+        QString::fromStdString(capitalised(joint_label(s.joint)) + " (")))
         << joint_list->currentText().toStdString();
     const QImage picked = window_->grab_view();
     EXPECT_NE(picked, plain);
@@ -161,7 +170,7 @@ TEST_F(SegmentPickTest, ClickOnASegmentSelectsItsJointAndHighlightsIt) {
 }
 
 TEST_F(SegmentPickTest, ADragRotatesTheCameraAndPicksNothing) {
-  const int before = window_->selected_joint();
+  const int before = window_->plots().selected_joint();
   const QImage plain = window_->grab_view();
   const std::vector<int> targets = visible_segments(1);
   ASSERT_EQ(targets.size(), 1u);
@@ -174,8 +183,8 @@ TEST_F(SegmentPickTest, ADragRotatesTheCameraAndPicksNothing) {
   }
   QTest::mouseRelease(view_, Qt::LeftButton, Qt::NoModifier, start + QPoint(60, 30));
   QApplication::processEvents();
-  EXPECT_EQ(window_->selected_joint(), before);
-  EXPECT_EQ(window_->highlighted_segment(), -1);
+  EXPECT_EQ(window_->plots().selected_joint(), before);
+  EXPECT_EQ(window_->view().highlighted_segment(), -1);
   EXPECT_NE(window_->grab_view(), plain) << "the drag did not rotate the camera";
 }
 
@@ -184,11 +193,11 @@ TEST_F(SegmentPickTest, ClickBesideTheBodyDropsTheHighlightAndKeepsTheJoint) {
   const std::vector<int> targets = visible_segments(1);
   ASSERT_EQ(targets.size(), 1u);
   click(centre_on_screen(targets[0]));
-  ASSERT_EQ(window_->highlighted_segment(), targets[0]);
+  ASSERT_EQ(window_->view().highlighted_segment(), targets[0]);
   // Left edge, half-way down: background only (the follow camera keeps the body centred).
   click(QPoint(20, view_->height() / 2));
-  EXPECT_EQ(window_->highlighted_segment(), -1);
-  EXPECT_EQ(window_->selected_joint(), targets[0]);
+  EXPECT_EQ(window_->view().highlighted_segment(), -1);
+  EXPECT_EQ(window_->plots().selected_joint(), targets[0]);
   EXPECT_EQ(window_->grab_view(), plain) << "the highlight did not go away";
 }
 
@@ -201,8 +210,8 @@ TEST_F(SegmentPickTest, ChoosingAnotherJointInTheListMovesTheHighlight) {
   ASSERT_NE(joint_list, nullptr);
   const int other = (targets[0] + 1) % model().size();
   joint_list->setCurrentIndex(other);
-  EXPECT_EQ(window_->selected_joint(), other);
-  EXPECT_EQ(window_->highlighted_segment(), other);
+  EXPECT_EQ(window_->plots().selected_joint(), other);
+  EXPECT_EQ(window_->view().highlighted_segment(), other);
 }
 
 }  // namespace

@@ -42,6 +42,28 @@ TEST(CommandLine, ExportFiguresTakesTheFoldersAfterIt) {
   EXPECT_EQ(both.result_dirs, std::vector<std::string>{"r"});
 }
 
+TEST(CommandLine, CompareAndVideoAreBatchJobs) {
+  const CommandLine compare =
+      parse_command_line({"a.motion.json", "--compare", "b_out", "--screenshot", "c.png"});
+  EXPECT_TRUE(compare.batch());
+  EXPECT_EQ(compare.compare, "b_out");
+  EXPECT_THROW(parse_command_line({"a.json", "--compare", "b.json"}), std::invalid_argument);
+  EXPECT_THROW(parse_command_line({"--compare", "b.json", "--screenshot", "c.png"}),
+               std::invalid_argument);
+  const CommandLine video = parse_command_line(
+      {"capture.bvh", "--export-video", "v.gif", "--fps", "12", "--speed", "0.5"});
+  EXPECT_TRUE(video.batch());
+  EXPECT_EQ(video.motion, "capture.bvh");
+  EXPECT_EQ(video.export_video, "v.gif");
+  EXPECT_DOUBLE_EQ(video.video_fps, 12.0);
+  EXPECT_DOUBLE_EQ(video.video_speed, 0.5);
+  EXPECT_THROW(parse_command_line({"a.json", "--export-video", "v.mp4", "--fps", "0"}),
+               std::invalid_argument);
+  EXPECT_THROW(parse_command_line({"a.json", "--export-video", "v.mp4", "--speed", "20"}),
+               std::invalid_argument);
+  EXPECT_THROW(parse_command_line({"--export-video", "v.mp4"}), std::invalid_argument);
+}
+
 TEST(CommandLine, BenchmarkWithSeconds) {
   const CommandLine c = parse_command_line({"m.json", "--benchmark-playback", "--seconds", "3"});
   EXPECT_TRUE(c.benchmark);

@@ -26,7 +26,12 @@ TEST(Document, LoadsAndEvaluatesTheMotion) {
   EXPECT_EQ(d.frame_count(Stage::kBefore), 101);
   EXPECT_EQ(d.available(Stage::kAfter), Stage::kBefore);
   EXPECT_DOUBLE_EQ(d.duration(), d.file().motion.flight_time());
-  EXPECT_EQ(d.rotation(Stage::kBefore).size(), 101u);
+  // Plots and teaching read the dense grid, which ends where the flight does.
+  EXPECT_EQ(d.rotation(Stage::kBefore).size(),
+            static_cast<std::size_t>(plot_samples_for(d.duration())));
+  EXPECT_EQ(d.plot_samples(Stage::kBefore).size(),
+            static_cast<std::size_t>(plot_samples_for(d.duration())));
+  EXPECT_DOUBLE_EQ(d.plot_samples(Stage::kBefore).back().time, d.duration());
 }
 
 TEST(Document, SampleAtAGridTimeEqualsTheEvaluatedSample) {
@@ -62,19 +67,38 @@ TEST(Document, RotationAtInterpolatesCountsAndIsExactOtherwise) {
   EXPECT_GT(series.back().somersaults, -1.3);
 }
 
-TEST(Document, GlyphScalesCoverTheTypicalMagnitudes) {
+TEST(Document, GlyphScalesCoverTheTypicalMagnitudesOfTheStageShown) {
   Document d;
   d.load(test::gui_test_motion_path(), "", 51);
   std::vector<double> forces;
   for (const SampleRecord& s : d.evaluation(Stage::kBefore).samples)
     forces.push_back(s.residual.head<3>().norm());
   std::sort(forces.begin(), forces.end());
-  const GlyphScale force = d.residual_force_scale(1.0);
+  const GlyphScale force(d.glyph_typicals(Stage::kBefore).residual_force, 1.0);
   // Full scale covers 90 % of the samples, and is at most one 1-2-5 step above them.
   EXPECT_GE(force.full_scale(), forces[45]);
   EXPECT_LE(force.full_scale(), 2.5 * forces[45]);
-  EXPECT_GT(d.residual_moment_scale(1.0).full_scale(), 0.0);
-  EXPECT_GT(d.joint_force_scale(1.0).full_scale(), 0.0);
+  EXPECT_GT(d.glyph_typicals(Stage::kBefore).residual_moment, 0.0);
+  EXPECT_GT(d.glyph_typicals(Stage::kBefore).joint_force, 0.0);
+}
+
+TEST(Document, AfterOptimisationTheArrowsAreScaledToWhatRemains) {
+  Document d;
+  d.load(test::gui_test_motion_path(), "", 31);
+  OptimizeOptions options;
+  options.nlp.samples = 31;
+  options.solver.max_iterations = 15;
+  d.set_optimization(optimize_motion(d.file().motion, d.file().model, options), options);
+  const GlyphTypicals before = d.glyph_typicals(Stage::kBefore);
+  const GlyphTypicals after = d.glyph_typicals(Stage::kAfter);
+  // The optimised motion's residual is far smaller, and its arrows get their own, smaller
+  // scale: a remaining 10 N is not drawn as a dot on a 1000 N scale.
+  EXPECT_LT(after.residual_force, 0.5 * before.residual_force);
+  EXPECT_LT(GlyphScale(after.residual_force, 1.0).full_scale(),
+            GlyphScale(before.residual_force, 1.0).full_scale());
+  // Two views that must compare share the larger of each.
+  const GlyphTypicals both = after.max(before);
+  EXPECT_EQ(both.residual_force, before.residual_force);
 }
 
 TEST(Document, KeyframePosesAreAtTheKeyframeTimes) {

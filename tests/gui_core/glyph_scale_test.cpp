@@ -52,8 +52,12 @@ TEST(MagnitudeColour, GoesFromGreenThroughYellowToRed) {
   EXPECT_LT(high.g, 0.2);
   const Rgb beyond = magnitude_colour(7.0);
   EXPECT_DOUBLE_EQ(beyond.r, high.r);
-  EXPECT_EQ(format_number(0.25), "0.25");
-  EXPECT_EQ(format_number(50), "50");
+  EXPECT_EQ(legend_number(0.25), "0.25");
+  EXPECT_EQ(legend_number(50), "50");
+  // Round full scales of large residuals read as numbers, not "1e+03".
+  EXPECT_EQ(legend_number(1000), "1000");
+  EXPECT_EQ(legend_number(20000), "20000");
+  EXPECT_EQ(GlyphScale(800.0, 1.0).legend("N"), "1 m = 1000 N");
 }
 
 }  // namespace

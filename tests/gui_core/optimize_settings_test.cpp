@@ -33,6 +33,10 @@ TEST(OptimizeSettings, MapOntoTheLibraryOptions) {
   EXPECT_DOUBLE_EQ(o.nlp.epsilon, 40.0);
   EXPECT_FALSE(o.nlp.optimize_timing);
   EXPECT_EQ(o.nlp.knots_per_interval, 2);
+  EXPECT_FALSE(o.automatic_resolution);  // a number: uniform knots
+  // The default, as `saltus optimize`'s: the automatic resolution.
+  EXPECT_EQ(OptimizeSettings{}.knots_per_interval, 0);
+  EXPECT_TRUE(to_optimize_options(OptimizeSettings{}).automatic_resolution);
   EXPECT_EQ(o.nlp.samples, 51);
   EXPECT_EQ(o.solver.max_iterations, 7);
   EXPECT_NEAR(o.nlp.joint_turn_limit, M_PI / 2, 1e-15);
@@ -52,7 +56,7 @@ TEST(OptimizeSettings, RejectValuesOutOfRange) {
   s.epsilon = 0;
   EXPECT_THROW(to_optimize_options(s), std::invalid_argument);
   s = {};
-  s.knots_per_interval = 0;
+  s.knots_per_interval = -1;
   EXPECT_THROW(to_optimize_options(s), std::invalid_argument);
   s = {};
   s.samples = 1;

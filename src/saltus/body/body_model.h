@@ -11,11 +11,26 @@
 
 namespace saltus {
 
+/// One piece of a segment's drawing (a head, a hand, a foot), in segment coordinates.
+struct ShapePart {
+  std::string name;                ///< what it is ("head", "hand"), for people and colours
+  std::string type = "ellipsoid";  ///< "ellipsoid" or "capsule"
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();  ///< m
+  /// Ellipsoid: semi-axes along the segment's x, y, z, m (> 0).
+  Eigen::Vector3d radii = Eigen::Vector3d::Zero();
+  double length = 0.0;  ///< capsule: cylinder length along the segment's y axis, m (signed)
+  double radius = 0.0;  ///< capsule: m (> 0)
+};
+
 /// Drawing shape of a segment, in segment coordinates. Not used by any physics.
 struct SegmentShape {
   std::string type = "capsule";  ///< "capsule", "ellipsoid" or "box"
   double length = 0.0;           ///< m, along the segment's y axis (signed: negative = -y)
   double radius = 0.0;           ///< m
+  /// Optional: what to draw instead of the single shape above, which stays the segment's
+  /// extent (the thorax's capsule reaches the top of the head it carries). Files without
+  /// "parts" draw the single shape, as before.
+  std::vector<ShapePart> parts;
 };
 
 struct Segment {

@@ -108,8 +108,41 @@ Eigen::Matrix3d parse_inertia(const JsonNode& node, double mass) {
             std::string("found ") + std::to_string(n) + " values");
 }
 
+/// One entry of "parts": {"name", "type": "ellipsoid", "center", "radii"} or {"name", "type":
+/// "capsule", "center", "length", "radius"}.
+ShapePart parse_shape_part(const JsonNode& node) {
+  const JsonNode type = node.at("type");
+  const std::string kind = type.as_string();
+  if (kind == "ellipsoid")
+    node.require_keys_within({"name", "type", "center", "radii"});
+  else if (kind == "capsule")
+    node.require_keys_within({"name", "type", "center", "length", "radius"});
+  ShapePart part;
+  if (const auto name = node.find("name")) part.name = name->as_string();
+  part.type = kind;
+  part.center = node.at("center").as_vector3_within(plausible::kMaxSegmentLength, "m");
+  if (part.type == "ellipsoid") {
+    const JsonNode radii = node.at("radii");
+    part.radii = radii.as_vector3_within(plausible::kMaxSegmentLength, "m");
+    if (!(part.radii.minCoeff() > 0.0))
+      radii.fail("ellipsoid radii must be positive, found " +
+                 message_number(part.radii.minCoeff()));
+  } else if (part.type == "capsule") {
+    // Signed, as a segment shape's length.
+    part.length = node.at("length").as_double_within(-plausible::kMaxSegmentLength,
+                                                     plausible::kMaxSegmentLength, "m");
+    const JsonNode radius = node.at("radius");
+    part.radius = radius.as_double_within(0.0, plausible::kMaxSegmentLength, "m");
+    if (!(part.radius > 0.0))
+      radius.fail("capsule radius must be positive, found " + message_number(part.radius));
+  } else {
+    type.fail("part type must be \"ellipsoid\" or \"capsule\", found " + in_quotes(part.type));
+  }
+  return part;
+}
+
 SegmentShape parse_shape(const JsonNode& node) {
-  node.require_keys_within({"type", "length", "radius"});
+  node.require_keys_within({"type", "length", "radius", "parts"});
   SegmentShape shape;
   const JsonNode type = node.at("type");
   shape.type = type.as_string();
@@ -124,6 +157,11 @@ SegmentShape parse_shape(const JsonNode& node) {
   if (shape.radius < 0.0)
     radius.fail("shape radius must not be negative, found " + message_number(shape.radius));
   radius.as_double_within(0.0, plausible::kMaxSegmentLength, "m");
+  if (const auto parts = node.find("parts")) {
+    parts->require_array();
+    for (std::size_t i = 0; i < parts->size(); ++i)
+      shape.parts.push_back(parse_shape_part(parts->at(i)));
+  }
   return shape;
 }
 
@@ -240,6 +278,23 @@ nlohmann::json body_model_to_json(const BodyModel& model) {
   auto vector3 = [](const Eigen::Vector3d& v) {
     return nlohmann::json::array({v.x(), v.y(), v.z()});
   };
+  auto shape_json = [&vector3](const SegmentShape& shape) {
+    nlohmann::json out = {{"type", shape.type}, {"length", shape.length}, {"radius", shape.radius}};
+    if (shape.parts.empty()) return out;  // files without parts stay as they were
+    nlohmann::json parts = nlohmann::json::array();
+    for (const ShapePart& p : shape.parts) {
+      nlohmann::json part = {{"name", p.name}, {"type", p.type}, {"center", vector3(p.center)}};
+      if (p.type == "capsule") {
+        part["length"] = p.length;
+        part["radius"] = p.radius;
+      } else {
+        part["radii"] = vector3(p.radii);
+      }
+      parts.push_back(std::move(part));
+    }
+    out["parts"] = std::move(parts);
+    return out;
+  };
   nlohmann::json segments = nlohmann::json::array();
   for (const Segment& s : model.segments) {
     nlohmann::json parent = nullptr;
@@ -253,7 +308,7 @@ nlohmann::json body_model_to_json(const BodyModel& model) {
         {"mass", s.mass},
         {"com", vector3(s.com)},
         {"inertia", {I(0, 0), I(1, 1), I(2, 2), I(0, 1), I(0, 2), I(1, 2)}},
-        {"shape", {{"type", s.shape.type}, {"length", s.shape.length}, {"radius", s.shape.radius}}},
+        {"shape", shape_json(s.shape)},
     });
   }
   return {{"format", kModelFormat},

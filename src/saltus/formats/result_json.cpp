@@ -192,6 +192,14 @@ nlohmann::json optimization_result_json(const MotionFile& file, const Optimizati
   r["residual_check"]["optimizer_agrees"] = optimizer_agrees_with_check(result);
   r["keyframe_times_before"] = result.before.keyframe_times;
   r["keyframe_times_after"] = result.after.keyframe_times;
+  // How far each optimised time could move with the residual within kTimeSpreadForceRise:
+  // times beyond kDeterminedTimeSpread are not recovered, only chosen.
+  r["keyframe_time_spread_s"] = result.keyframe_time_spreads;
+  std::vector<int> undetermined;
+  for (std::size_t i = 0; i < result.keyframe_time_spreads.size(); ++i)
+    if (result.keyframe_time_spreads[i] > kDeterminedTimeSpread)
+      undetermined.push_back(static_cast<int>(i));
+  r["keyframe_times_undetermined"] = undetermined;
   put_keyframe_errors(r, result.after.keyframe_errors);
   r["tolerances"] = {{"translation_m", file.motion.tolerances.translation_m},
                      {"quaternion", file.motion.tolerances.quaternion}};

@@ -1,6 +1,8 @@
 #include "saltus/optim/motion_nlp.h"
 
+#include <Eigen/SparseCholesky>
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <thread>
 
@@ -234,6 +236,66 @@ void MotionNlp::hessian_values(const double* x, double objective_factor, const d
   }
   for (std::size_t b = 0; b < constraint_.size(); ++b)
     constraint_[b]->add_curvature(*at_, multipliers + block_row_[b], band_, values);
+}
+
+std::vector<double> MotionNlp::keyframe_time_spreads(const double* x, double rise) {
+  const int n = layout_.size();
+  at_->load(x);
+  at_->need_keyframe_derivatives();
+  std::vector<double> values(band_.nonzeros(), 0.0);
+  if (root_wrench_) root_wrench_->prepare_derivatives(*at_);
+  for (ObjectiveTerm* term : objective_)
+    term->add_curvature(*at_, 1.0, band_, values.data());
+  if (root_wrench_ && options_.formulation == Formulation::kRelaxed) {
+    // The root wrench term adds μ·J to the diagonal (the solver's damping); take it out.
+    const double damping = damping_.factor() * root_wrench_->value(*at_);
+    for (int v = 0; v < n; ++v)
+      values[band_.index(v, v)] -= damping;
+  }
+  std::vector<int> rows(band_.nonzeros()), columns(band_.nonzeros());
+  band_.structure(rows.data(), columns.data());
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (int e = 0; e < band_.nonzeros(); ++e)
+    triplets.emplace_back(std::max(rows[e], columns[e]), std::min(rows[e], columns[e]), values[e]);
+  Eigen::SparseMatrix<double> lower(n, n);
+  lower.setFromTriplets(triplets.begin(), triplets.end());
+  // Each constraint as a quadratic wall that costs `rise` where the constraint uses up the
+  // slack it has at x (a constraint at its bound: a slack of 1e-6, nearly an equality).
+  const int m = rows_;
+  std::vector<double> g(m), g_lower(m), g_upper(m), x_lower(n), x_upper(n);
+  constraints(x, g.data());
+  bounds(x_lower.data(), x_upper.data(), g_lower.data(), g_upper.data());
+  std::vector<int> jacobian_rows(jacobian_nonzeros()), jacobian_cols(jacobian_nonzeros());
+  std::vector<double> jacobian(jacobian_nonzeros());
+  jacobian_structure(jacobian_rows.data(), jacobian_cols.data());
+  jacobian_values(x, jacobian.data());
+  std::vector<Eigen::Triplet<double>> weighted;
+  for (int e = 0; e < jacobian_nonzeros(); ++e) {
+    const int row = jacobian_rows[e];
+    const double slack =
+        std::max(1e-6, std::min(std::abs(g[row] - g_lower[row]), std::abs(g_upper[row] - g[row])));
+    weighted.emplace_back(row, jacobian_cols[e], jacobian[e] * std::sqrt(rise) / slack);
+  }
+  Eigen::SparseMatrix<double> walls(m, n);
+  walls.setFromTriplets(weighted.begin(), weighted.end());
+  const Eigen::SparseMatrix<double> hessian =
+      Eigen::SparseMatrix<double>(lower.selfadjointView<Eigen::Lower>()) +
+      Eigen::SparseMatrix<double>(walls.transpose() * walls);
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(hessian);
+  std::vector<double> spreads(layout_.keyframe_count, 0.0);
+  for (int i = 0; i < layout_.keyframe_count; ++i) {
+    const int v = layout_.time_variable(i);
+    if (v < 0) continue;
+    double spread = options_.max_time_shift;  // a flat direction: nothing pins the time
+    if (ldlt.info() == Eigen::Success) {
+      const Eigen::VectorXd unit = Eigen::VectorXd::Unit(n, v);
+      const double inverse = ldlt.solve(unit)(v);
+      if (inverse > 0 && std::isfinite(inverse))
+        spread = std::min(spread, std::sqrt(2.0 * rise * inverse));
+    }
+    spreads[i] = spread;
+  }
+  return spreads;
 }
 
 void MotionNlp::step_taken(const StepTaken& step) {

@@ -175,6 +175,13 @@ class MotionNlp : public Nlp {
   /// Relaxed objective J at x by the span quadrature (also defined for the strict model).
   double force_objective(const double* x);
 
+  /// How closely the keyframes pin each time at x (s, one per keyframe; 0 for fixed times): the
+  /// move of that time which, with every other variable following at best, costs `rise` (N²) of
+  /// objective, each constraint counted as a quadratic wall that costs `rise` where it uses up
+  /// the slack it has at x: sqrt(2·rise·(H⁻¹)_tt), H the undamped Gauss-Newton Hessian plus the
+  /// walls'. Capped at max_time_shift.
+  std::vector<double> keyframe_time_spreads(const double* x, double rise);
+
  private:
   /// Bounds of the variables: joint tangents within ±1.5 rad, keyframe times within
   /// max_time_shift of the given ones and the gap of their neighbours.

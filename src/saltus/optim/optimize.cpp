@@ -50,6 +50,7 @@ struct Solved {
   double objective_before = 0.0, objective_after = 0.0;
   Motion optimized;
   Trajectory<double> trajectory;
+  std::vector<double> time_spreads;
 };
 
 Solved solve_level(const Motion& motion, const Motion& motion_at_start, const BodyModel& model,
@@ -66,6 +67,10 @@ Solved solve_level(const Motion& motion, const Motion& motion_at_start, const Bo
   out.solve = solve_with_ipopt(nlp, solver, progress, cancel);
   const double* x = out.solve.x.data();
   out.objective_after = nlp.force_objective(x);
+  // How far each time may move before the average root force rises by kTimeSpreadForceRise.
+  const double force = std::sqrt(out.objective_after / 6.0);
+  out.time_spreads = nlp.keyframe_time_spreads(
+      x, 6.0 * (std::pow(force + kTimeSpreadForceRise, 2) - force * force));
   out.optimized = motion;
   const std::vector<double> times = keyframe_times_from(nlp.layout(), nlp.reference(), x);
   for (std::size_t i = 0; i < times.size(); ++i)
@@ -251,6 +256,7 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
   result.variables = best.variables;
   result.constraints = best.constraints;
   result.optimizer_objective_after = best.objective_after;
+  result.keyframe_time_spreads = best.time_spreads;
   result.subdivisions = best_subdivisions;
   result.knots_per_interval = *std::max_element(best_subdivisions.begin(), best_subdivisions.end());
 

@@ -48,6 +48,10 @@ struct AutomaticResolution {
   double coarse_objective_change = 1e-2;
 };
 
+/// See OptimizationResult::keyframe_time_spreads.
+inline constexpr double kTimeSpreadForceRise = 0.1;    ///< N
+inline constexpr double kDeterminedTimeSpread = 0.02;  ///< s
+
 /// The finest knot refinement optimize_motion picks on its own.
 inline constexpr int kMaxAutomaticKnotsPerInterval = 4;
 
@@ -92,6 +96,11 @@ struct OptimizationResult {
   /// end: beside the dense check's (before/after.metrics), they must agree when the quadrature
   /// is fine enough for the knots.
   double optimizer_objective_before = 0.0, optimizer_objective_after = 0.0;
+  /// Per keyframe, how far its optimised time could move (s), the rest of the motion following,
+  /// before the average root force rises by kTimeSpreadForceRise (MotionNlp::
+  /// keyframe_time_spreads); 0 for the fixed first and last. Above kDeterminedTimeSpread the
+  /// keyframes and their tolerances leave the time undetermined.
+  std::vector<double> keyframe_time_spreads;
   /// The input motion with the optimised keyframe times and the optimised spline stored, so that
   /// loading it reproduces `after` exactly; its take-off state is the optimised motion's own
   /// (fit_flight_state) and its keyframes name the root positions the optimiser met.

@@ -86,11 +86,40 @@ inline QImage block_average(const QImage& image, int block) {
   return out;
 }
 
-/// Compares `image` with baselines/<name>.png (see the file comment).
-inline Comparison compare_with_baseline(const QImage& image, const QString& name) {
-  constexpr int kBlock = 4;
-  constexpr int kChannelTolerance = 40;
-  constexpr double kMaxDifferentBlocks = 0.03;
+constexpr int kBlock = 4;
+constexpr int kChannelTolerance = 40;
+
+/// Share of 4×4 blocks that differ (a channel of the block average by more than 40 of 255)
+/// between two images of one size; 1 for different sizes. `diff` (may be null) receives a
+/// picture of where they differ (red) and by how much (grey).
+inline double block_difference(const QImage& image, const QImage& other, QImage* diff = nullptr) {
+  if (image.size() != other.size() || image.isNull()) return 1.0;
+  const QImage a = block_average(image, kBlock);
+  const QImage b = block_average(other, kBlock);
+  if (diff) *diff = QImage(a.size(), QImage::Format_RGB32);
+  long different = 0;
+  for (int y = 0; y < a.height(); ++y)
+    for (int x = 0; x < a.width(); ++x) {
+      const QRgb p = a.pixel(x, y), q = b.pixel(x, y);
+      const int d = std::max({std::abs(qRed(p) - qRed(q)), std::abs(qGreen(p) - qGreen(q)),
+                              std::abs(qBlue(p) - qBlue(q))});
+      different += d > kChannelTolerance;
+      if (diff)
+        diff->setPixel(x, y, d > kChannelTolerance ? qRgb(255, 0, 0) : qRgb(d * 3, d * 3, d * 3));
+    }
+  return static_cast<double>(different) / (a.width() * a.height());
+}
+
+/// Whether two pictures look alike: at most `max_different_blocks` of their blocks differ.
+inline bool compare_images(const QImage& image, const QImage& other, double max_different_blocks) {
+  return block_difference(image, other) <= max_different_blocks;
+}
+
+/// Compares `image` with baselines/<name>.png (see the file comment); at most
+/// `max_different_blocks` of the 4×4 blocks may differ.
+inline Comparison compare_with_baseline(const QImage& image, const QString& name,
+                                        double max_different_blocks = 0.03) {
+  const double kMaxDifferentBlocks = max_different_blocks;
   Comparison out;
   const QString baseline_path = QDir(SALTUS_GUI_BASELINE_DIR).filePath(name + ".png");
   QDir().mkpath(SALTUS_GUI_CANDIDATE_DIR);
@@ -114,19 +143,8 @@ inline Comparison compare_with_baseline(const QImage& image, const QString& name
                       .toStdString();
     return out;
   }
-  const QImage a = block_average(image, kBlock);
-  const QImage b = block_average(baseline, kBlock);
-  QImage diff(a.size(), QImage::Format_RGB32);
-  long different = 0;
-  for (int y = 0; y < a.height(); ++y)
-    for (int x = 0; x < a.width(); ++x) {
-      const QRgb p = a.pixel(x, y), q = b.pixel(x, y);
-      const int d = std::max({std::abs(qRed(p) - qRed(q)), std::abs(qGreen(p) - qGreen(q)),
-                              std::abs(qBlue(p) - qBlue(q))});
-      different += d > kChannelTolerance;
-      diff.setPixel(x, y, d > kChannelTolerance ? qRgb(255, 0, 0) : qRgb(d * 3, d * 3, d * 3));
-    }
-  const double fraction = static_cast<double>(different) / (a.width() * a.height());
+  QImage diff;
+  const double fraction = block_difference(image, baseline, &diff);
   out.ok = fraction <= kMaxDifferentBlocks;
   if (!out.ok) {
     image.save(candidate_path, "PNG");

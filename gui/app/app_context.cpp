@@ -1,0 +1,42 @@
+#include "app/app_context.h"
+
+#include <QAction>
+#include <QDir>
+#include <QFileInfo>
+#include <QMainWindow>
+#include <QMessageBox>
+#include <QStatusBar>
+#include <cstdio>
+
+namespace saltus::gui {
+
+AppContext::AppContext(QMainWindow* window, bool interactive)
+    : window_(window), interactive_(interactive), last_dir_(QDir::homePath()) {}
+
+void AppContext::set_last_dir_from(const QString& path) {
+  const QFileInfo info(path);
+  last_dir_ = info.isDir() ? info.absoluteFilePath() : info.absolutePath();
+}
+
+bool AppContext::fail(const QString& title, const QString& message, QString* error) const {
+  if (error) {
+    *error = message;
+  } else if (interactive_) {
+    QMessageBox::critical(window_, title, message);
+  } else {
+    std::fprintf(stderr, "saltus-gui: %s: %s\n", qPrintable(title), qPrintable(message));
+  }
+  return false;
+}
+
+void AppContext::status(const QString& message, int milliseconds) const {
+  window_->statusBar()->showMessage(message, milliseconds);
+}
+
+void AppContext::scope_shortcut(QAction* action) const {
+  action->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+  for (QWidget* widget : scopes_)
+    widget->addAction(action);
+}
+
+}  // namespace saltus::gui

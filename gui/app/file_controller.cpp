@@ -1,0 +1,443 @@
+#include "app/file_controller.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QDir>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMainWindow>
+#include <QMenu>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QSettings>
+#include <QStatusBar>
+#include <QStyle>
+#include <QToolBar>
+#include <exception>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "app/playback_controller.h"
+#include "app/plots_panel.h"
+#include "app/scene_widget.h"
+#include "app/view_controller.h"
+#include "saltus/base/input_error.h"
+#include "saltus/base/json_reader.h"
+#include "saltus/evaluation/residual_measures.h"
+#include "saltus/formats/capture_files.h"
+#include "saltus/formats/model_file.h"
+#include "saltus/formats/motion_file.h"
+
+namespace saltus::gui {
+
+namespace {
+
+constexpr int kMaxRecent = 8;
+
+QString qstr(const std::string& s) {
+  return QString::fromStdString(s);
+}
+
+/// Whether a JSON file is a body model ("saltus-model/1") rather than a motion.
+bool is_model_file(const QString& path) {
+  try {
+    const nlohmann::json document = read_json_file(path.toStdString());
+    return document.is_object() && document.value("format", "") == "saltus-model/1";
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+/// "M1-straight-back-somersault" from ".../M1-straight-back-somersault.motion.json".
+QString motion_stem(const std::string& path) {
+  return QFileInfo(qstr(path)).completeBaseName().remove(".motion");
+}
+
+}  // namespace
+
+FileController::FileController(AppContext& context, ViewController& view,
+                               PlaybackController& playback, PlotsPanel& plots, QObject* parent)
+    : QObject(parent), context_(context), view_(view), playback_(playback), plots_(plots) {
+  QMainWindow* w = context_.window();
+  open_ =
+      new QAction(w->style()->standardIcon(QStyle::SP_DialogOpenButton), tr("&Open motion…"), this);
+  open_->setShortcut(QKeySequence::Open);
+  connect(open_, &QAction::triggered, this, [this] {
+    const QString path = ask_open_file(
+        tr("Open motion"),
+        tr("Motions (*.motion.json *.json);;Motion captures (*.bvh *.BVH);;All files (*)"));
+    if (!path.isEmpty()) open_motion(path);
+  });
+  import_capture_ = new QAction(tr("&Import motion capture…"), this);
+  import_capture_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_I));
+  import_capture_->setToolTip(
+      tr("A BVH file onto the body model (as `saltus import`): its flight, take-off state and "
+         "picked keyframes; the capture is drawn beside the motion"));
+  connect(import_capture_, &QAction::triggered, this, [this] {
+    const QString path =
+        ask_open_file(tr("Import motion capture"), tr("Motion captures (*.bvh *.BVH)"));
+    if (!path.isEmpty()) open_motion(path);
+  });
+  save_result_ = new QAction(w->style()->standardIcon(QStyle::SP_DialogSaveButton),
+                             tr("&Save result folder…"), this);
+  save_result_->setShortcut(QKeySequence::Save);
+  save_result_->setToolTip(
+      tr("Write what `saltus optimize` writes for the run shown (or `saltus "
+         "evaluate` without one)"));
+  connect(save_result_, &QAction::triggered, this, [this] { ask_save_result(); });
+  save_motion_ = new QAction(tr("Save &motion as…"), this);
+  connect(save_motion_, &QAction::triggered, this, [this] { ask_save_motion(); });
+  save_model_ = new QAction(tr("Save body mo&del as…"), this);
+  connect(save_model_, &QAction::triggered, this, [this] { ask_save_model(); });
+  need_motion_ = {save_result_, save_motion_, save_model_};
+
+  status_line_ = new QLabel(w);
+  w->statusBar()->addWidget(status_line_, 1);
+  context_.workspace().subscribe([this](WorkspaceChange c) { on_workspace(c); });
+  prompt_ = [this](const QString& question) {
+    if (!context_.interactive()) return DiscardAnswer::kDiscard;
+    const auto answer = QMessageBox::question(
+        context_.window(), tr("Unsaved work"), question,
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    return answer == QMessageBox::Save      ? DiscardAnswer::kSave
+           : answer == QMessageBox::Discard ? DiscardAnswer::kDiscard
+                                            : DiscardAnswer::kCancel;
+  };
+}
+
+void FileController::fill_menu(QMenu* file, const std::vector<QAction*>& more_exports) {
+  QMainWindow* w = context_.window();
+  file->addAction(open_);
+  file->addAction(import_capture_);
+  file->addAction(tr("Open &model…"), this, [this] {
+    const QString path = ask_open_file(tr("Open body model"), tr("Body models (*.json)"));
+    if (!path.isEmpty()) open_model(path);
+  });
+  recent_menu_ = file->addMenu(tr("Open &recent"));
+  rebuild_recent_menu();
+  file->addSeparator();
+  file->addAction(save_result_);
+  file->addAction(save_motion_);
+  file->addAction(save_model_);
+  file->addSeparator();
+  QAction* view_png = file->addAction(tr("Export 3D view as PNG…"), this, [this] {
+    const QString path = QFileDialog::getSaveFileName(
+        context_.window(), tr("Export 3D view"), QDir(context_.last_dir()).filePath("view.png"),
+        tr("PNG (*.png)"));
+    if (!path.isEmpty()) export_view_png(path);
+  });
+  QAction* plots_png = file->addAction(tr("Export plots as figures…"), this, [this] {
+    const QString dir = QFileDialog::getExistingDirectory(
+        context_.window(), tr("Export plots into folder"), context_.last_dir());
+    if (dir.isEmpty()) return;
+    QStringList written;
+    if (plots_.export_figures(dir, &written))
+      context_.status(tr("Wrote %1 into %2").arg(written.join(", "), dir), 8000);
+  });
+  QAction* window_png = file->addAction(tr("Export window screenshot…"), this, [this] {
+    const QString path = QFileDialog::getSaveFileName(
+        context_.window(), tr("Export window"), QDir(context_.last_dir()).filePath("saltus.png"),
+        tr("PNG (*.png)"));
+    if (!path.isEmpty()) export_window_png(path);
+  });
+  need_motion_.insert(need_motion_.end(), {view_png, plots_png, window_png});
+  for (QAction* a : more_exports) {
+    file->addAction(a);
+    need_motion_.push_back(a);
+  }
+  file->addSeparator();
+  QAction* quit = file->addAction(tr("&Quit"), w, &QWidget::close);
+  quit->setShortcut(QKeySequence::Quit);
+  on_workspace(WorkspaceChange::kSaved);
+}
+
+void FileController::fill_toolbar(QToolBar* bar) {
+  bar->addAction(open_);
+  bar->addAction(save_result_);
+}
+
+void FileController::on_workspace(WorkspaceChange change) {
+  const Workspace& ws = context_.workspace();
+  for (QAction* a : need_motion_)
+    a->setEnabled(ws.loaded());
+  if (change == WorkspaceChange::kStage) return;
+  if (!ws.loaded()) {
+    context_.window()->setWindowTitle(tr("Saltus"));
+    status_line_->setText(
+        tr("Open a motion: File > Open, or drop a *.motion.json (or a .bvh capture) here."));
+    return;
+  }
+  const MotionFile& f = ws.document().file();
+  const bool edited = ws.motion_unsaved() || ws.model_unsaved();
+  context_.window()->setWindowTitle(
+      tr("Saltus — %1%2").arg(qstr(f.motion.name), edited ? tr(" (edited)") : QString()));
+  const double force = ws.document().evaluation(Stage::kBefore).metrics.avg_root_force;
+  status_line_->setText(
+      tr("%1%2 — model %3 (%4 kg), %5 keyframes, flight %6 s; average root force %7 N "
+         "(%8 % of body weight) before optimisation")
+          .arg(qstr(f.motion.name), edited ? tr(" (edited)") : QString(), qstr(f.model.name))
+          .arg(f.model.total_mass(), 0, 'f', 1)
+          .arg(f.motion.keyframes.size())
+          .arg(f.motion.flight_time(), 0, 'f', 2)
+          .arg(force, 0, 'g', 3)
+          .arg(percent_of_body_weight(force, f.model), 0, 'f', 1));
+  if (change == WorkspaceChange::kOpened) context_.window()->statusBar()->clearMessage();
+}
+
+QString FileController::ask_open_file(const QString& title, const QString& filter) {
+  return QFileDialog::getOpenFileName(context_.window(), title, context_.last_dir(), filter);
+}
+
+bool FileController::confirm_discard(const QString& action) {
+  const Workspace& ws = context_.workspace();
+  if (!ws.has_unsaved_work()) return true;
+  const QString question =
+      tr("%1 — %2.\n\nSave before %3?")
+          .arg(qstr(ws.document().file().motion.name), qstr(ws.unsaved_summary()), action);
+  switch (prompt_(question)) {
+    case DiscardAnswer::kDiscard:
+      return true;
+    case DiscardAnswer::kCancel:
+      return false;
+    case DiscardAnswer::kSave:
+      if (ws.motion_unsaved() && !ask_save_motion()) return false;
+      if (ws.model_unsaved() && !ask_save_model()) return false;
+      if (ws.unsaved_runs() > 0 && !ask_save_result()) return false;
+      return true;
+  }
+  return false;
+}
+
+bool FileController::open_motion(const QString& path, QString* error) {
+  if (!confirm_discard(tr("opening %1").arg(QFileInfo(path).fileName()))) {
+    if (error) *error = tr("Kept the open motion (it has unsaved work).");
+    return false;
+  }
+  Workspace& ws = context_.workspace();
+  try {
+    // A model chosen with "Open model" applies to every motion opened after it.
+    ws.open(path.toStdString(), model_override_);
+  } catch (const InputError& e) {
+    return context_.fail(tr("Cannot open motion"), qstr(e.what()), error);
+  } catch (const std::exception& e) {
+    return context_.fail(tr("Cannot open motion"), path + ": " + qstr(e.what()), error);
+  }
+  context_.set_last_dir_from(path);
+  add_recent(QFileInfo(path).absoluteFilePath());
+  emit motion_opened();
+  return true;
+}
+
+bool FileController::open_model(const QString& path, QString* error) {
+  const std::string absolute = QFileInfo(path).absoluteFilePath().toStdString();
+  Workspace& ws = context_.workspace();
+  try {
+    // Validate the model on its own first, so that its own errors are reported as such.
+    load_body_model(absolute);
+    if (ws.loaded()) {
+      if (!confirm_discard(tr("using the model %1").arg(QFileInfo(path).fileName()))) {
+        if (error) *error = tr("Kept the open motion (it has unsaved work).");
+        return false;
+      }
+      const double t = playback_.time();
+      ws.open(ws.document().file().path, absolute, ws.document().evaluate_options().samples);
+      playback_.seek(t);
+    }
+  } catch (const InputError& e) {
+    return context_.fail(tr("Cannot use model"), qstr(e.what()), error);
+  } catch (const std::exception& e) {
+    return context_.fail(tr("Cannot use model"), path + ": " + qstr(e.what()), error);
+  }
+  // Used for the motions opened from now on, too.
+  model_override_ = absolute;
+  context_.set_last_dir_from(path);
+  context_.status(tr("Model %1 in use").arg(path));
+  return true;
+}
+
+bool FileController::ask_save_result() {
+  const Workspace& ws = context_.workspace();
+  const QString suggestion =
+      QDir(context_.last_dir()).filePath(motion_stem(ws.document().file().path) + "-result");
+  const QString dir = QFileDialog::getSaveFileName(
+      context_.window(), tr("Save result folder (created or replaced)"), suggestion, QString(),
+      nullptr, QFileDialog::DontConfirmOverwrite);
+  return !dir.isEmpty() && save_result(dir);
+}
+
+bool FileController::ask_save_motion() {
+  const Workspace& ws = context_.workspace();
+  const QString suggestion =
+      QDir(context_.last_dir())
+          .filePath(motion_stem(ws.document().file().path) + "-edited.motion.json");
+  const QString path = QFileDialog::getSaveFileName(context_.window(), tr("Save motion"),
+                                                    suggestion, tr("Motions (*.motion.json)"));
+  return !path.isEmpty() && save_motion(path);
+}
+
+bool FileController::ask_save_model() {
+  const QString path = QFileDialog::getSaveFileName(
+      context_.window(), tr("Save body model"),
+      QDir(context_.last_dir()).filePath("edited-model.json"), tr("Body models (*.json)"));
+  return !path.isEmpty() && save_model(path);
+}
+
+bool FileController::save_result(const QString& dir, QString* error) {
+  Workspace& ws = context_.workspace();
+  if (!ws.loaded()) return context_.fail(tr("Nothing to save"), tr("Open a motion first."), error);
+  try {
+    ws.document().save_result(dir.toStdString());
+  } catch (const InputError& e) {
+    return context_.fail(tr("Cannot save result"), qstr(e.what()), error);
+  } catch (const std::exception& e) {
+    return context_.fail(tr("Cannot save result"), dir + ": " + qstr(e.what()), error);
+  }
+  ws.mark_result_saved();
+  context_.set_last_dir_from(QFileInfo(dir).absolutePath());
+  context_.status(tr("Saved %1").arg(dir));
+  return true;
+}
+
+bool FileController::save_model(const QString& path, QString* error) {
+  Workspace& ws = context_.workspace();
+  if (!ws.loaded()) return context_.fail(tr("Nothing to save"), tr("Open a motion first."), error);
+  try {
+    BodyModel model = ws.document().file().model;
+    if (ws.model_unsaved()) model.name = QFileInfo(path).completeBaseName().toStdString();
+    {
+      std::ofstream out(path.toStdString());
+      out << body_model_to_json(model).dump(2) << '\n';
+      if (!out) throw std::runtime_error("cannot write the file");
+    }
+    load_body_model(path.toStdString());  // what was written must load
+  } catch (const InputError& e) {
+    return context_.fail(tr("Cannot save model"), qstr(e.what()), error);
+  } catch (const std::exception& e) {
+    return context_.fail(tr("Cannot save model"), path + ": " + qstr(e.what()), error);
+  }
+  ws.mark_model_saved();
+  context_.set_last_dir_from(path);
+  context_.status(tr("Saved %1").arg(path));
+  return true;
+}
+
+bool FileController::save_motion(const QString& path, QString* error) {
+  Workspace& ws = context_.workspace();
+  if (!ws.loaded()) return context_.fail(tr("Nothing to save"), tr("Open a motion first."), error);
+  const Document& d = ws.document();
+  try {
+    Motion motion = d.file().motion;
+    // A model chosen with "Open model" is named by its full path, so the file loads as shown.
+    if (!d.model_override().empty()) {
+      motion.model = d.model_override();
+    } else if (QFileInfo(qstr(motion.model)).isRelative() &&
+               qstr(motion.model).endsWith(".json", Qt::CaseInsensitive)) {
+      // A model file named relative to the original motion: keep pointing at the same file
+      // wherever the edited motion is saved.
+      motion.model = QFileInfo(QFileInfo(qstr(d.file().path)).absoluteDir(), qstr(motion.model))
+                         .absoluteFilePath()
+                         .toStdString();
+    }
+    const nlohmann::json json = motion_to_json(motion, d.file().model);
+    {
+      std::ofstream out(path.toStdString());
+      out << json.dump(2) << '\n';
+      if (!out) throw std::runtime_error("cannot write the file");
+    }
+    // Read back through the library: what was written must load as this motion.
+    load_motion_file(path.toStdString());
+  } catch (const InputError& e) {
+    return context_.fail(tr("Cannot save motion"), qstr(e.what()), error);
+  } catch (const std::exception& e) {
+    return context_.fail(tr("Cannot save motion"), path + ": " + qstr(e.what()), error);
+  }
+  ws.mark_motion_saved();
+  context_.set_last_dir_from(path);
+  context_.status(tr("Saved %1").arg(path));
+  return true;
+}
+
+bool FileController::export_view_png(const QString& path, QString* error) {
+  view_.scene()->render_refined();
+  const QImage image = view_.scene()->picture();
+  if (image.isNull() || !image.save(path, "PNG"))
+    return context_.fail(tr("Cannot export"), tr("%1: cannot write the image").arg(path), error);
+  context_.set_last_dir_from(path);
+  return true;
+}
+
+bool FileController::export_window_png(const QString& path, QString* error) {
+  view_.scene()->render_refined();
+  const QImage image = context_.window()->grab().toImage();
+  if (image.isNull() || !image.save(path, "PNG"))
+    return context_.fail(tr("Cannot export"), tr("%1: cannot write the image").arg(path), error);
+  context_.set_last_dir_from(path);
+  return true;
+}
+
+void FileController::add_recent(const QString& path) {
+  recent_.removeAll(path);
+  recent_.prepend(path);
+  while (recent_.size() > kMaxRecent)
+    recent_.removeLast();
+  rebuild_recent_menu();
+}
+
+void FileController::rebuild_recent_menu() {
+  if (!recent_menu_) return;
+  recent_menu_->clear();
+  for (const QString& path : recent_) {
+    recent_menu_->addAction(QFileInfo(path).fileName(), this, [this, path] { open_motion(path); })
+        ->setToolTip(path);
+  }
+  recent_menu_->setEnabled(!recent_.isEmpty());
+  if (!recent_.isEmpty()) {
+    recent_menu_->addSeparator();
+    recent_menu_->addAction(tr("Clear list"), this, [this] {
+      recent_.clear();
+      rebuild_recent_menu();
+    });
+  }
+}
+
+void FileController::drag_enter(QDragEnterEvent* event) {
+  if (!event->mimeData()->hasUrls()) return;
+  for (const QUrl& url : event->mimeData()->urls()) {
+    const QString path = url.isLocalFile() ? url.toLocalFile() : QString();
+    if (path.endsWith(".json", Qt::CaseInsensitive) || is_capture_path(path.toStdString())) {
+      event->acceptProposedAction();
+      return;
+    }
+  }
+}
+
+void FileController::drop(QDropEvent* event) {
+  // A dropped model applies first, so "model + motion" dropped together opens the motion with it.
+  QStringList motions;
+  for (const QUrl& url : event->mimeData()->urls()) {
+    if (!url.isLocalFile()) continue;
+    const QString path = url.toLocalFile();
+    if (is_model_file(path))
+      open_model(path);
+    else
+      motions.append(path);
+  }
+  if (!motions.isEmpty()) open_motion(motions.first());
+  event->acceptProposedAction();
+}
+
+void FileController::load_settings(const QSettings& s) {
+  context_.set_last_dir(s.value("files/last_dir", QDir::homePath()).toString());
+  recent_ = s.value("files/recent").toStringList();
+  rebuild_recent_menu();
+}
+
+void FileController::save_settings(QSettings& s) const {
+  s.setValue("files/last_dir", context_.last_dir());
+  s.setValue("files/recent", recent_);
+}
+
+}  // namespace saltus::gui

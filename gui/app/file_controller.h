@@ -1,0 +1,103 @@
+#pragma once
+/// @file
+/// Files: the File menu (open a motion or a model, recent files, drag and drop, save the result
+/// folder, the edited motion or model, export pictures, plots and animations), the window title
+/// and the status line. Nothing unsaved is dropped silently: opening another motion or model and
+/// closing the window ask first (Save / Discard / Cancel) when the motion or the masses were
+/// edited or a run was not saved.
+
+#include <QObject>
+#include <QStringList>
+#include <functional>
+
+#include "app/app_context.h"
+
+class QAction;
+class QDragEnterEvent;
+class QDropEvent;
+class QLabel;
+class QMenu;
+class QToolBar;
+
+namespace saltus::gui {
+
+class PlotsPanel;
+class SceneWidget;
+class ViewController;
+class PlaybackController;
+
+class FileController : public QObject, public RemembersSettings {
+  Q_OBJECT
+
+ public:
+  FileController(AppContext& context, ViewController& view, PlaybackController& playback,
+                 PlotsPanel& plots, QObject* parent = nullptr);
+
+  /// The File menu; `more_exports` go after the picture exports (e.g. Export animation).
+  void fill_menu(QMenu* file, const std::vector<QAction*>& more_exports = {});
+  void fill_toolbar(QToolBar* bar);
+
+  // Each returns false on failure; with `error` null the message goes to a dialog (or stderr
+  // without a user), else it is stored there.
+  /// Opens a motion file (with the model it names, or the model opened before), or imports a
+  /// motion capture (.bvh) onto that model. Asks first when unsaved work would be dropped;
+  /// false if the user keeps it.
+  bool open_motion(const QString& path, QString* error = nullptr);
+  /// Uses this model file for the open motion (reloading it) and for motions opened later.
+  bool open_model(const QString& path, QString* error = nullptr);
+  /// Writes the CLI's output folder: `saltus optimize`'s for the run shown, else `evaluate`'s.
+  bool save_result(const QString& dir, QString* error = nullptr);
+  /// Writes the (edited) motion as a motion file and reads it back through the library.
+  bool save_motion(const QString& path, QString* error = nullptr);
+  /// Writes the model in use as a model file (named after the file) and reads it back.
+  bool save_model(const QString& path, QString* error = nullptr);
+  bool export_view_png(const QString& path, QString* error = nullptr);
+  bool export_window_png(const QString& path, QString* error = nullptr);
+
+  /// What the user answers when unsaved work would be dropped.
+  enum class DiscardAnswer { kSave, kDiscard, kCancel };
+  using DiscardPrompt = std::function<DiscardAnswer(const QString& question)>;
+  /// Replaces the question (tests); the default asks in a dialog, or discards without a user.
+  void set_discard_prompt(DiscardPrompt prompt) { prompt_ = std::move(prompt); }
+  /// Asks before `action` drops unsaved work; true to go on (saved, discarded or nothing to
+  /// lose), false to keep it.
+  bool confirm_discard(const QString& action);
+
+  void drag_enter(QDragEnterEvent* event);
+  void drop(QDropEvent* event);
+  const QStringList& recent() const { return recent_; }
+
+  void load_settings(const QSettings& settings) override;
+  void save_settings(QSettings& settings) const override;
+
+ signals:
+  void motion_opened();
+
+ private:
+  void on_workspace(WorkspaceChange change);
+  void add_recent(const QString& path);
+  void rebuild_recent_menu();
+  QString ask_open_file(const QString& title, const QString& filter);
+  /// The save dialogs behind Save (returns false if the user cancels one).
+  bool ask_save_motion();
+  bool ask_save_model();
+  bool ask_save_result();
+
+  AppContext& context_;
+  ViewController& view_;
+  PlaybackController& playback_;
+  PlotsPanel& plots_;
+  DiscardPrompt prompt_;
+  std::string model_override_;  ///< model file chosen with "Open model", else ""
+  QStringList recent_;
+  QLabel* status_line_ = nullptr;
+  QMenu* recent_menu_ = nullptr;
+  QAction* open_ = nullptr;
+  QAction* import_capture_ = nullptr;
+  QAction* save_result_ = nullptr;
+  QAction* save_motion_ = nullptr;
+  QAction* save_model_ = nullptr;
+  std::vector<QAction*> need_motion_;  ///< enabled only with a motion open
+};
+
+}  // namespace saltus::gui

@@ -1,0 +1,241 @@
+#include "core/figures.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <set>
+
+#include "core/plot_series.h"
+#include "core/run_list.h"
+#include "saltus/base/json_reader.h"
+#include "saltus/body/segment_names.h"
+#include "saltus/evaluation/evaluate.h"
+#include "saltus/evaluation/residual_measures.h"
+#include "saltus/formats/model_file.h"
+#include "saltus/formats/motion_file.h"
+
+namespace saltus::gui {
+
+namespace {
+
+std::string number(const char* format, double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, format, value);
+  return buffer;
+}
+
+/// Unique stems, so two folders with the same name write different figures.
+class StemSet {
+ public:
+  std::string make(const std::string& name) {
+    std::string stem = figure_stem(name);
+    for (int k = 2; used_.count(stem); ++k)
+      stem = figure_stem(name) + "-" + std::to_string(k);
+    used_.insert(stem);
+    return stem;
+  }
+
+ private:
+  std::set<std::string> used_;
+};
+
+std::string display_name(const ResultFolder& f) {
+  return f.motion.empty() ? f.name : f.motion;
+}
+
+/// The body weight of the folder's model.json, 0 when it cannot be read (the % axis is left
+/// out then).
+double folder_body_weight(const ResultFolder& f) {
+  try {
+    return body_weight(load_body_model((std::filesystem::path(f.path) / "model.json").string()));
+  } catch (const std::exception&) {
+    return 0.0;
+  }
+}
+
+/// The series of a motion file evaluated on the dense plot grid with the folder's model.
+WrenchSeries dense_series(const std::string& motion, const std::string& model, int knots) {
+  const MotionFile file = load_motion_file(motion, model);
+  EvaluateOptions options;
+  options.samples = plot_samples_for(file.motion.flight_time());
+  options.interpolation.knots_per_interval = knots;
+  return root_wrench_series(evaluate_motion(file.motion, file.model, options).samples);
+}
+
+/// Smooth curves where the motions can be evaluated again exactly: "after" from
+/// optimized.motion.json (its stored spline is the optimised motion), "before" from the motion
+/// file result.json names (as `saltus optimize` interpolated it, with its knots). Where a file
+/// cannot be read, the CSV's samples stay (true values, only coarser).
+void densify(ResultFolder& f) {
+  namespace fs = std::filesystem;
+  const fs::path folder(f.path);
+  const std::string model = (folder / "model.json").string();
+  try {
+    f.after = dense_series((folder / "optimized.motion.json").string(), model, 1);
+  } catch (const std::exception&) {
+  }
+  try {
+    const nlohmann::json result = read_json_file((folder / "result.json").string());
+    const fs::path motion = result.at("motion_file").get<std::string>();
+    // With the automatic resolution "before" is the paper's interpolation, knots at the
+    // keyframes (optimize_motion); otherwise the knots `saltus optimize` used.
+    const bool automatic = result.contains("resolution") && result["resolution"].is_object() &&
+                           result["resolution"].value("automatic", false);
+    const int knots = automatic ? 1 : result.value("knots_per_interval", 1);
+    // Relative to where `saltus optimize` ran: try the current folder, then the folder's parent.
+    for (const fs::path& candidate : {motion, folder.parent_path() / motion}) {
+      if (!fs::exists(candidate)) continue;
+      f.before = dense_series(candidate.string(), model, knots);
+      break;
+    }
+  } catch (const std::exception&) {
+  }
+}
+
+/// "M1" from "M1-straight-back-somersault" or "M1 straight back somersault".
+std::string first_word(const std::string& name) {
+  const std::size_t end = name.find_first_of(" -_");
+  return name.substr(0, end);
+}
+
+/// What a mass study scaled, as people say it ("left and right thighs × 1.5"), from the
+/// folder's result.json; the run's own label when that is not there.
+std::string scaled_label(const MassStudyFolder& f) {
+  try {
+    const nlohmann::json doc =
+        read_json_file((std::filesystem::path(f.path) / "result.json").string());
+    const std::vector<std::string> segments = doc.at("scaled_segments");
+    return "model with " + mass_scaling_label(segments, doc.at("factor").get<double>());
+  } catch (const std::exception&) {
+    return f.run_labels[1];
+  }
+}
+
+}  // namespace
+
+std::string figure_stem(const std::string& name) {
+  std::string out;
+  for (char c : name) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                    c == '-' || c == '_' || c == '.';
+    out += ok ? c : '_';
+  }
+  return out.empty() ? std::string("figure") : out;
+}
+
+ChartSpec titled_figure(ChartSpec chart, const std::string& motion, const std::string& settings) {
+  // One line for the motion and the settings when it fits a figure's width, else two.
+  constexpr std::size_t kLineLength = 90;
+  const bool one_line = motion.size() + settings.size() + 3 <= kLineLength;
+  chart.title += "\n" + motion;
+  if (!settings.empty()) chart.title += (one_line ? " · " : "\n") + settings;
+  return chart;
+}
+
+std::string folder_settings(const ResultFolder& f) {
+  std::string out = f.formulation.empty() ? std::string("optimised") : f.formulation;
+  out += " · " + status_text(f.status.empty() ? "solved" : f.status);
+  if (f.iterations > 0) out += " in " + std::to_string(f.iterations) + " iterations";
+  out += " · average root force " + number("%.3g", f.avg_root_force_before) + " → " +
+         number("%.3g", f.avg_root_force_after) + " N";
+  return out;
+}
+
+std::vector<Figure> result_figures(const std::vector<ResultFolder>& read) {
+  std::vector<ResultFolder> folders = read;
+  for (ResultFolder& f : folders)
+    densify(f);
+  std::vector<Figure> out;
+  StemSet stems;
+  for (const ResultFolder& f : folders) {
+    const std::string stem = stems.make(f.name);
+    const std::string settings = folder_settings(f);
+    RootChartStyle style;
+    style.log_scale = true;
+    style.body_weight_N = folder_body_weight(f);
+    for (bool moment : {false, true}) {
+      style.moment = moment;
+      style.components = false;
+      out.push_back({stem + (moment ? "_root_moment.png" : "_root_force.png"),
+                     titled_figure(root_chart(style, f.before, &f.after, f.keyframe_times_before,
+                                              f.keyframe_times_after),
+                                   display_name(f), settings)});
+      style.components = true;
+      out.push_back({stem + (moment ? "_root_moment_components.png" : "_root_force_components.png"),
+                     titled_figure(root_chart(style, f.before, &f.after, f.keyframe_times_before,
+                                              f.keyframe_times_after),
+                                   display_name(f), settings)});
+    }
+    ChartSpec times = keyframe_times_chart(f);
+    times.title = "Keyframe times before and after optimisation";
+    out.push_back({stem + "_keyframe_times.png", titled_figure(times, display_name(f), settings)});
+  }
+  if (!folders.empty())
+    out.push_back({"average_root_force.png", average_root_force_figure(folders)});
+  return out;
+}
+
+ChartSpec average_root_force_figure(const std::vector<ResultFolder>& folders) {
+  ChartSpec chart;
+  chart.title = "Average force acting on the root √(J/6), before and after optimisation";
+  chart.x_title = "result";
+  chart.y_title = "average root force (N)";
+  LineSpec before, after;
+  before.label = "before (interpolated)";
+  after.label = "after (optimised)";
+  before.kind = after.kind = LineKind::kBars;
+  before.colour = {0.70, 0.70, 0.72};
+  after.colour = optimised_keyframe_colour();
+  std::set<std::string> short_names;
+  for (const ResultFolder& f : folders)
+    short_names.insert(first_word(f.name));
+  const bool short_ok = short_names.size() == folders.size();
+  std::string listed;
+  for (std::size_t i = 0; i < folders.size(); ++i) {
+    before.x.push_back(static_cast<double>(i));
+    after.x.push_back(static_cast<double>(i));
+    before.y.push_back(folders[i].avg_root_force_before);
+    after.y.push_back(folders[i].avg_root_force_after);
+    const std::string label = short_ok ? first_word(folders[i].name) : std::to_string(i + 1);
+    chart.x_labels.push_back(label);
+    if (!short_ok) listed += (i ? ", " : "") + label + " " + folders[i].name;
+  }
+  if (!short_ok) chart.title += "\n" + listed;
+  chart.lines = {before, after};
+  return chart;
+}
+
+std::vector<FigureGrid> mass_study_load_figures(const std::vector<MassStudyFolder>& folders) {
+  std::vector<FigureGrid> out;
+  StemSet stems;
+  for (const MassStudyFolder& f : folders) {
+    FigureGrid grid;
+    grid.file_name = stems.make(f.name) + "_loads.png";
+    grid.columns = 2;
+    const std::array<std::string, 2> labels{"model as given", scaled_label(f)};
+    for (std::size_t i = 0; i < f.loads.segments.size(); ++i) {
+      const SegmentLoadSeries& s = f.loads.segments[i];
+      for (bool moment : {false, true}) {
+        ChartSpec chart;
+        chart.title = std::string(moment ? "Joint moment" : "Joint force") + " on the " +
+                      segment_label(s.segment) + (f.motion.empty() ? "" : "\n" + f.motion) +
+                      " (optimised)";
+        chart.x_title = "time (s)";
+        chart.y_title = moment ? "|M| (N·m)" : "|F| (N)";
+        for (std::size_t r = 0; r < 2; ++r) {
+          LineSpec line;
+          line.label = labels[r];
+          line.x = f.loads.time;
+          line.y = moment ? s.moment[r] : s.force[r];
+          line.colour = magnitude_curve_colour(moment);
+          style_compared_line(line, r == 1, true);
+          chart.lines.push_back(std::move(line));
+        }
+        grid.panels.push_back(std::move(chart));
+      }
+    }
+    out.push_back(std::move(grid));
+  }
+  return out;
+}
+
+}  // namespace saltus::gui

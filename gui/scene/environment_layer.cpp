@@ -1,0 +1,163 @@
+#include "scene/environment_layer.h"
+
+#include <vtkCubeSource.h>
+#include <vtkPlaneSource.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+
+#include <cmath>
+
+#include "scene/vtk_util.h"
+
+namespace saltus::gui::scene {
+
+namespace {
+
+// Trampoline dimensions (FIG apparatus norms): bed 4.28 m × 2.14 m, frame with pads 5.05 × 2.91.
+// The athlete travels along the bed's long side.
+constexpr double kBedLength = 4.28, kBedWidth = 2.14;
+constexpr double kFrameLength = 5.05, kFrameWidth = 2.91;
+// Platform (FINA diving facilities rules: at least 2 m wide and 6 m long for the 5 m level),
+// 0.25 m thick, its front edge this far ahead of the take-off CoM (the toes at the edge).
+constexpr double kPlatformWidth = 3.0, kPlatformLength = 6.0, kPlatformThickness = 0.25;
+constexpr double kPlatformEdgeAhead = 0.15;
+constexpr double kPillarSide = 1.2;  ///< m, the square column under the platform's back
+constexpr double kWaterSize = 24.0;  ///< m, side of the water (or floor) drawn
+constexpr int kGridCells = 24;       ///< 1 m squares on the floor or the water
+
+const Rgb kFrameColour{0.16, 0.33, 0.72};
+const Rgb kBedColour{0.08, 0.08, 0.10};
+const Rgb kConcreteColour{0.70, 0.70, 0.68};
+const Rgb kPlatformTopColour{0.62, 0.50, 0.40};  ///< the non-slip surface
+const Rgb kWaterColour{0.12, 0.42, 0.64};
+const Rgb kGridColour{0.55, 0.58, 0.65};
+
+/// World from the apparatus frame: origin at the take-off point, z along the travel direction,
+/// y up.
+Eigen::Affine3d world_from_apparatus(const Apparatus& a) {
+  const double heading = std::atan2(a.direction.x(), a.direction.z());
+  Eigen::Affine3d t = Eigen::Affine3d::Identity();
+  t.translate(a.takeoff_point);
+  t.rotate(Eigen::AngleAxisd(heading, Eigen::Vector3d::UnitY()));
+  return t;
+}
+
+vtkSmartPointer<vtkActor> box(const Eigen::Vector3d& centre, const Eigen::Vector3d& size,
+                              const Rgb& colour, const Eigen::Affine3d& pose) {
+  vtkNew<vtkCubeSource> cube;
+  cube->SetCenter(centre.x(), centre.y(), centre.z());
+  cube->SetXLength(size.x());
+  cube->SetYLength(size.y());
+  cube->SetZLength(size.z());
+  auto actor = actor_for(mapper_for(cube->GetOutputPort()));
+  set_colour(actor, colour);
+  set_matrix(actor, pose);
+  // Some light of its own: the camera's light grazes a platform seen from the side, which would
+  // otherwise turn it into a black band.
+  actor->GetProperty()->SetAmbient(0.35);
+  actor->GetProperty()->SetDiffuse(0.7);
+  actor->PickableOff();
+  return actor;
+}
+
+vtkSmartPointer<vtkActor> plane(const Eigen::Vector3d& centre, double size, int cells,
+                                const Rgb& colour, bool wireframe) {
+  vtkNew<vtkPlaneSource> source;
+  const double h = 0.5 * size;
+  source->SetOrigin(centre.x() - h, centre.y(), centre.z() - h);
+  source->SetPoint1(centre.x() + h, centre.y(), centre.z() - h);
+  source->SetPoint2(centre.x() - h, centre.y(), centre.z() + h);
+  source->SetResolution(cells, cells);
+  auto actor = actor_for(mapper_for(source->GetOutputPort()));
+  set_colour(actor, colour);
+  if (wireframe) {
+    actor->GetProperty()->SetRepresentationToWireframe();
+    actor->GetProperty()->SetLighting(false);
+    actor->GetProperty()->SetOpacity(0.55);
+  }
+  actor->PickableOff();
+  return actor;
+}
+
+}  // namespace
+
+EnvironmentLayer::EnvironmentLayer(vtkRenderer* renderer) : renderer_(renderer) {}
+
+void EnvironmentLayer::clear() {
+  for (auto* list : {&apparatus_, &grid_})
+    for (auto& a : *list) {
+      renderer_->RemoveActor(a);
+      for (vtkRenderer* r : also_in_)
+        r->RemoveActor(a);
+    }
+  apparatus_.clear();
+  grid_.clear();
+}
+
+void EnvironmentLayer::show_in(vtkRenderer* other) {
+  also_in_.push_back(other);
+  for (auto* list : {&apparatus_, &grid_})
+    for (auto& a : *list)
+      other->AddActor(a);
+}
+
+void EnvironmentLayer::add(const vtkSmartPointer<vtkActor>& actor, bool apparatus) {
+  (apparatus ? apparatus_ : grid_).push_back(actor);
+  renderer_->AddActor(actor);
+  for (vtkRenderer* r : also_in_)
+    r->AddActor(actor);
+}
+
+void EnvironmentLayer::build(const Apparatus& a, const Eigen::AlignedBox3d& flight) {
+  clear();
+  const Eigen::Affine3d pose = world_from_apparatus(a);
+  frame_ = flight;
+  if (a.kind == ApparatusKind::kTrampoline) {
+    // Frame with pads (blue) and the bed (dark webbing), the bed's top where the feet leave.
+    add(box({0, -0.045, 0}, {kFrameWidth, 0.06, kFrameLength}, kFrameColour, pose), true);
+    add(box({0, -0.01, 0}, {kBedWidth, 0.02, kBedLength}, kBedColour, pose), true);
+    add(plane(a.takeoff_point - Eigen::Vector3d(0, 0.08, 0), kWaterSize / 2, kGridCells / 2,
+              kGridColour, true),
+        false);
+    for (double x : {-kFrameWidth / 2, kFrameWidth / 2})
+      for (double z : {-kFrameLength / 2, kFrameLength / 2})
+        frame_.extend(pose * Eigen::Vector3d(x, 0, z));
+  } else {
+    // The slab: its top where the feet leave, its front edge just ahead of the take-off point,
+    // reaching back away from the direction of travel; a column under its back down to the
+    // water; the water where the flight ends.
+    const double drop = a.takeoff_height - a.landing_height;
+    const double back = kPlatformEdgeAhead - kPlatformLength;
+    add(box({0, -0.5 * kPlatformThickness, 0.5 * (kPlatformEdgeAhead + back)},
+            {kPlatformWidth, kPlatformThickness, kPlatformLength}, kConcreteColour, pose),
+        true);
+    add(box({0, 0.005, 0.5 * (kPlatformEdgeAhead + back)},
+            {kPlatformWidth - 0.1, 0.01, kPlatformLength - 0.1}, kPlatformTopColour, pose),
+        true);
+    add(box({0, -0.5 * drop, back + kPillarSide}, {kPillarSide, drop, kPillarSide}, kConcreteColour,
+            pose),
+        true);
+    const Eigen::Vector3d water_centre(a.takeoff_point.x(), a.landing_height, a.takeoff_point.z());
+    auto water = plane(water_centre, kWaterSize, 1, kWaterColour, false);
+    water->GetProperty()->SetAmbient(0.35);
+    water->GetProperty()->SetSpecular(0.4);
+    water->GetProperty()->SetSpecularPower(40.0);
+    add(water, true);
+    add(plane(water_centre + Eigen::Vector3d(0, 0.003, 0), kWaterSize, kGridCells,
+              lighter(kWaterColour, 0.35), true),
+        false);
+    for (double x : {-kPlatformWidth / 2, kPlatformWidth / 2})
+      for (double z : {back * 0.4, kPlatformEdgeAhead})
+        frame_.extend(pose * Eigen::Vector3d(x, 0, z));
+    frame_.extend(Eigen::Vector3d(flight.center().x(), a.landing_height, flight.center().z()));
+  }
+}
+
+void EnvironmentLayer::set_visible(bool apparatus, bool grid) {
+  for (auto& actor : apparatus_)
+    actor->SetVisibility(apparatus);
+  for (auto& actor : grid_)
+    actor->SetVisibility(grid);
+}
+
+}  // namespace saltus::gui::scene

@@ -1,0 +1,43 @@
+#pragma once
+/// @file
+/// Physically exact flights for testing the optimiser on motions nobody tuned: a seeded
+/// generator of random skills (tucked, piked, straight, twisting; 0-4 somersaults forwards or
+/// backwards; trampoline or platform take-offs; flight times 0.4-2.5 s), each flown by the
+/// free-flight simulator and keyframed at times a user would type. The true root wrench of every
+/// one is zero, so whatever residual Saltus reports after optimisation is its own error.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "saltus/body/body_model.h"
+#include "saltus/motion/motion.h"
+
+namespace saltus {
+
+enum class FlightShape { kTucked, kPiked, kStraight };
+
+/// What was drawn for one flight, and what the flight then did.
+struct ExactFlight {
+  std::uint64_t seed = 0;
+  FlightShape shape = FlightShape::kStraight;
+  bool platform = false;            ///< platform take-off (lands lower), else trampoline
+  double drop_m = 0.0;              ///< take-off CoM height above the landing CoM height
+  double somersaults = 0.0;         ///< asked for, turns (negative: backwards)
+  double twists = 0.0;              ///< asked for, turns about the body's long axis
+  double root_turn_deg = 0.0;       ///< the root's accumulated turn over the flight, as flown
+  Motion motion;                    ///< keyframes read off the flight, its exact take-off state
+  std::string description() const;  ///< "seed 7: tucked, 2.0 somersaults backwards, ..."
+};
+
+/// The flight drawn from `seed` for `model` (whose joints must include the bundled model's:
+/// thoracic, shoulders, elbows, hips, knees). Deterministic: the same seed, the same flight, on
+/// any machine (its own random numbers, not the standard library's distributions).
+ExactFlight make_exact_flight(const BodyModel& model, std::uint64_t seed);
+
+/// `motion` with each interior keyframe time moved by up to ±max_shift (s), drawn from `seed`,
+/// each move limited to 40 % of the gap towards its neighbours so the order stays; first and last
+/// stay. Times keep two decimals, as typed.
+Motion disturb_interior_times(const Motion& motion, double max_shift, std::uint64_t seed);
+
+}  // namespace saltus

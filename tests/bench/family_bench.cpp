@@ -1,0 +1,98 @@
+// The family sweep (README "Performance"): default `optimize_motion` on physically exact flights
+// (studies/exact_flights.h) and on every bundled motion. Run by name, one run each:
+//   build/release/tests/saltus_benchmarks --benchmark_filter='Family|Bundled'
+// The smoke run in ctest leaves these out.
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <vector>
+
+#include "saltus/formats/model_file.h"
+#include "saltus/formats/motion_file.h"
+#include "saltus/optim/optimize.h"
+#include "saltus/studies/exact_flights.h"
+
+namespace saltus {
+namespace {
+
+double percentile(std::vector<double> values, double p) {
+  std::sort(values.begin(), values.end());
+  const double at = p * (values.size() - 1);
+  const std::size_t low = static_cast<std::size_t>(std::floor(at));
+  const std::size_t high = std::min(values.size() - 1, low + 1);
+  return values[low] + (at - low) * (values[high] - values[low]);
+}
+
+/// Seeds 1..N (N = the argument) as generated (Arg 0 of the shift) or with their interior times
+/// moved by up to ±0.1 s. Counters: cases, solved, the share at or below 0.5 N, the median and
+/// worst true residual (N), the median and 95th-percentile wall time (s) and, with moved times,
+/// how much of the total timing error the optimisation removed (%).
+void BM_FamilyOfExactFlights(benchmark::State& bench) {
+  const int count = static_cast<int>(bench.range(0));
+  const bool moved = bench.range(1) != 0;
+  const BodyModel model =
+      load_body_model(std::string(SALTUS_RESOURCES_DIR) + "/models/zatsiorsky-66kg.json");
+  for (auto _ : bench) {
+    std::vector<double> forces, seconds;
+    int solved = 0, near_zero = 0;
+    double error_before = 0.0, error_after = 0.0;
+    for (int seed = 1; seed <= count; ++seed) {
+      const ExactFlight f = make_exact_flight(model, static_cast<std::uint64_t>(seed));
+      const Motion motion =
+          moved ? disturb_interior_times(f.motion, 0.1, static_cast<std::uint64_t>(seed))
+                : f.motion;
+      const auto start = std::chrono::steady_clock::now();
+      const OptimizationResult r = optimize_motion(motion, model, {});
+      seconds.push_back(
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      const double force = r.after.metrics.avg_root_force;
+      forces.push_back(force);
+      solved += r.solve.solved;
+      near_zero += r.solve.solved && force <= 0.5;
+      for (std::size_t i = 0; i < motion.keyframes.size(); ++i) {
+        error_before += std::abs(motion.keyframes[i].time - f.motion.keyframes[i].time);
+        error_after += std::abs(r.after.keyframe_times[i] - f.motion.keyframes[i].time);
+      }
+    }
+    bench.counters["cases"] = count;
+    bench.counters["solved"] = solved;
+    bench.counters["at_most_0.5N_pct"] = 100.0 * near_zero / count;
+    bench.counters["median_N"] = percentile(forces, 0.5);
+    bench.counters["worst_N"] = *std::max_element(forces.begin(), forces.end());
+    bench.counters["median_s"] = percentile(seconds, 0.5);
+    bench.counters["p95_s"] = percentile(seconds, 0.95);
+    if (moved) bench.counters["timing_error_cut_pct"] = 100.0 * (1.0 - error_after / error_before);
+  }
+}
+BENCHMARK(BM_FamilyOfExactFlights)
+    ->Args({100, 0})
+    ->Args({50, 1})
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
+
+/// Each bundled motion, default options: true residual before and after (N), wall time (s).
+void BM_BundledMotion(benchmark::State& bench) {
+  std::vector<std::filesystem::path> paths;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::string(SALTUS_EXAMPLES_DIR) + "/motions"))
+    paths.push_back(entry.path());
+  std::sort(paths.begin(), paths.end());
+  const std::filesystem::path path = paths.at(static_cast<std::size_t>(bench.range(0)));
+  bench.SetLabel(path.filename().string());
+  const MotionFile file = load_motion_file(path.string());
+  OptimizationResult r;
+  for (auto _ : bench)
+    r = optimize_motion(file.motion, file.model, {});
+  bench.counters["before_N"] = r.before.metrics.avg_root_force;
+  bench.counters["after_N"] = r.after.metrics.avg_root_force;
+  bench.counters["iterations"] = r.solve.iterations;
+  bench.counters["solved"] = r.solve.solved;
+}
+BENCHMARK(BM_BundledMotion)->DenseRange(0, 7)->Iterations(3)->Unit(benchmark::kSecond);
+
+}  // namespace
+}  // namespace saltus

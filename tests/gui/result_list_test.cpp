@@ -1,0 +1,109 @@
+// The result list in the real window: every run is kept; a solved run stays shown when a later
+// run is cancelled or stops worse; the user can pick any run with a result; Save writes the run
+// shown. (The case: a cancelled run at 90 N replaced a solved 13.1 N one.)
+
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QListWidget>
+#include <QProgressBar>
+#include <QTest>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "app/file_controller.h"
+#include "app/main_window.h"
+#include "app/optimize_panel.h"
+#include "app/run_controller.h"
+#include "gui/support/open_motion_fixture.h"
+#include "support/cli_runner.h"
+
+namespace saltus::gui {
+namespace {
+
+class ResultListTest : public test::OpenMotionTest {
+ protected:
+  /// Runs to the end (or cancels after `cancel_after_ms`) and returns the run's index.
+  int run(int max_iterations, int cancel_after_ms = -1) {
+    OptimizeSettings s;
+    s.max_iterations = max_iterations;
+    s.samples = 31;
+    QString error;
+    EXPECT_TRUE(window_->runs().start(s, &error)) << error.toStdString();
+    if (cancel_after_ms >= 0) {
+      QElapsedTimer clock;
+      clock.start();
+      while (clock.elapsed() < cancel_after_ms && window_->runs().running())
+        QApplication::processEvents(QEventLoop::AllEvents, 10);
+      window_->runs().cancel();
+    }
+    EXPECT_TRUE(window_->runs().wait(300000));
+    return window_->workspace().runs().size() - 1;
+  }
+  const RunList& runs() { return window_->workspace().runs(); }
+};
+
+TEST_F(ResultListTest, ASolvedRunStaysShownWhateverComesAfter) {
+  const int solved = run(300);
+  ASSERT_TRUE(runs().showable(solved));
+  ASSERT_TRUE(runs().at(solved).result->solve.solved) << runs().at(solved).result->solve.status;
+  EXPECT_EQ(window_->workspace().shown_run(), solved);
+  const double best = runs().at(solved).result->after.metrics.avg_root_force;
+
+  // A run that stops after one iteration: worse, not solved, listed but not shown.
+  const int early = run(1);
+  ASSERT_EQ(runs().size(), 2);
+  EXPECT_FALSE(runs().at(early).result->solve.solved);
+  EXPECT_EQ(window_->workspace().shown_run(), solved);
+  EXPECT_DOUBLE_EQ(window_->document().optimization().after.metrics.avg_root_force, best);
+  EXPECT_NE(window_->runs().panel()->message().indexOf("stays shown"), -1)
+      << window_->runs().panel()->message().toStdString();
+
+  // A cancelled run never replaces it either.
+  const int cancelled = run(300, 0);
+  ASSERT_EQ(runs().size(), 3);
+  EXPECT_EQ(window_->workspace().shown_run(), solved);
+  (void)cancelled;
+
+  // The list shows every run plus "interpolation only", the shown one selected.
+  QListWidget* list = window_->runs().panel()->run_list();
+  ASSERT_EQ(list->count(), 4);
+  EXPECT_EQ(list->currentRow(), solved + 1);
+  EXPECT_NE(list->item(solved + 1)->text().indexOf("solved"), -1);
+
+  // The user picks the early run: it is shown, and Save writes that one.
+  list->setCurrentRow(early + 1);
+  QApplication::processEvents();
+  EXPECT_EQ(window_->workspace().shown_run(), early);
+  EXPECT_EQ(window_->stage(), Stage::kAfter);
+  saltus::test::TempDir dir;
+  QString error;
+  ASSERT_TRUE(window_->files().save_result(QString::fromStdString(dir / "early"), &error))
+      << error.toStdString();
+  const nlohmann::json result = nlohmann::json::parse(std::ifstream(dir / "early/result.json"));
+  EXPECT_EQ(result["iterations"].get<int>(), runs().at(early).result->solve.iterations);
+  EXPECT_NE(result["status"].get<std::string>(), "solved");
+  // Picking "interpolated keyframes only" shows no run.
+  list->setCurrentRow(0);
+  QApplication::processEvents();
+  EXPECT_FALSE(window_->workspace().shown_run());
+  EXPECT_EQ(window_->stage(), Stage::kBefore);
+}
+
+TEST_F(ResultListTest, TheProgressShowsIterationsNotAShareOfTheLimit) {
+  OptimizeSettings s;
+  s.max_iterations = 300;
+  s.samples = 31;
+  ASSERT_TRUE(window_->runs().start(s));
+  auto* bar = window_->runs().panel()->findChild<QProgressBar*>();
+  ASSERT_NE(bar, nullptr);
+  // Busy while running: a run that solves at 33 of 300 never looks 11 % done.
+  EXPECT_EQ(bar->maximum(), 0);
+  ASSERT_TRUE(window_->runs().wait(300000));
+  EXPECT_EQ(bar->value(), bar->maximum());
+}
+
+}  // namespace
+}  // namespace saltus::gui

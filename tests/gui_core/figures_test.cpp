@@ -1,0 +1,112 @@
+// Exported figures: titled with the motion and the settings, resultants on a log axis with the
+// "after" curve, distinct short bar labels, human names in the mass study's panels.
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "core/figures.h"
+
+namespace saltus::gui {
+namespace {
+
+ResultFolder folder(const std::string& name, double before, double after) {
+  ResultFolder f;
+  f.path = "/nonexistent/" + name;
+  f.name = name;
+  f.motion = "M1 straight back somersault";
+  f.status = "solved";
+  f.formulation = "relaxed";
+  f.iterations = 25;
+  f.avg_root_force_before = before;
+  f.avg_root_force_after = after;
+  for (WrenchSeries* w : {&f.before, &f.after}) {
+    w->time = {0.0, 1.0, 2.0};
+    for (auto& c : w->component)
+      c = {1.0, -2.0, 3.0};
+    w->force_magnitude = {1.7, 3.5, 5.2};
+    w->moment_magnitude = {1.7, 3.5, 5.2};
+  }
+  f.keyframe_times_before = {0.0, 1.0, 2.0};
+  f.keyframe_times_after = {0.0, 1.1, 2.0};
+  return f;
+}
+
+TEST(Figures, EveryFigureIsTitledWithTheMotionAndTheSettings) {
+  const std::vector<Figure> figures =
+      result_figures({folder("M1-opt", 10.6, 0.5), folder("M2-opt", 20.0, 1.0)});
+  std::set<std::string> names;
+  for (const Figure& f : figures) {
+    names.insert(f.file_name);
+    if (f.file_name == "average_root_force.png") continue;
+    EXPECT_NE(f.chart.title.find("M1 straight back somersault"), std::string::npos) << f.file_name;
+    EXPECT_NE(f.chart.title.find("relaxed"), std::string::npos) << f.file_name;
+    EXPECT_NE(f.chart.title.find("solved in 25 iterations"), std::string::npos) << f.file_name;
+  }
+  for (const char* expected :
+       {"M1-opt_root_force.png", "M1-opt_root_moment.png", "M1-opt_root_force_components.png",
+        "M1-opt_keyframe_times.png", "M2-opt_root_moment_components.png", "average_root_force.png"})
+    EXPECT_TRUE(names.count(expected)) << expected;
+  // The paper's Fig. 4 plots |F|; here before and after, on a log axis so "after" shows.
+  const Figure& force = figures[0];
+  ASSERT_EQ(force.file_name, "M1-opt_root_force.png");
+  ASSERT_EQ(force.chart.lines.size(), 2u);
+  EXPECT_TRUE(force.chart.log_y);
+  EXPECT_EQ(force.chart.lines[0].label, "|F| before");
+  EXPECT_EQ(force.chart.lines[1].label, "|F| after");
+  // Keyframe lines are named in the legend.
+  bool named = false;
+  for (const MarkerSpec& m : force.chart.markers)
+    named = named || m.label == "keyframes (optimised)";
+  EXPECT_TRUE(named);
+}
+
+TEST(Figures, AverageForceBarsHaveShortDistinctLabels) {
+  const ChartSpec chart = average_root_force_figure(
+      {folder("M1-straight-back-somersault", 10, 1), folder("M2-tucked-back-somersault", 20, 2)});
+  ASSERT_EQ(chart.x_labels.size(), 2u);
+  EXPECT_EQ(chart.x_labels[0], "M1");
+  EXPECT_EQ(chart.x_labels[1], "M2");
+  // Same first word twice: numbers, with the names listed in the title.
+  const ChartSpec numbered =
+      average_root_force_figure({folder("relaxed-a", 10, 1), folder("relaxed-b", 20, 2)});
+  EXPECT_EQ(numbered.x_labels[0], "1");
+  EXPECT_NE(numbered.title.find("1 relaxed-a"), std::string::npos) << numbered.title;
+}
+
+TEST(Figures, TitlesGoOnTwoLinesAndStemsAreFileSafe) {
+  ChartSpec c;
+  c.title = "Root force |F|";
+  EXPECT_EQ(titled_figure(c, "M1", "relaxed").title, "Root force |F|\nM1 · relaxed");
+  EXPECT_EQ(titled_figure(c, "M1", "").title, "Root force |F|\nM1");
+  // Too long for one line of a figure (the dive's name and its settings): a line each.
+  const std::string dive = "5 m platform dive: forward 1 1/2 somersaults with 1 1/2 twists";
+  const std::string settings =
+      "relaxed · solved in 54 iterations · average root force 118 → 11.2 N";
+  EXPECT_EQ(titled_figure(c, dive, settings).title, "Root force |F|\n" + dive + "\n" + settings);
+  EXPECT_EQ(figure_stem("M1 straight/back"), "M1_straight_back");
+}
+
+TEST(Figures, MassStudyPanelsNameTheSegmentsAsPeopleDo) {
+  MassStudyFolder f;
+  f.path = "/nonexistent";
+  f.name = "mass-M7";
+  f.motion = "M7";
+  f.run_labels = {"given", "thigh_l+thigh_r x1.5"};
+  f.loads.time = {0.0, 1.0};
+  SegmentLoadSeries s;
+  s.segment = "thigh_r";
+  s.force = {std::vector<double>{1, 2}, std::vector<double>{3, 4}};
+  s.moment = {std::vector<double>{5, 6}, std::vector<double>{7, 8}};
+  f.loads.segments = {s};
+  const std::vector<FigureGrid> grids = mass_study_load_figures({f});
+  ASSERT_EQ(grids.size(), 1u);
+  ASSERT_EQ(grids[0].panels.size(), 2u);
+  EXPECT_NE(grids[0].panels[0].title.find("right thigh"), std::string::npos)
+      << grids[0].panels[0].title;
+  EXPECT_EQ(grids[0].panels[0].title.find("thigh_r"), std::string::npos);
+  EXPECT_EQ(grids[0].panels[1].lines[1].y, (std::vector<double>{7, 8}));
+}
+
+}  // namespace
+}  // namespace saltus::gui

@@ -1,0 +1,835 @@
+// The Ipopt adapter (optim/ipopt_solver.h) on small NLPs written out by hand: problems with known
+// answers (Hock–Schittkowski 71, a bounded QP whose active set is worked out below) and problems
+// built so that each of the adapter's own policies has to act: the "acceptable" exit on objective
+// change, the restart from the best feasible iterate after a stall, returning the best feasible
+// rather than the last iterate, the iteration budget shared by restarts, cancellation, progress
+// reports, the quasi-Newton fallback, the derivative checker's report and the ignored ipopt.opt.
+// Expectations come from the problems' closed forms or from the path the NLP itself observed,
+// never from counts copied out of an earlier run.
+
+#include "saltus/optim/ipopt_solver.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "support/temp_path.h"
+
+namespace saltus {
+namespace {
+
+/// One iterate of a solve as the NLP saw it: step_taken() marks it, and its x is the last point
+/// the objective was evaluated at (Ipopt evaluates a trial point, accepts it, then reports it; the
+/// tests check this against the objective in the progress report of the same iteration).
+struct Iterate {
+  int run = 0;        ///< 0 for the first Ipopt run, 1 after the first restart, ...
+  int iteration = 0;  ///< within its run (StepTaken::iteration)
+  std::vector<double> x;
+  double objective = 0.0;
+  double violation = 0.0;  ///< largest constraint violation at x, computed here
+};
+
+/// A small NLP with dense derivatives. Subclasses state the problem; this class answers Ipopt's
+/// sparse-triplet questions (every entry a nonzero, the Hessian's lower triangle) and records
+/// what the solver did: every iterate and every Hessian request.
+class DenseNlp : public Nlp {
+ public:
+  DenseNlp(std::vector<double> x_lower, std::vector<double> x_upper, std::vector<double> g_lower,
+           std::vector<double> g_upper, std::vector<double> start)
+      : x_lower_(std::move(x_lower)),
+        x_upper_(std::move(x_upper)),
+        g_lower_(std::move(g_lower)),
+        g_upper_(std::move(g_upper)),
+        start_(std::move(start)) {}
+
+  /// The problem: f, ∇f, g, the m×n Jacobian of g (row-major) and the full n×n matrix
+  /// σ∇²f + Σ λ_i ∇²g_i (only its lower triangle is passed on).
+  virtual double f(const double* x) const = 0;
+  virtual void grad_f(const double* x, double* out) const = 0;
+  virtual void g(const double*, double*) const {}
+  virtual void jac_g(const double*, double*) const {}
+  virtual void hess_lagrangian(const double* x, double sigma, const double* lambda,
+                               Eigen::MatrixXd& out) const = 0;
+
+  int variable_count() const override { return static_cast<int>(start_.size()); }
+  int constraint_count() const override { return static_cast<int>(g_lower_.size()); }
+  void bounds(double* xl, double* xu, double* gl, double* gu) const override {
+    std::copy(x_lower_.begin(), x_lower_.end(), xl);
+    std::copy(x_upper_.begin(), x_upper_.end(), xu);
+    std::copy(g_lower_.begin(), g_lower_.end(), gl);
+    std::copy(g_upper_.begin(), g_upper_.end(), gu);
+  }
+  void initial_point(double* x) const override { std::copy(start_.begin(), start_.end(), x); }
+
+  double objective(const double* x) override {
+    last_x_.assign(x, x + variable_count());
+    last_objective_ = f(x);
+    return last_objective_;
+  }
+  void gradient(const double* x, double* out) override { grad_f(x, out); }
+  void constraints(const double* x, double* out) override { g(x, out); }
+
+  int jacobian_nonzeros() const override { return variable_count() * constraint_count(); }
+  void jacobian_structure(int* rows, int* columns) const override {
+    for (int i = 0, k = 0; i < constraint_count(); ++i)
+      for (int j = 0; j < variable_count(); ++j, ++k)
+        rows[k] = i, columns[k] = j;
+  }
+  void jacobian_values(const double* x, double* values) override { jac_g(x, values); }
+
+  bool has_hessian() const override { return exact_hessian; }
+  int hessian_nonzeros() const override { return variable_count() * (variable_count() + 1) / 2; }
+  void hessian_structure(int* rows, int* columns) const override {
+    ++hessian_structure_calls;
+    for (int i = 0, k = 0; i < variable_count(); ++i)
+      for (int j = 0; j <= i; ++j, ++k)
+        rows[k] = i, columns[k] = j;
+  }
+  void hessian_values(const double* x, double sigma, const double* lambda,
+                      double* values) override {
+    hessian_points.emplace_back(x, x + variable_count());
+    hessian_after_iterate.push_back(static_cast<int>(iterates.size()) - 1);
+    Eigen::MatrixXd h = Eigen::MatrixXd::Zero(variable_count(), variable_count());
+    hess_lagrangian(x, sigma, lambda, h);
+    for (int i = 0, k = 0; i < variable_count(); ++i)
+      for (int j = 0; j <= i; ++j, ++k)
+        values[k] = h(i, j);
+  }
+
+  void step_taken(const StepTaken& step) override {
+    if (step.iteration == 0) ++run_;
+    Iterate it;
+    it.run = run_;
+    it.iteration = step.iteration;
+    it.x = last_x_;
+    it.objective = last_objective_;
+    it.violation = violation(last_x_.data());
+    iterates.push_back(it);
+    steps.push_back(step);
+  }
+
+  /// Largest distance of g(x) from [g_lower, g_upper].
+  double violation(const double* x) const {
+    std::vector<double> values(g_lower_.size());
+    g(x, values.data());
+    double worst = 0.0;
+    for (std::size_t i = 0; i < values.size(); ++i)
+      worst = std::max({worst, g_lower_[i] - values[i], values[i] - g_upper_[i]});
+    return worst;
+  }
+
+  /// The iterates of one run, in order.
+  std::vector<Iterate> run(int index) const {
+    std::vector<Iterate> out;
+    std::copy_if(iterates.begin(), iterates.end(), std::back_inserter(out),
+                 [index](const Iterate& it) { return it.run == index; });
+    return out;
+  }
+
+  bool exact_hessian = true;
+  std::vector<Iterate> iterates;
+  std::vector<StepTaken> steps;
+  std::vector<std::vector<double>> hessian_points;
+  std::vector<int> hessian_after_iterate;  ///< per Hessian request: the latest iterate's index
+  mutable int hessian_structure_calls = 0;
+
+ private:
+  std::vector<double> x_lower_, x_upper_, g_lower_, g_upper_, start_;
+  std::vector<double> last_x_;
+  double last_objective_ = 0.0;
+  int run_ = -1;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Problems with known answers.
+
+/// Hock & Schittkowski (1981), problem 71: min x1·x4·(x1 + x2 + x3) + x3 subject to
+/// x1·x2·x3·x4 >= 25, x1² + x2² + x3² + x4² = 40, 1 <= x <= 5, from (1, 5, 5, 1). Published
+/// optimum x* = (1, 4.74299963, 3.82114998, 1.37940829), f* = 17.0140173.
+class Hs71 : public DenseNlp {
+ public:
+  Hs71() : DenseNlp({1, 1, 1, 1}, {5, 5, 5, 5}, {25, 40}, {kUnbounded, 40}, {1, 5, 5, 1}) {}
+  double f(const double* x) const override { return x[0] * x[3] * (x[0] + x[1] + x[2]) + x[2]; }
+  void grad_f(const double* x, double* out) const override {
+    out[0] = x[3] * (2 * x[0] + x[1] + x[2]);
+    out[1] = x[0] * x[3];
+    out[2] = x[0] * x[3] + 1;
+    out[3] = x[0] * (x[0] + x[1] + x[2]);
+  }
+  void g(const double* x, double* out) const override {
+    out[0] = x[0] * x[1] * x[2] * x[3];
+    out[1] = x[0] * x[0] + x[1] * x[1] + x[2] * x[2] + x[3] * x[3];
+  }
+  void jac_g(const double* x, double* out) const override {
+    out[0] = x[1] * x[2] * x[3];
+    out[1] = x[0] * x[2] * x[3];
+    out[2] = x[0] * x[1] * x[3];
+    out[3] = x[0] * x[1] * x[2];
+    for (int j = 0; j < 4; ++j)
+      out[4 + j] = 2 * x[j];
+  }
+  void hess_lagrangian(const double* x, double s, const double* l,
+                       Eigen::MatrixXd& h) const override {
+    h(0, 0) = s * 2 * x[3] + l[1] * 2;
+    h(1, 1) = h(2, 2) = h(3, 3) = l[1] * 2;
+    h(1, 0) = s * x[3] + l[0] * x[2] * x[3];
+    h(2, 0) = s * x[3] + l[0] * x[1] * x[3];
+    h(2, 1) = l[0] * x[0] * x[3];
+    h(3, 0) = s * (2 * x[0] + x[1] + x[2]) + l[0] * x[1] * x[2];
+    h(3, 1) = s * x[0] + l[0] * x[0] * x[2];
+    h(3, 2) = s * x[0] + l[0] * x[0] * x[1];
+  }
+  static constexpr double kOptimum[4] = {1.0, 4.74299963, 3.82114998, 1.37940829};
+  static constexpr double kObjective = 17.0140173;
+};
+
+/// min ½‖x − c‖², c = (2, −1, 0.8, 3), subject to x1 + x2 + x3 + x4 <= 2.5 and 0 <= x <= 1.
+/// KKT by hand: x_i = clamp(c_i − λ, 0, 1) with Σ x_i = 2.5 gives λ = 0.3 and
+/// x* = (1, 0, 0.5, 1): x1 and x4 at their upper bounds (multipliers 0.7 and 1.7), x2 at its
+/// lower bound (1.3), x3 free, the sum constraint active; f* = ½(1 + 1 + 0.09 + 4) = 3.045.
+class BoundedQp : public DenseNlp {
+ public:
+  explicit BoundedQp(std::vector<double> start = {0.5, 0.5, 0.5, 0.5})
+      : DenseNlp({0, 0, 0, 0}, {1, 1, 1, 1}, {-kUnbounded}, {2.5}, {std::move(start)}) {}
+  double f(const double* x) const override {
+    double sum = 0.0;
+    for (int i = 0; i < 4; ++i)
+      sum += 0.5 * (x[i] - kTarget[i]) * (x[i] - kTarget[i]);
+    return sum;
+  }
+  void grad_f(const double* x, double* out) const override {
+    for (int i = 0; i < 4; ++i)
+      out[i] = x[i] - kTarget[i];
+  }
+  void g(const double* x, double* out) const override { out[0] = x[0] + x[1] + x[2] + x[3]; }
+  void jac_g(const double*, double* out) const override { std::fill(out, out + 4, 1.0); }
+  void hess_lagrangian(const double*, double s, const double*, Eigen::MatrixXd& h) const override {
+    h.diagonal().setConstant(s);
+  }
+  static constexpr double kTarget[4] = {2.0, -1.0, 0.8, 3.0};
+  static constexpr double kOptimum[4] = {1.0, 0.0, 0.5, 1.0};
+  static constexpr double kObjective = 3.045;
+};
+
+/// Rosenbrock's valley, (1 − x1)² + 100·(x2 − x1²)², unconstrained, from (−1.2, 1): the minimum
+/// is f(1, 1) = 0 at the end of a long curved valley that gradient steps crawl along.
+class Rosenbrock : public DenseNlp {
+ public:
+  Rosenbrock()
+      : DenseNlp({-kUnbounded, -kUnbounded}, {kUnbounded, kUnbounded}, {}, {}, {-1.2, 1}) {}
+  double f(const double* x) const override {
+    return (1 - x[0]) * (1 - x[0]) + 100 * (x[1] - x[0] * x[0]) * (x[1] - x[0] * x[0]);
+  }
+  void grad_f(const double* x, double* out) const override {
+    out[0] = -2 * (1 - x[0]) - 400 * x[0] * (x[1] - x[0] * x[0]);
+    out[1] = 200 * (x[1] - x[0] * x[0]);
+  }
+  void hess_lagrangian(const double* x, double s, const double*,
+                       Eigen::MatrixXd& h) const override {
+    h(0, 0) = s * (2 - 400 * x[1] + 1200 * x[0] * x[0]);
+    h(1, 0) = s * -400 * x[0];
+    h(1, 1) = s * 200;
+  }
+};
+
+/// min x1² + x2² subject to x1 + x2 >= 3 and 0 <= x <= 1: no point meets the constraint.
+class Infeasible : public DenseNlp {
+ public:
+  Infeasible() : DenseNlp({0, 0}, {1, 1}, {3}, {kUnbounded}, {0.5, 0.5}) {}
+  double f(const double* x) const override { return x[0] * x[0] + x[1] * x[1]; }
+  void grad_f(const double* x, double* out) const override {
+    out[0] = 2 * x[0];
+    out[1] = 2 * x[1];
+  }
+  void g(const double* x, double* out) const override { out[0] = x[0] + x[1]; }
+  void jac_g(const double*, double* out) const override { out[0] = out[1] = 1.0; }
+  void hess_lagrangian(const double*, double s, const double*, Eigen::MatrixXd& h) const override {
+    h.diagonal().setConstant(2 * s);
+  }
+};
+
+// ---------------------------------------------------------------------------------------------
+// Problems that make the adapter's policies act.
+
+const std::vector<double> kFreeLower = {-kUnbounded, -kUnbounded};
+const std::vector<double> kFreeUpper = {kUnbounded, kUnbounded};
+
+/// 1 + (x1 − 1)⁴ + (x2 + 2)⁴, unconstrained, from (2, −1). Newton's method meets this degenerate
+/// minimum only linearly (each step keeps 2/3 of the error), so the objective settles long before
+/// the gradient reaches Ipopt's tolerance: the case the objective-change exit is for.
+class FlatMinimum : public DenseNlp {
+ public:
+  FlatMinimum() : DenseNlp(kFreeLower, kFreeUpper, {}, {}, {2.0, -1.0}) {}
+  double f(const double* x) const override {
+    return 1 + std::pow(x[0] - 1, 4) + std::pow(x[1] + 2, 4);
+  }
+  void grad_f(const double* x, double* out) const override {
+    out[0] = 4 * std::pow(x[0] - 1, 3);
+    out[1] = 4 * std::pow(x[1] + 2, 3);
+  }
+  void hess_lagrangian(const double* x, double s, const double*,
+                       Eigen::MatrixXd& h) const override {
+    h(0, 0) = s * 12 * std::pow(x[0] - 1, 2);
+    h(1, 1) = s * 12 * std::pow(x[1] + 2, 2);
+  }
+};
+
+/// min −(3·x1 + 4·x2) subject to ε·(x1² + x2² − 1) = 0 with ε = 1e-4: the optimum is (0.6, 0.8)
+/// on the unit circle, f* = −5. Started on the ray through the optimum at radius r0, every
+/// iterate stays on that ray (the objective's gradient and the constraint's normal both lie on
+/// it) and Newton's step on the constraint moves the radius as r ← (r² + 1) / 2r. From r0 = 0.1
+/// the first step overshoots to r = 5.05, where f = −25.25 and the small ε leaves a violation of
+/// only 2.45e-3, within the acceptable violation; every later iterate walks back to the circle
+/// and is worse. A wander in miniature, with a path known in closed form.
+class Overshoot : public DenseNlp {
+ public:
+  explicit Overshoot(double start_radius = 0.1)
+      : DenseNlp(kFreeLower, kFreeUpper, {0.0}, {0.0}, {0.6 * start_radius, 0.8 * start_radius}) {}
+  double f(const double* x) const override { return -(3 * x[0] + 4 * x[1]); }
+  void grad_f(const double*, double* out) const override {
+    out[0] = -3;
+    out[1] = -4;
+  }
+  void g(const double* x, double* out) const override {
+    out[0] = kScale * (x[0] * x[0] + x[1] * x[1] - 1);
+  }
+  void jac_g(const double* x, double* out) const override {
+    out[0] = kScale * 2 * x[0];
+    out[1] = kScale * 2 * x[1];
+  }
+  void hess_lagrangian(const double*, double, const double* l, Eigen::MatrixXd& h) const override {
+    h.diagonal().setConstant(l[0] * kScale * 2);
+  }
+  static constexpr double kScale = 1e-4;
+};
+
+double radius(const std::vector<double>& x) {
+  return std::hypot(x[0], x[1]);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Running a solve and reading its path.
+
+struct Solve {
+  SolveReport report;
+  std::vector<ProgressInfo> progress;
+};
+
+/// Solves `nlp`, collecting every progress report; `on_progress` may act on each (cancel).
+Solve solve(DenseNlp& nlp, const SolverOptions& options,
+            const std::function<void(const ProgressInfo&)>& on_progress = {},
+            const std::atomic<bool>* cancel = nullptr) {
+  Solve s;
+  s.report = solve_with_ipopt(
+      nlp, options,
+      [&](const ProgressInfo& p) {
+        s.progress.push_back(p);
+        if (on_progress) on_progress(p);
+      },
+      cancel);
+  // The NLP saw the same iterates the progress reports describe, one step_taken() each.
+  EXPECT_EQ(s.progress.size(), nlp.iterates.size());
+  for (std::size_t i = 0; i < std::min(s.progress.size(), nlp.iterates.size()); ++i)
+    EXPECT_EQ(s.progress[i].objective, nlp.iterates[i].objective) << "iterate " << i;
+  // The report's objective is the NLP's at the reported x, up to Ipopt's last step: it solves
+  // with every bound relaxed by 1e-8 (bound_relax_factor) and puts x back inside the original
+  // bounds after it evaluated the objective, a change of ~|∇f|·1e-8.
+  EXPECT_EQ(static_cast<int>(s.report.x.size()), nlp.variable_count());
+  if (!s.report.x.empty()) {
+    EXPECT_NEAR(nlp.f(s.report.x.data()), s.report.objective, 1e-7 * std::abs(s.report.objective));
+  }
+  return s;
+}
+
+/// Index of the lowest-objective iterate whose violation (Ipopt's, as reported in progress) is
+/// within `tolerance`; −1 if none.
+int best_feasible(const Solve& s, double tolerance) {
+  int best = -1;
+  for (std::size_t i = 0; i < s.progress.size(); ++i)
+    if (s.progress[i].constraint_violation <= tolerance &&
+        (best < 0 || s.progress[i].objective < s.progress[best].objective))
+      best = static_cast<int>(i);
+  return best;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Known answers.
+
+TEST(IpoptSolver, SolvesHockSchittkowski71ToItsPublishedOptimum) {
+  Hs71 nlp;
+  SolverOptions options;
+  options.objective_change_tolerance = 0;  // Ipopt's own optimality test decides
+  const Solve s = solve(nlp, options);
+  EXPECT_EQ(s.report.status, "solved");
+  EXPECT_EQ(s.report.ipopt_status, "optimal");
+  EXPECT_TRUE(s.report.solved);
+  EXPECT_EQ(s.report.restarts, 0);
+  for (int i = 0; i < 4; ++i)
+    EXPECT_NEAR(s.report.x[i], Hs71::kOptimum[i], 1e-6) << i;
+  EXPECT_NEAR(s.report.objective, Hs71::kObjective, 1e-6);
+  EXPECT_LT(nlp.violation(s.report.x.data()), 1e-6);
+  EXPECT_EQ(s.report.iterations, nlp.iterates.back().iteration);
+  EXPECT_GT(s.report.seconds, 0.0);
+}
+
+TEST(IpoptSolver, SolvesABoundedQpOnItsKnownActiveSet) {
+  BoundedQp nlp;
+  SolverOptions options;
+  options.objective_change_tolerance = 0;
+  const Solve s = solve(nlp, options);
+  ASSERT_TRUE(s.report.solved) << s.report.status;
+  for (int i = 0; i < 4; ++i)
+    EXPECT_NEAR(s.report.x[i], BoundedQp::kOptimum[i], 1e-6) << i;
+  EXPECT_NEAR(s.report.objective, BoundedQp::kObjective, 1e-6);
+  // The active set: both bounds and the sum constraint hold within the interior point's distance.
+  EXPECT_NEAR(s.report.x[0] + s.report.x[1] + s.report.x[2] + s.report.x[3], 2.5, 1e-6);
+  for (double v : s.report.x) {
+    EXPECT_GE(v, 0.0);
+    EXPECT_LE(v, 1.0);
+  }
+}
+
+/// Hock–Schittkowski 71 from a given point.
+class Hs71From : public Hs71 {
+ public:
+  explicit Hs71From(std::vector<double> start) : start_(std::move(start)) {}
+  void initial_point(double* x) const override { std::copy(start_.begin(), start_.end(), x); }
+
+ private:
+  std::vector<double> start_;
+};
+
+TEST(IpoptSolver, AWarmStartBeginsWhereItIsTold) {
+  // From 1e-5 or less inside active bounds (the QP's x1, x2, x4; HS71's x1 = 1): a cold start
+  // pushes x at least 1e-2 off its bounds before the first iterate (Ipopt's bound_push) and
+  // walks back; a warm start (SolverOptions::warm_start) begins at the given point. Both reach
+  // the known optimum. (Iteration counts are not compared: on these small problems they are
+  // within one of each other either way.)
+  for (bool warm : {false, true}) {
+    SCOPED_TRACE(warm ? "warm" : "cold");
+    SolverOptions options;
+    options.objective_change_tolerance = 0;
+    options.warm_start = warm;
+
+    const std::vector<double> near = {1 - 1e-5, 1e-5, 0.5, 1 - 1e-5};
+    BoundedQp qp(near);
+    const Solve q = solve(qp, options);
+    ASSERT_TRUE(q.report.solved) << q.report.status;
+    double moved = 0.0;
+    for (int i = 0; i < 4; ++i) {
+      EXPECT_NEAR(q.report.x[i], BoundedQp::kOptimum[i], 1e-6) << i;
+      moved = std::max(moved, std::abs(qp.iterates.front().x[i] - near[i]));
+    }
+    if (warm) {
+      EXPECT_LT(moved, 1e-5);
+    } else {
+      EXPECT_GT(moved, 5e-3);
+    }
+
+    Hs71From hs71({1 + 1e-6, 4.743, 3.821, 1.3794});
+    const Solve h = solve(hs71, options);
+    ASSERT_TRUE(h.report.solved) << h.report.status;
+    EXPECT_NEAR(h.report.objective, Hs71::kObjective, 1e-6);
+    if (warm) {
+      EXPECT_LT(hs71.iterates.front().x[0] - 1.0, 1e-5);
+    } else {
+      EXPECT_GT(hs71.iterates.front().x[0] - 1.0, 5e-3);
+    }
+  }
+}
+
+TEST(IpoptSolver, WithoutAHessianSolvesByQuasiNewtonAndNeverAsksForOne) {
+  Hs71 nlp;
+  nlp.exact_hessian = false;
+  SolverOptions options;
+  options.objective_change_tolerance = 0;
+  const Solve s = solve(nlp, options);
+  EXPECT_EQ(nlp.hessian_structure_calls, 0);
+  EXPECT_TRUE(nlp.hessian_points.empty());
+  ASSERT_TRUE(s.report.solved) << s.report.status;
+  for (int i = 0; i < 4; ++i)
+    EXPECT_NEAR(s.report.x[i], Hs71::kOptimum[i], 1e-5) << i;
+  EXPECT_NEAR(s.report.objective, Hs71::kObjective, 1e-6);
+}
+
+TEST(IpoptSolver, WithoutAHessianFollowsRosenbrocksValleyByQuasiNewton) {
+  // Curvature, even approximated from gradients, is what gets along the valley in tens of steps
+  // (Ipopt's exact-Hessian mode fed an empty Hessian diverges here).
+  Rosenbrock nlp;
+  nlp.exact_hessian = false;
+  SolverOptions options;
+  options.objective_change_tolerance = 0;
+  options.max_iterations = 100;
+  const Solve s = solve(nlp, options);
+  EXPECT_EQ(nlp.hessian_structure_calls, 0);
+  ASSERT_TRUE(s.report.solved) << s.report.status;
+  EXPECT_NEAR(s.report.x[0], 1.0, 1e-6);
+  EXPECT_NEAR(s.report.x[1], 1.0, 1e-6);
+}
+
+TEST(IpoptSolver, ReportsInfeasibleProblemsAsSuch) {
+  Infeasible nlp;
+  const Solve s = solve(nlp, SolverOptions{});
+  EXPECT_EQ(s.report.status, "infeasible");
+  EXPECT_FALSE(s.report.solved);
+  // On the way Ipopt entered its restoration phase, and the NLP was told (StepTaken).
+  EXPECT_TRUE(std::any_of(nlp.steps.begin(), nlp.steps.end(),
+                          [](const StepTaken& step) { return step.restoration; }));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Iterations, progress and the NLP's view of them.
+
+TEST(IpoptSolver, ReportsProgressOncePerIterationBeforeThatIterationsHessian) {
+  Hs71 nlp;
+  const Solve s = solve(nlp, SolverOptions{});
+  ASSERT_TRUE(s.report.solved);
+  ASSERT_EQ(static_cast<int>(s.progress.size()), s.report.iterations + 1);
+  for (std::size_t i = 0; i < s.progress.size(); ++i) {
+    EXPECT_EQ(s.progress[i].iteration, static_cast<int>(i));
+    EXPECT_EQ(nlp.steps[i].iteration, static_cast<int>(i));
+    EXPECT_FALSE(nlp.steps[i].restoration);
+    EXPECT_GE(nlp.steps[i].line_search_trials, i == 0 ? 0 : 1);
+    if (i > 0) {
+      EXPECT_GE(s.progress[i].elapsed_seconds, s.progress[i - 1].elapsed_seconds);
+    }
+  }
+  EXPECT_LE(s.progress.back().elapsed_seconds, s.report.seconds);
+  // Each Hessian is asked for at the iterate the NLP has just been told about (nlp.h: step_taken
+  // comes "before that iterate's Hessian"), one per iteration.
+  ASSERT_EQ(nlp.hessian_points.size(), s.progress.size() - 1);
+  for (std::size_t h = 0; h < nlp.hessian_points.size(); ++h) {
+    EXPECT_EQ(nlp.hessian_after_iterate[h], static_cast<int>(h));
+    EXPECT_EQ(nlp.hessian_points[h], nlp.iterates[h].x) << "Hessian " << h;
+  }
+}
+
+TEST(IpoptSolver, ProgressGivesTheConstraintViolationOfTheIterate) {
+  // With one equality constraint Ipopt's primal infeasibility is |g(x)|, computed here from x.
+  Overshoot nlp;
+  SolverOptions options;
+  options.stall_iterations = 0;
+  const Solve s = solve(nlp, options);
+  ASSERT_TRUE(s.report.solved);
+  for (std::size_t i = 0; i < s.progress.size(); ++i)
+    EXPECT_NEAR(s.progress[i].constraint_violation, nlp.iterates[i].violation,
+                1e-12 + 1e-9 * nlp.iterates[i].violation)
+        << i;
+}
+
+TEST(IpoptSolver, StopsAtTheIterationLimit) {
+  for (int limit : {0, 3}) {
+    Hs71 nlp;
+    SolverOptions options;
+    options.max_iterations = limit;
+    const Solve s = solve(nlp, options);
+    EXPECT_EQ(s.report.status, "max_iterations") << limit;
+    EXPECT_EQ(s.report.ipopt_status, "maximum iterations exceeded");
+    EXPECT_FALSE(s.report.solved);
+    EXPECT_EQ(s.report.iterations, limit);
+    EXPECT_EQ(nlp.iterates.back().iteration, limit);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The acceptable exit (SolverOptions::objective_change_tolerance).
+
+/// The first iteration at which the last `count` relative objective changes,
+/// |f_k − f_(k−1)| / max(1, |f_k|), were all within `tolerance`; −1 if none.
+int first_settled_iteration(const std::vector<Iterate>& iterates, double tolerance, int count) {
+  int run_length = 0;
+  for (std::size_t k = 1; k < iterates.size(); ++k) {
+    const double f = iterates[k].objective;
+    const double change = std::abs(f - iterates[k - 1].objective) / std::max(1.0, std::abs(f));
+    run_length = change <= tolerance ? run_length + 1 : 0;
+    if (run_length >= count) return iterates[k].iteration;
+  }
+  return -1;
+}
+
+TEST(IpoptSolver, AcceptsOnceTheObjectiveHasSettledForTheGivenIterations) {
+  FlatMinimum optimal_nlp;
+  SolverOptions optimal;
+  optimal.objective_change_tolerance = 0;
+  const Solve reference = solve(optimal_nlp, optimal);
+  ASSERT_EQ(reference.report.ipopt_status, "optimal");
+
+  for (double tolerance : {1e-3, 1e-5}) {
+    for (int count : {3, 5}) {
+      FlatMinimum nlp;
+      SolverOptions options;
+      options.objective_change_tolerance = tolerance;
+      options.acceptable_iterations = count;
+      const Solve s = solve(nlp, options);
+      SCOPED_TRACE("tolerance " + std::to_string(tolerance) + ", " + std::to_string(count));
+      EXPECT_EQ(s.report.status, "solved");
+      EXPECT_EQ(s.report.ipopt_status, "acceptable");
+      // The run follows the same path as the optimal one and stops exactly where the objective
+      // had changed by less than the tolerance `count` times in a row.
+      const int settled = first_settled_iteration(optimal_nlp.iterates, tolerance, count);
+      ASSERT_GT(settled, 0);
+      EXPECT_LT(settled, reference.report.iterations);
+      EXPECT_EQ(s.report.iterations, settled);
+      EXPECT_EQ(first_settled_iteration(nlp.iterates, tolerance, count), settled);
+    }
+  }
+}
+
+TEST(IpoptSolver, AcceptableExitNeedsTheConstraintsMet) {
+  // Overshoot's objective changes by less than 1 % per iteration only from radius ~1.01 on, where
+  // the violation is below 1e-5: with an acceptable violation of 1e-9 the acceptable exit must
+  // wait for the constraint, so it cannot come before the first iterate that meets it.
+  Overshoot nlp(1.5);
+  SolverOptions options;
+  options.objective_change_tolerance = 1e-2;
+  options.acceptable_iterations = 1;
+  options.acceptable_constraint_violation = 1e-9;
+  options.stall_iterations = 0;
+  const Solve s = solve(nlp, options);
+  ASSERT_TRUE(s.report.solved) << s.report.status;
+  const int settled = first_settled_iteration(nlp.iterates, 1e-2, 1);
+  ASSERT_GT(settled, 0);
+  int met = -1;
+  for (const Iterate& it : nlp.iterates)
+    if (met < 0 && it.violation <= 1e-9) met = it.iteration;
+  ASSERT_GT(met, settled) << "the case must make the constraint the later condition";
+  EXPECT_GE(s.report.iterations, met);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Stalls, restarts and which iterate is returned (SolverOptions::stall_iterations).
+
+/// Overshoot's path from radius 0.1 follows r ← (r² + 1) / 2r; checks that it did.
+void expect_newton_radii(const std::vector<Iterate>& run, double start) {
+  double r = start;
+  for (const Iterate& it : run) {
+    EXPECT_NEAR(radius(it.x), r, 1e-9 * r) << "run " << it.run << " iteration " << it.iteration;
+    r = (r * r + 1) / (2 * r);
+  }
+}
+
+TEST(IpoptSolver, RestartsFromTheBestFeasibleIterateAfterAStall) {
+  Overshoot nlp;
+  SolverOptions options;
+  options.stall_iterations = 3;
+  options.max_restarts = 2;
+  const Solve s = solve(nlp, options);
+  const std::vector<Iterate> first = nlp.run(0), second = nlp.run(1);
+  expect_newton_radii(first, 0.1);
+  // The best iterate within the acceptable violation is iteration 1 (radius 5.05, f = −25.25);
+  // three iterations later, none having improved on it, the run stops ...
+  ASSERT_EQ(best_feasible(s, options.acceptable_constraint_violation), 1);
+  ASSERT_NEAR(nlp.iterates[1].objective, -25.25, 1e-12);
+  EXPECT_EQ(first.back().iteration, 1 + options.stall_iterations);
+  // ... and Ipopt starts again from exactly that iterate, with its iteration count carried on.
+  ASSERT_FALSE(second.empty());
+  EXPECT_EQ(second.front().x, nlp.iterates[1].x);
+  expect_newton_radii(second, 5.05);
+  EXPECT_EQ(s.report.restarts, 1);
+  EXPECT_EQ(nlp.run(2).size(), 0u);
+  EXPECT_EQ(s.report.iterations, first.back().iteration + second.back().iteration);
+  EXPECT_EQ(s.progress[first.size()].iteration, first.back().iteration);
+  // The restarted run finds nothing better than where it began, never stalls, and converges.
+  EXPECT_TRUE(s.report.solved);
+  EXPECT_NEAR(s.report.x[0], 0.6, 1e-8);
+  EXPECT_NEAR(s.report.x[1], 0.8, 1e-8);
+}
+
+TEST(IpoptSolver, StalledWithNoRestartLeftReturnsTheBestFeasibleIterate) {
+  Overshoot nlp;
+  SolverOptions options;
+  options.stall_iterations = 3;
+  options.max_restarts = 0;
+  const Solve s = solve(nlp, options);
+  EXPECT_EQ(s.report.status, "stalled");
+  EXPECT_FALSE(s.report.solved);
+  EXPECT_EQ(s.report.restarts, 0);
+  EXPECT_EQ(s.report.iterations, 1 + options.stall_iterations);
+  // The last iterate (radius 1.08, f = −5.42) is worse than iteration 1's: that one is returned.
+  EXPECT_GT(nlp.iterates.back().objective, nlp.iterates[1].objective);
+  EXPECT_EQ(s.report.x, nlp.iterates[1].x);
+  EXPECT_EQ(s.report.objective, nlp.iterates[1].objective);
+}
+
+TEST(IpoptSolver, DoesNotRestartARunWhoseBestIterateIsItsStart) {
+  // From radius 5.05 every iterate is worse than the start; restarting there would retrace the
+  // same path, so the run goes on to the optimum without a stop.
+  Overshoot nlp(5.05);
+  SolverOptions options;
+  options.stall_iterations = 3;
+  const Solve s = solve(nlp, options);
+  ASSERT_EQ(best_feasible(s, options.acceptable_constraint_violation), 0);
+  EXPECT_GT(s.report.iterations, options.stall_iterations);
+  EXPECT_EQ(s.report.restarts, 0);
+  EXPECT_EQ(s.report.ipopt_status, "optimal");
+}
+
+TEST(IpoptSolver, RestartsShareTheIterationBudget) {
+  Overshoot nlp;
+  SolverOptions options;
+  options.stall_iterations = 3;
+  options.max_iterations = 6;
+  const Solve s = solve(nlp, options);
+  // 4 iterations before the stall, 2 left for the restarted run.
+  EXPECT_EQ(s.report.restarts, 1);
+  EXPECT_EQ(nlp.run(0).back().iteration, 4);
+  EXPECT_EQ(nlp.run(1).back().iteration, 2);
+  EXPECT_EQ(s.report.iterations, 6);
+  EXPECT_EQ(s.report.status, "max_iterations");
+  EXPECT_EQ(s.report.x, nlp.iterates[1].x);  // the best feasible iterate, not the last
+  EXPECT_LE(s.progress.back().iteration, options.max_iterations);
+
+  // A stall on the last iteration of the budget leaves nothing to restart with.
+  Overshoot last;
+  options.max_iterations = 4;
+  const Solve t = solve(last, options);
+  EXPECT_EQ(t.report.restarts, 0);
+  EXPECT_EQ(t.report.iterations, 4);
+  EXPECT_EQ(t.report.status, "stalled");
+}
+
+TEST(IpoptSolver, StoppedEarlyReturnsTheBetterOfItsLastAndBestFeasibleIterates) {
+  for (int limit = 1; limit <= 6; ++limit) {
+    SCOPED_TRACE("max_iterations " + std::to_string(limit));
+    for (bool wander : {true, false}) {
+      // Overshoot's best feasible iterate comes early and the later ones are worse; Hock–
+      // Schittkowski 71's first iterate within a violation of 0.02 (iteration 2) is followed by
+      // lower ones that violate the constraints more.
+      Overshoot overshoot;
+      Hs71 hs71;
+      DenseNlp& nlp = wander ? static_cast<DenseNlp&>(overshoot) : hs71;
+      SolverOptions options;
+      options.max_iterations = limit;
+      options.stall_iterations = 0;
+      options.objective_change_tolerance = 0;
+      options.acceptable_constraint_violation = 0.02;
+      const Solve s = solve(nlp, options);
+      ASSERT_FALSE(s.report.solved);
+      const int best = best_feasible(s, options.acceptable_constraint_violation);
+      const bool best_wins = best >= 0 && s.progress[best].objective < s.progress.back().objective;
+      const Iterate& expected = best_wins ? nlp.iterates[best] : nlp.iterates.back();
+      EXPECT_EQ(s.report.x, expected.x) << (best_wins ? "best feasible" : "last") << " iterate";
+    }
+  }
+}
+
+TEST(IpoptSolver, TheCasesAboveReturnBothKindsOfIterate) {
+  // Guards the previous test against a path on which the last and the best feasible iterate
+  // coincide: each kind must be returned at least once, and differ from the other there.
+  int last_returned = 0, best_returned = 0;
+  for (int limit = 1; limit <= 6; ++limit) {
+    for (bool wander : {true, false}) {
+      Overshoot overshoot;
+      Hs71 hs71;
+      DenseNlp& nlp = wander ? static_cast<DenseNlp&>(overshoot) : hs71;
+      SolverOptions options;
+      options.max_iterations = limit;
+      options.stall_iterations = 0;
+      options.objective_change_tolerance = 0;
+      options.acceptable_constraint_violation = 0.02;
+      const Solve s = solve(nlp, options);
+      const int best = best_feasible(s, options.acceptable_constraint_violation);
+      if (best < 0 || nlp.iterates[best].x == nlp.iterates.back().x) continue;
+      (s.report.x == nlp.iterates.back().x ? last_returned : best_returned) += 1;
+    }
+  }
+  EXPECT_GT(last_returned, 0);
+  EXPECT_GT(best_returned, 0);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Cancellation.
+
+TEST(IpoptSolver, CancelStopsAtTheNextIteration) {
+  Hs71 nlp;
+  std::atomic<bool> cancel{false};
+  const Solve s = solve(
+      nlp, SolverOptions{}, [&](const ProgressInfo& p) { cancel = p.iteration == 2; }, &cancel);
+  EXPECT_EQ(s.report.status, "cancelled");
+  EXPECT_EQ(s.report.ipopt_status, "user requested stop");
+  EXPECT_FALSE(s.report.solved);
+  EXPECT_EQ(s.report.iterations, 2);
+  EXPECT_EQ(nlp.iterates.back().iteration, 2);
+  EXPECT_EQ(nlp.hessian_points.size(), 2u);  // no Hessian for the iteration that was not taken
+}
+
+TEST(IpoptSolver, CancelBeforeTheStartStopsAtIterationZero) {
+  Hs71 nlp;
+  std::atomic<bool> cancel{true};
+  const Solve s = solve(nlp, SolverOptions{}, {}, &cancel);
+  EXPECT_EQ(s.report.status, "cancelled");
+  EXPECT_EQ(s.report.iterations, 0);
+  EXPECT_TRUE(nlp.hessian_points.empty());
+}
+
+TEST(IpoptSolver, CancelOnAStallIterationCancelsInsteadOfRestarting) {
+  Overshoot nlp;
+  SolverOptions options;
+  options.stall_iterations = 3;
+  std::atomic<bool> cancel{false};
+  const Solve s = solve(
+      nlp, options, [&](const ProgressInfo& p) { cancel = p.iteration == 4; }, &cancel);
+  EXPECT_EQ(s.report.status, "cancelled");
+  EXPECT_EQ(s.report.restarts, 0);
+  EXPECT_EQ(s.report.iterations, 4);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Options that reach Ipopt, and the ones that must not.
+
+TEST(IpoptSolver, IgnoresAnIpoptOptionsFileInTheWorkingFolder) {
+  // Ipopt reads ./ipopt.opt unless told otherwise; one here would stop it after one iteration.
+  const std::filesystem::path folder = test::temp_path("ipopt-opt");
+  std::filesystem::create_directories(folder);
+  std::ofstream(folder / "ipopt.opt") << "max_iter 1\n";
+  const std::filesystem::path previous = std::filesystem::current_path();
+  std::filesystem::current_path(folder);
+  Hs71 nlp;
+  const SolveReport report = solve_with_ipopt(nlp, SolverOptions{});
+  std::filesystem::current_path(previous);
+  std::filesystem::remove_all(folder);
+  EXPECT_TRUE(report.solved) << report.status;
+  EXPECT_GT(report.iterations, 1);
+}
+
+/// Hock–Schittkowski 71 with ∂f/∂x3 half as large again as it is.
+class Hs71WrongGradient : public Hs71 {
+  void grad_f(const double* x, double* out) const override {
+    Hs71::grad_f(x, out);
+    out[2] *= 1.5;
+  }
+};
+
+std::string derivative_check(DenseNlp& nlp, const std::string& name) {
+  const std::string file = test::temp_path(name + ".txt").string();
+  SolverOptions options;
+  options.max_iterations = 0;
+  options.derivative_test_file = file;
+  solve_with_ipopt(nlp, options);
+  std::ifstream in(file);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::filesystem::remove(file);
+  return text;
+}
+
+TEST(IpoptSolver, DerivativeCheckerWritesItsVerdictToTheGivenFile) {
+  Hs71 right;
+  const std::string good = derivative_check(right, "derivatives-right");
+  EXPECT_NE(good.find("No errors detected by derivative checker"), std::string::npos) << good;
+  Hs71WrongGradient wrong;
+  const std::string bad = derivative_check(wrong, "derivatives-wrong");
+  EXPECT_NE(bad.find("grad_f[          2]"), std::string::npos) << bad;
+  EXPECT_NE(bad.find("Derivative checker detected 1 error"), std::string::npos) << bad;
+}
+
+}  // namespace
+}  // namespace saltus
