@@ -99,10 +99,7 @@ int main(int argc, char** argv) {
     if (command_line.stage) window.set_stage(*command_line.stage);
     if (command_line.time) window.seek(*command_line.time);
     if (command_line.optimize && window.document().loaded()) {
-      saltus::gui::OptimizeSettings settings = window.runs().settings();
-      if (command_line.max_iterations) settings.max_iterations = *command_line.max_iterations;
-      if (command_line.samples) settings.samples = *command_line.samples;
-      window.runs().start(settings);
+      window.runs().start(command_line.applied_to(window.runs().settings()));
     }
   }
   return app.exec();

@@ -38,7 +38,7 @@ int export_figures(const CommandLine& c) {
       if (is_mass_study_folder(dir))
         mass_folders.push_back(read_mass_study_folder(dir));
       else
-        folders.push_back(read_result_folder(dir));
+        folders.push_back(read_optimization_folder(dir));
     }
   } catch (const InputError& e) {
     std::fprintf(stderr, "saltus-gui: error: %s\n", e.what());
@@ -87,10 +87,7 @@ int show_motion(const CommandLine& c) {
   if (c.camera) window.set_camera(*c.camera);
   if (c.optimize) {
     // Library defaults, not the panel's remembered values: batch runs are reproducible.
-    OptimizeSettings settings;
-    if (c.max_iterations) settings.max_iterations = *c.max_iterations;
-    if (c.samples) settings.samples = *c.samples;
-    if (!window.runs().start(settings, &error)) {
+    if (!window.runs().start(c.applied_to(OptimizeSettings{}), &error)) {
       std::fprintf(stderr, "saltus-gui: error: %s\n", qPrintable(error));
       return kExitBadInput;
     }

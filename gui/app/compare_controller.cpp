@@ -14,6 +14,7 @@
 #include "app/view_controller.h"
 #include "core/compare.h"
 #include "saltus/base/input_error.h"
+#include "saltus/formats/readable_formats.h"
 
 namespace saltus::gui {
 
@@ -61,15 +62,15 @@ void CompareController::fill_menu(QMenu* compare) {
   before_after_ = compare->addAction(tr("&Before vs after optimisation"), this,
                                      [this] { compare_before_after(); });
   QAction* motion = compare->addAction(tr("With another &motion…"), this, [this] {
-    const QString path =
-        QFileDialog::getOpenFileName(context_.window(), tr("Compare with motion"),
-                                     context_.last_dir(), tr("Motions (*.motion.json *.json)"));
+    const QString path = QFileDialog::getOpenFileName(context_.window(), tr("Compare with motion"),
+                                                      context_.last_dir(),
+                                                      qstr(dialog_filter(ReadableKind::kMotion)));
     if (!path.isEmpty()) compare_with_motion(path);
   });
   QAction* model = compare->addAction(tr("With another body m&odel…"), this, [this] {
-    const QString path =
-        QFileDialog::getOpenFileName(context_.window(), tr("Compare with body model"),
-                                     context_.last_dir(), tr("Body models (*.json)"));
+    const QString path = QFileDialog::getOpenFileName(
+        context_.window(), tr("Compare with body model"), context_.last_dir(),
+        qstr(dialog_filter(ReadableKind::kModel)));
     if (!path.isEmpty()) compare_with_model(path);
   });
   model->setToolTip(

@@ -73,16 +73,10 @@ class DocumentEdit : public QUndoCommand {
   bool first_ = true;
 };
 
-/// The name of the first option that differs, for the undo text and merging.
+/// The label of the first option that differs (option table order, in lower case as in "Change
+/// samples"), for the undo text and merging.
 QString changed_option(const OptimizeSettings& a, const OptimizeSettings& b) {
-  if (a.strict != b.strict) return QObject::tr("model");
-  if (a.epsilon != b.epsilon) return QObject::tr("ε");
-  if (a.optimize_timing != b.optimize_timing) return QObject::tr("keyframe timing");
-  if (a.knots_per_interval != b.knots_per_interval) return QObject::tr("knots per interval");
-  if (a.samples != b.samples) return QObject::tr("samples");
-  if (a.max_iterations != b.max_iterations) return QObject::tr("max iterations");
-  if (a.max_joint_turn_deg != b.max_joint_turn_deg) return QObject::tr("max joint turn");
-  return QString();
+  return QString::fromStdString(first_changed_option(a, b)).toLower();
 }
 
 /// A change of the Optimise panel's values.

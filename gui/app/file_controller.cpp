@@ -25,11 +25,11 @@
 #include "app/scene_widget.h"
 #include "app/view_controller.h"
 #include "saltus/base/input_error.h"
-#include "saltus/base/json_reader.h"
 #include "saltus/evaluation/residual_measures.h"
 #include "saltus/formats/capture_files.h"
 #include "saltus/formats/model_file.h"
 #include "saltus/formats/motion_file.h"
+#include "saltus/formats/readable_formats.h"
 
 namespace saltus::gui {
 
@@ -41,14 +41,9 @@ QString qstr(const std::string& s) {
   return QString::fromStdString(s);
 }
 
-/// Whether a JSON file is a body model ("saltus-model/1") rather than a motion.
-bool is_model_file(const QString& path) {
-  try {
-    const nlohmann::json document = read_json_file(path.toStdString());
-    return document.is_object() && document.value("format", "") == "saltus-model/1";
-  } catch (const std::exception&) {
-    return false;
-  }
+/// The open dialog's filter for `kind` (formats/readable_formats.h).
+QString filter(ReadableKind kind) {
+  return qstr(dialog_filter(kind));
 }
 
 /// "M1-straight-back-somersault" from ".../M1-straight-back-somersault.motion.json".
@@ -66,9 +61,9 @@ FileController::FileController(AppContext& context, ViewController& view,
       new QAction(w->style()->standardIcon(QStyle::SP_DialogOpenButton), tr("&Open motion…"), this);
   open_->setShortcut(QKeySequence::Open);
   connect(open_, &QAction::triggered, this, [this] {
-    const QString path = ask_open_file(
-        tr("Open motion"),
-        tr("Motions (*.motion.json *.json);;Motion captures (*.bvh *.BVH);;All files (*)"));
+    const QString path = ask_open_file(tr("Open motion"), filter(ReadableKind::kMotion) + ";;" +
+                                                              filter(ReadableKind::kCapture) +
+                                                              ";;" + tr("All files (*)"));
     if (!path.isEmpty()) open_motion(path);
   });
   import_capture_ = new QAction(tr("&Import motion capture…"), this);
@@ -77,8 +72,7 @@ FileController::FileController(AppContext& context, ViewController& view,
       tr("A BVH file onto the body model (as `saltus import`): its flight, take-off state and "
          "picked keyframes; the capture is drawn beside the motion"));
   connect(import_capture_, &QAction::triggered, this, [this] {
-    const QString path =
-        ask_open_file(tr("Import motion capture"), tr("Motion captures (*.bvh *.BVH)"));
+    const QString path = ask_open_file(tr("Import motion capture"), filter(ReadableKind::kCapture));
     if (!path.isEmpty()) open_motion(path);
   });
   save_result_ = new QAction(w->style()->standardIcon(QStyle::SP_DialogSaveButton),
@@ -113,7 +107,7 @@ void FileController::fill_menu(QMenu* file, const std::vector<QAction*>& more_ex
   file->addAction(open_);
   file->addAction(import_capture_);
   file->addAction(tr("Open &model…"), this, [this] {
-    const QString path = ask_open_file(tr("Open body model"), tr("Body models (*.json)"));
+    const QString path = ask_open_file(tr("Open body model"), filter(ReadableKind::kModel));
     if (!path.isEmpty()) open_model(path);
   });
   recent_menu_ = file->addMenu(tr("Open &recent"));
@@ -273,15 +267,16 @@ bool FileController::ask_save_motion() {
   const QString suggestion =
       QDir(context_.last_dir())
           .filePath(motion_stem(ws.document().file().path) + "-edited.motion.json");
-  const QString path = QFileDialog::getSaveFileName(context_.window(), tr("Save motion"),
-                                                    suggestion, tr("Motions (*.motion.json)"));
+  const QString path =
+      QFileDialog::getSaveFileName(context_.window(), tr("Save motion"), suggestion,
+                                   qstr(save_dialog_filter(ReadableKind::kMotion)));
   return !path.isEmpty() && save_motion(path);
 }
 
 bool FileController::ask_save_model() {
   const QString path = QFileDialog::getSaveFileName(
       context_.window(), tr("Save body model"),
-      QDir(context_.last_dir()).filePath("edited-model.json"), tr("Body models (*.json)"));
+      QDir(context_.last_dir()).filePath("edited-model.json"), filter(ReadableKind::kModel));
   return !path.isEmpty() && save_model(path);
 }
 
@@ -406,8 +401,10 @@ void FileController::rebuild_recent_menu() {
 void FileController::drag_enter(QDragEnterEvent* event) {
   if (!event->mimeData()->hasUrls()) return;
   for (const QUrl& url : event->mimeData()->urls()) {
-    const QString path = url.isLocalFile() ? url.toLocalFile() : QString();
-    if (path.endsWith(".json", Qt::CaseInsensitive) || is_capture_path(path.toStdString())) {
+    const auto kind =
+        url.isLocalFile() ? identify_readable(url.toLocalFile().toStdString()) : std::nullopt;
+    if (kind == ReadableKind::kMotion || kind == ReadableKind::kModel ||
+        kind == ReadableKind::kCapture) {
       event->acceptProposedAction();
       return;
     }
@@ -420,9 +417,10 @@ void FileController::drop(QDropEvent* event) {
   for (const QUrl& url : event->mimeData()->urls()) {
     if (!url.isLocalFile()) continue;
     const QString path = url.toLocalFile();
-    if (is_model_file(path))
+    const auto kind = identify_readable(path.toStdString());
+    if (kind == ReadableKind::kModel)
       open_model(path);
-    else
+    else if (kind == ReadableKind::kMotion || kind == ReadableKind::kCapture)
       motions.append(path);
   }
   if (!motions.isEmpty()) open_motion(motions.first());

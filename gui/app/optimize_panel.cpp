@@ -1,16 +1,14 @@
 #include "app/optimize_panel.h"
 
-#include <QCheckBox>
-#include <QComboBox>
-#include <QDoubleSpinBox>
-#include <QFormLayout>
+#include "app/option_form.h"
+
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QListWidget>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QSpinBox>
+#include <QScrollArea>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -18,60 +16,14 @@ namespace saltus::gui {
 
 OptimizePanel::OptimizePanel(QWidget* parent) : QWidget(parent) {
   auto* layout = new QVBoxLayout(this);
-  auto* form = new QFormLayout;
-  formulation_ = new QComboBox(this);
-  formulation_->addItem(tr("relaxed (paper)"));
-  formulation_->addItem(tr("strict: |F_i| ≤ ε"));
-  formulation_->setToolTip(
-      tr("Relaxed: the paper's model, keyframes within tolerance, root force minimised.\n"
-         "Strict: classic spacetime constraints, every root force/moment component bounded."));
-  epsilon_ = new QDoubleSpinBox(this);
-  epsilon_->setRange(0.001, 1e6);
-  epsilon_->setDecimals(3);
-  epsilon_->setSuffix(tr(" N / N·m"));
-  epsilon_->setToolTip(tr("Strict model: bound on each |F_i| at every sample"));
-  timing_ = new QCheckBox(tr("optimise keyframe times"), this);
-  knots_ = new QSpinBox(this);
-  knots_->setRange(0, kMaxKnotsPerInterval);
-  knots_->setSpecialValueText(tr("auto"));
-  knots_->setToolTip(
-      tr("Spline knot spans per keyframe interval: auto (chosen from how far the body turns, "
-         "then refined where the residual is; the default) or a number (1 = the paper's)"));
-  samples_ = new QSpinBox(this);
-  samples_->setRange(kMinSamples, 5000);
-  samples_->setToolTip(tr("Time samples of the objective on [0, T] (fewer = faster)"));
-  iterations_ = new QSpinBox(this);
-  iterations_->setRange(0, kMaxIterations);
-  iterations_->setToolTip(tr("Ipopt iteration limit"));
-  joint_turn_ = new QDoubleSpinBox(this);
-  joint_turn_->setRange(0.0, 360.0);
-  joint_turn_->setDecimals(0);
-  joint_turn_->setSuffix(tr("°"));
-  joint_turn_->setSpecialValueText(tr("none"));
-  joint_turn_->setToolTip(
-      tr("Soft limit on how far a joint turns relative to its parent between two spline control\n"
-         "points (or the interpolation's own turn where larger). Without it, light limbs can\n"
-         "spin between keyframes at little cost in root force."));
-  // Named for tests and style sheets.
-  formulation_->setObjectName("formulation");
-  epsilon_->setObjectName("epsilon");
-  timing_->setObjectName("timing");
-  knots_->setObjectName("knots_per_interval");
-  samples_->setObjectName("samples");
-  iterations_->setObjectName("max_iterations");
-  joint_turn_->setObjectName("max_joint_turn");
-  // A typed value counts when it is complete (Enter or leaving the box): one undo step each.
-  for (QAbstractSpinBox* box : std::initializer_list<QAbstractSpinBox*>{epsilon_, knots_, samples_,
-                                                                        iterations_, joint_turn_})
-    box->setKeyboardTracking(false);
-  form->addRow(tr("Model"), formulation_);
-  form->addRow(tr("ε (strict)"), epsilon_);
-  form->addRow(QString(), timing_);
-  form->addRow(tr("Knots per interval"), knots_);
-  form->addRow(tr("Samples"), samples_);
-  form->addRow(tr("Max iterations"), iterations_);
-  form->addRow(tr("Max joint turn"), joint_turn_);
-  layout->addLayout(form);
+  // The table's options scroll when the window is short, so they never set its height.
+  form_ = new OptionForm;
+  auto* options = new QScrollArea(this);
+  options->setWidget(form_);
+  options->setWidgetResizable(true);
+  options->setFrameShape(QFrame::NoFrame);
+  options->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  layout->addWidget(options);
 
   auto* buttons = new QHBoxLayout;
   run_ = new QPushButton(tr("Run optimisation"), this);
@@ -120,51 +72,18 @@ OptimizePanel::OptimizePanel(QWidget* parent) : QWidget(parent) {
 
   connect(run_, &QPushButton::clicked, this, &OptimizePanel::run_requested);
   connect(cancel_, &QPushButton::clicked, this, &OptimizePanel::cancel_requested);
-  connect(formulation_, qOverload<int>(&QComboBox::currentIndexChanged), this, [this] {
-    update_enabled();
-    on_value_changed();
-  });
-  connect(timing_, &QCheckBox::toggled, this, [this] { on_value_changed(); });
-  for (QSpinBox* box : {knots_, samples_, iterations_})
-    connect(box, qOverload<int>(&QSpinBox::valueChanged), this, [this] { on_value_changed(); });
-  for (QDoubleSpinBox* box : {epsilon_, joint_turn_})
-    connect(box, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
-            [this] { on_value_changed(); });
+  connect(form_, &OptionForm::edited, this, &OptimizePanel::settings_edited);
   set_settings(OptimizeSettings{});
   reset();
   update_enabled();
 }
 
-void OptimizePanel::on_value_changed() {
-  if (setting_) return;
-  const OptimizeSettings before = current_;
-  current_ = settings();
-  emit settings_edited(before, current_);
-}
-
 OptimizeSettings OptimizePanel::settings() const {
-  OptimizeSettings s;
-  s.strict = formulation_->currentIndex() == 1;
-  s.epsilon = epsilon_->value();
-  s.optimize_timing = timing_->isChecked();
-  s.knots_per_interval = knots_->value();
-  s.samples = samples_->value();
-  s.max_iterations = iterations_->value();
-  s.max_joint_turn_deg = joint_turn_->value();
-  return s;
+  return form_->values();
 }
 
 void OptimizePanel::set_settings(const OptimizeSettings& s) {
-  setting_ = true;
-  formulation_->setCurrentIndex(s.strict ? 1 : 0);
-  epsilon_->setValue(s.epsilon);
-  timing_->setChecked(s.optimize_timing);
-  knots_->setValue(s.knots_per_interval);
-  samples_->setValue(s.samples);
-  iterations_->setValue(s.max_iterations);
-  joint_turn_->setValue(s.max_joint_turn_deg);
-  current_ = settings();
-  setting_ = false;
+  form_->set_values(s);
   update_enabled();
 }
 
@@ -244,10 +163,7 @@ void OptimizePanel::clear_result() {
 
 void OptimizePanel::update_enabled() {
   const bool idle = !running_;
-  for (QWidget* w : std::initializer_list<QWidget*>{formulation_, timing_, knots_, samples_,
-                                                    iterations_, joint_turn_})
-    w->setEnabled(idle);
-  epsilon_->setEnabled(idle && formulation_->currentIndex() == 1);
+  form_->set_editable(idle);
   run_->setEnabled(idle && available_);
   cancel_->setEnabled(running_);
 }

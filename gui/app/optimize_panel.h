@@ -1,27 +1,24 @@
 #pragma once
 /// @file
-/// The optimisation panel: formulation (relaxed / strict with ε), timing on/off, knots per
-/// interval, samples, max iterations, max joint turn; Run and Cancel; live progress; the list of
-/// runs of this motion (each kept; choosing one shows it) and the result table of the run shown
-/// (before / after). It only asks: the run controller optimises, the edit controller makes
-/// option changes undoable.
+/// The optimisation panel: the option table's options (OptionForm: one row each); Run and Cancel;
+/// live progress; the list of runs of this motion (each kept; choosing one shows it) and the result
+/// table of the run shown (before / after). It only asks: the run controller optimises, the edit
+/// controller makes option changes undoable.
 
 #include <QWidget>
 #include <vector>
 
 #include "core/optimize_settings.h"
 
-class QCheckBox;
-class QComboBox;
-class QDoubleSpinBox;
 class QLabel;
 class QListWidget;
 class QProgressBar;
 class QPushButton;
-class QSpinBox;
 class QTableWidget;
 
 namespace saltus::gui {
+
+class OptionForm;
 
 class OptimizePanel : public QWidget {
   Q_OBJECT
@@ -59,15 +56,8 @@ class OptimizePanel : public QWidget {
 
  private:
   void update_enabled();
-  void on_value_changed();
 
-  QComboBox* formulation_ = nullptr;
-  QDoubleSpinBox* epsilon_ = nullptr;
-  QCheckBox* timing_ = nullptr;
-  QSpinBox* knots_ = nullptr;
-  QSpinBox* samples_ = nullptr;
-  QSpinBox* iterations_ = nullptr;
-  QDoubleSpinBox* joint_turn_ = nullptr;
+  OptionForm* form_ = nullptr;
   QPushButton* run_ = nullptr;
   QPushButton* cancel_ = nullptr;
   QProgressBar* bar_ = nullptr;
@@ -76,9 +66,7 @@ class OptimizePanel : public QWidget {
   QListWidget* runs_ = nullptr;
   bool available_ = false;
   bool running_ = false;
-  /// The values as last set or edited: the "before" of the next edit.
-  OptimizeSettings current_;
-  bool setting_ = false;  ///< set_settings is writing the fields: no edit signals
+  bool setting_ = false;  ///< show_runs is filling the list: no run_chosen
 };
 
 }  // namespace saltus::gui

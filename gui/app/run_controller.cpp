@@ -8,6 +8,7 @@
 #include <QSettings>
 #include <QTimer>
 #include <memory>
+#include <optional>
 
 #include "app/optimization_runner.h"
 #include "app/optimize_panel.h"
@@ -206,28 +207,17 @@ void RunController::on_finished(int tag, bool ok, const QString& error) {
 }
 
 void RunController::load_settings(const QSettings& s) {
-  OptimizeSettings o;
-  o.strict = s.value("optimize/strict", o.strict).toBool();
-  o.epsilon = s.value("optimize/epsilon", o.epsilon).toDouble();
-  o.optimize_timing = s.value("optimize/timing", o.optimize_timing).toBool();
-  // "optimize/knots" since the automatic resolution (0): the older key held the paper's 1 as
-  // a default nobody chose.
-  o.knots_per_interval = s.value("optimize/knots", o.knots_per_interval).toInt();
-  o.samples = s.value("optimize/samples", o.samples).toInt();
-  o.max_iterations = s.value("optimize/max_iterations", o.max_iterations).toInt();
-  o.max_joint_turn_deg = s.value("optimize/max_joint_turn_deg", o.max_joint_turn_deg).toDouble();
-  panel_->set_settings(o);
+  panel_->set_settings(
+      settings_from_entries([&s](const std::string& key) -> std::optional<std::string> {
+        const QString k = QString::fromStdString(key);
+        if (!s.contains(k)) return std::nullopt;
+        return s.value(k).toString().toStdString();
+      }));
 }
 
 void RunController::save_settings(QSettings& s) const {
-  const OptimizeSettings o = panel_->settings();
-  s.setValue("optimize/strict", o.strict);
-  s.setValue("optimize/epsilon", o.epsilon);
-  s.setValue("optimize/timing", o.optimize_timing);
-  s.setValue("optimize/knots", o.knots_per_interval);
-  s.setValue("optimize/samples", o.samples);
-  s.setValue("optimize/max_iterations", o.max_iterations);
-  s.setValue("optimize/max_joint_turn_deg", o.max_joint_turn_deg);
+  for (const auto& [key, text] : settings_entries(panel_->settings()))
+    s.setValue(QString::fromStdString(key), QString::fromStdString(text));
 }
 
 }  // namespace saltus::gui

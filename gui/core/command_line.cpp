@@ -1,121 +1,198 @@
 #include "core/command_line.h"
 
+#include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
+
+#include "flags/option_flags.h"
+#include "saltus/base/text_format.h"
 
 namespace saltus::gui {
 
 namespace {
 
-double parse_double(const std::string& flag, const std::string& text) {
-  std::size_t used = 0;
-  double value = 0.0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || !std::isfinite(value))
-    throw std::invalid_argument(flag + ": \"" + text + "\" is not a number");
-  return value;
+constexpr const char* kDescription =
+    "Opens the desktop app, showing MOTION (*.motion.json, or a .bvh capture imported onto the\n"
+    "model) if given. With any of --screenshot, --screenshot-view, --save-result,\n"
+    "--export-figures, --export-video or --benchmark-playback it runs without user\n"
+    "interaction: it renders (under an X display; use xvfb-run on a headless machine),\n"
+    "writes the files and exits (status 0 ok, 2 bad input or usage, 1 other failure).\n"
+    "--optimize takes the optimiser options of `saltus optimize` (the library's defaults in\n"
+    "batch runs, the Optimise panel's values otherwise).";
+
+/// CLI11 gives an option its required value even when that looks like a flag
+/// ("--screenshot --optimize"): for file and folder names that is a mistake, not a name.
+const CLI::Validator kNotAFlag(
+    [](std::string& value) -> std::string {
+      return value.rfind("--", 0) == 0 ? "needs a value, not the flag " + value : "";
+    },
+    "", "not a flag");
+
+/// A number in [low, high] (low excluded when `low_open`), with a plain message.
+CLI::Validator interval_check(double low, double high, bool low_open) {
+  const std::string range =
+      (low_open ? "(" : "[") + format_number("%g", low) + ", " + format_number("%g", high) + "]";
+  return CLI::Validator(
+      [low, high, low_open, range](std::string& text) -> std::string {
+        double v = 0.0;
+        std::size_t used = 0;
+        try {
+          v = std::stod(text, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (used != text.size() || !std::isfinite(v)) return "\"" + text + "\" is not a number";
+        if ((low_open ? v <= low : v < low) || v > high) return "must be in " + range;
+        return "";
+      },
+      "", range);
 }
 
-int parse_int(const std::string& flag, const std::string& text) {
-  const double value = parse_double(flag, text);
-  if (value != std::floor(value) || std::abs(value) > 1e9)
-    throw std::invalid_argument(flag + ": \"" + text + "\" is not a whole number");
-  return static_cast<int>(value);
+/// A number check with a plain message (CLI11's own prints the whole double range).
+CLI::Validator number_check(bool allow_zero) {
+  return CLI::Validator(
+      [allow_zero](std::string& text) -> std::string {
+        double v = 0.0;
+        std::size_t used = 0;
+        try {
+          v = std::stod(text, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (used != text.size() || !std::isfinite(v)) return "\"" + text + "\" is not a number";
+        if (allow_zero ? v < 0 : v <= 0)
+          return allow_zero ? "must not be negative" : "must be positive";
+        return "";
+      },
+      "", allow_zero ? "non-negative" : "positive");
+}
+
+/// saltus-gui's command line as a CLI11 app writing into `c`; the option table's flags go to
+/// `flags`, which must outlive the parse.
+std::unique_ptr<CLI::App> make_app(CommandLine& c, cli::OptionFlags& flags,
+                                   std::vector<std::string>& figures) {
+  auto app = std::make_unique<CLI::App>(kDescription, "saltus-gui");
+  app->set_help_flag("-h,--help", "print this help and exit");
+  app->add_flag("--version", c.version, "print the version and exit");
+  app->add_option("MOTION", c.motion, "motion file to open (*.motion.json) or capture (*.bvh)");
+  app->add_flag("--optimize", c.optimize, "optimise the motion before anything else");
+  flags.add(app.get(), cli::all_option_names());
+  app->add_option("--time", c.time, "show time T (s) of the flight")
+      ->type_name("T")
+      ->check(number_check(true));
+  app->add_option_function<std::string>(
+         "--stage",
+         [&c](const std::string& v) { c.stage = v == "before" ? Stage::kBefore : Stage::kAfter; },
+         "show the interpolated or the optimised motion (after: the default once optimised)")
+      ->type_name("before|after")
+      ->check(CLI::IsMember({"before", "after"}).description(""));
+  app->add_option_function<std::string>(
+         "--camera", [&c](const std::string& v) { c.camera = camera_preset_from_name(v); },
+         "camera preset")
+      ->type_name("side|front|top|follow")
+      ->check(CLI::IsMember({"side", "front", "top", "follow"}).description(""));
+  app->add_option_function<std::string>(
+         "--size",
+         [&c](const std::string& v) {
+           const std::size_t x = v.find('x');
+           c.width = std::stoi(v.substr(0, x));
+           c.height = std::stoi(v.substr(x + 1));
+         },
+         "window size for screenshots and the benchmark (default 1600x1000)")
+      ->type_name("WxH")
+      ->check(CLI::Validator(
+          [](std::string& v) -> std::string {
+            const std::size_t x = v.find('x');
+            int w = 0, h = 0;
+            std::size_t used_w = 0, used_h = 0;
+            try {
+              w = std::stoi(v.substr(0, x), &used_w);
+              h = std::stoi(v.substr(x + 1), &used_h);
+            } catch (const std::exception&) {
+              return "must look like 1600x1000";
+            }
+            if (x == std::string::npos || used_w != x || used_h != v.size() - x - 1)
+              return "must look like 1600x1000";
+            if (w < 200 || h < 200 || w > 8000 || h > 8000)
+              return "must be between 200x200 and 8000x8000";
+            return "";
+          },
+          "", "WxH"));
+  app->add_option("--screenshot", c.screenshot, "save the whole window as PNG")
+      ->type_name("FILE")
+      ->check(kNotAFlag);
+  app->add_option("--screenshot-view", c.screenshot_view, "save the 3D view as PNG")
+      ->type_name("FILE")
+      ->check(kNotAFlag);
+  app->add_option("--save-result", c.save_result,
+                  "write the result folder the CLI would (optimize or evaluate)")
+      ->type_name("DIR")
+      ->check(kNotAFlag);
+  app->add_option("--export-figures", figures,
+                  "draw paper-style figures (root force/moment and keyframe times before/after, "
+                  "average root force) from `saltus optimize` folders, and joint loads given vs "
+                  "scaled (Fig. 8) from `saltus study mass` folders")
+      ->type_name("DIR RESULT_DIR")
+      ->check(kNotAFlag)
+      ->expected(1, CLI::detail::expected_max_vector_size);
+  app->add_option("--compare", c.compare,
+                  "with --screenshot: the compare window of MOTION against B (a motion file or a "
+                  "result folder) instead of the main window")
+      ->type_name("B")
+      ->check(kNotAFlag);
+  app->add_option("--export-video", c.export_video,
+                  "the 3D view's animation as .mp4 or .gif (time and residual in the picture; "
+                  "needs the ffmpeg program)")
+      ->type_name("FILE")
+      ->check(kNotAFlag);
+  app->add_option("--fps", c.video_fps, "frames per second of the video (default 30, GIF 20)")
+      ->type_name("F")
+      ->check(interval_check(0, 120, true));
+  app->add_option("--speed", c.video_speed,
+                  "motion seconds per video second (default 1; 0.5 = slow motion)")
+      ->type_name("S")
+      ->check(interval_check(0.05, 10, false));
+  app->add_flag("--benchmark-playback", c.benchmark,
+                "play the motion for a few seconds and print frames per second");
+  app->add_option("--seconds", c.benchmark_seconds, "length of the benchmark (default 5)")
+      ->type_name("S")
+      ->check(number_check(false));
+  return app;
 }
 
 }  // namespace
 
+OptimizeSettings CommandLine::applied_to(OptimizeSettings settings) const {
+  for (const auto& [name, value] : options)
+    settings.set(name, value);
+  return settings;
+}
+
 CommandLine parse_command_line(const std::vector<std::string>& args) {
   CommandLine c;
-  bool after_export = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&]() -> const std::string& {
-      if (i + 1 >= args.size() || (args[i + 1].rfind("--", 0) == 0 && args[i + 1].size() > 2))
-        throw std::invalid_argument(a + " needs a value");
-      return args[++i];
-    };
-    if (a == "--help" || a == "-h") {
-      c.help = true;
-    } else if (a == "--version") {
-      c.version = true;
-    } else if (a == "--optimize") {
-      c.optimize = true;
-    } else if (a == "--max-iter") {
-      c.max_iterations = parse_int(a, value());
-      if (*c.max_iterations < 0) throw std::invalid_argument("--max-iter must be at least 0");
-    } else if (a == "--samples") {
-      c.samples = parse_int(a, value());
-      if (*c.samples < 2) throw std::invalid_argument("--samples must be at least 2");
-    } else if (a == "--time") {
-      c.time = parse_double(a, value());
-      if (*c.time < 0) throw std::invalid_argument("--time must not be negative");
-    } else if (a == "--stage") {
-      const std::string& v = value();
-      if (v == "before")
-        c.stage = Stage::kBefore;
-      else if (v == "after")
-        c.stage = Stage::kAfter;
-      else
-        throw std::invalid_argument("--stage must be before or after, not \"" + v + "\"");
-    } else if (a == "--camera") {
-      const std::string& v = value();
-      c.camera = camera_preset_from_name(v);
-      if (!c.camera)
-        throw std::invalid_argument("--camera must be side, front, top or follow, not \"" + v +
-                                    "\"");
-    } else if (a == "--size") {
-      const std::string& v = value();
-      const std::size_t x = v.find('x');
-      if (x == std::string::npos) throw std::invalid_argument("--size must look like 1600x1000");
-      c.width = parse_int(a, v.substr(0, x));
-      c.height = parse_int(a, v.substr(x + 1));
-      if (c.width < 200 || c.height < 200 || c.width > 8000 || c.height > 8000)
-        throw std::invalid_argument("--size must be between 200x200 and 8000x8000");
-    } else if (a == "--screenshot") {
-      c.screenshot = value();
-    } else if (a == "--screenshot-view") {
-      c.screenshot_view = value();
-    } else if (a == "--save-result") {
-      c.save_result = value();
-    } else if (a == "--export-figures") {
-      c.export_figures = value();
-      after_export = true;
-    } else if (a == "--compare") {
-      c.compare = value();
-    } else if (a == "--export-video") {
-      c.export_video = value();
-    } else if (a == "--fps") {
-      c.video_fps = parse_double(a, value());
-      if (!(c.video_fps > 0 && c.video_fps <= 120))
-        throw std::invalid_argument("--fps must be in (0, 120]");
-    } else if (a == "--speed") {
-      c.video_speed = parse_double(a, value());
-      if (!(c.video_speed >= 0.05 && c.video_speed <= 10))
-        throw std::invalid_argument("--speed must be in [0.05, 10]");
-    } else if (a == "--benchmark-playback") {
-      c.benchmark = true;
-    } else if (a == "--seconds") {
-      c.benchmark_seconds = parse_double(a, value());
-      if (!(c.benchmark_seconds > 0)) throw std::invalid_argument("--seconds must be positive");
-    } else if (a.rfind("-", 0) == 0 && a.size() > 1) {
-      throw std::invalid_argument("unknown option " + a + " (see --help)");
-    } else if (after_export) {
-      c.result_dirs.push_back(a);
-    } else if (c.motion.empty()) {
-      c.motion = a;
-    } else {
-      throw std::invalid_argument("only one motion file can be opened (got \"" + c.motion +
-                                  "\" and \"" + a + "\")");
-    }
+  cli::OptionFlags flags;
+  std::vector<std::string> figures;
+  const std::unique_ptr<CLI::App> app = make_app(c, flags, figures);
+  std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
+  try {
+    app->parse(reversed);
+  } catch (const CLI::CallForHelp&) {
+    c.help = true;
+    return c;
+  } catch (const CLI::ParseError& e) {
+    if (c.version) return c;
+    throw std::invalid_argument(e.what());
   }
+  c.options = flags.given();
   if (c.help || c.version) return c;
-  if (!c.export_figures.empty() && c.result_dirs.empty())
-    throw std::invalid_argument("--export-figures DIR needs at least one RESULT_DIR after it");
+  if (!figures.empty()) {
+    c.export_figures = figures.front();
+    c.result_dirs.assign(figures.begin() + 1, figures.end());
+    if (c.result_dirs.empty())
+      throw std::invalid_argument("--export-figures DIR needs at least one RESULT_DIR after it");
+  }
   if (!c.compare.empty() && c.screenshot.empty())
     throw std::invalid_argument(
         "--compare B needs --screenshot FILE (the compare window's picture)");
@@ -128,40 +205,10 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
 }
 
 std::string usage_text() {
-  return R"(Usage: saltus-gui [MOTION] [options]
-
-Opens the desktop app, showing MOTION (*.motion.json, or a .bvh capture imported onto the
-model) if given. With any of --screenshot, --screenshot-view, --save-result, --export-figures,
---export-video or --benchmark-playback it runs without
-user interaction: it renders (under an X display; use xvfb-run on a headless machine), writes
-the files and exits (status 0 ok, 2 bad input or usage, 1 other failure).
-
-  --optimize              optimise the motion (relaxed model) before anything else
-  --max-iter N            iteration limit of --optimize (default 100)
-  --samples N             time samples of the optimisation grid (default 101)
-  --time T                show time T (s) of the flight
-  --stage before|after    show the interpolated or the optimised motion (after: default once
-                          optimised)
-  --camera side|front|top|follow
-  --size WxH              window size for screenshots and the benchmark (default 1600x1000)
-  --screenshot FILE       save the whole window as PNG
-  --screenshot-view FILE  save the 3D view as PNG
-  --save-result DIR       write the result folder the CLI would (optimize or evaluate)
-  --export-figures DIR RESULT_DIR...
-                          draw paper-style figures (root force/moment and keyframe times
-                          before/after, average root force) from `saltus optimize` folders,
-                          and joint loads given vs scaled (Fig. 8) from `saltus study mass`
-                          folders
-  --compare B             with --screenshot: the compare window of MOTION against B (a motion
-                          file or a result folder) instead of the main window
-  --export-video FILE     the 3D view's animation as .mp4 or .gif (time and residual in the
-                          picture; needs the ffmpeg program)
-  --fps F                 frames per second of the video (default 30, GIF 20)
-  --speed S               motion seconds per video second (default 1; 0.5 = slow motion)
-  --benchmark-playback    play the motion for a few seconds and print frames per second
-  --seconds S             length of the benchmark (default 5)
-  --help, --version
-)";
+  CommandLine c;
+  cli::OptionFlags flags;
+  std::vector<std::string> figures;
+  return make_app(c, flags, figures)->help();
 }
 
 }  // namespace saltus::gui

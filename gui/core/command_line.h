@@ -1,18 +1,23 @@
 #pragma once
 /// @file
-/// The command line of saltus-gui (batch flags included), parsed without Qt so it is unit-tested:
-///   saltus-gui [MOTION] [--optimize] [--max-iter N] [--samples N] [--time T]
+/// The command line of saltus-gui (batch flags included), parsed with CLI11 like `saltus`'s and
+/// without Qt, so it is unit-tested:
+///   saltus-gui [MOTION] [--optimize] [OPTIMISER OPTIONS] [--time T]
 ///              [--stage before|after] [--camera side|front|top|follow] [--size WxH]
 ///              [--screenshot FILE] [--screenshot-view FILE] [--save-result DIR]
 ///              [--export-figures DIR RESULT_DIR...] [--benchmark-playback [--seconds S]]
 ///              [--compare B] [--export-video FILE [--fps F] [--speed S]]
-/// Positional arguments before --export-figures name the motion; after it, result folders.
+/// The optimiser options are the option table's flags (`saltus optimize --help`: --max-iter,
+/// --samples, --formulation, ...). Positional arguments before --export-figures name the
+/// motion; after it, result folders.
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/document.h"
+#include "core/optimize_settings.h"
 #include "core/scene_options.h"
 
 namespace saltus::gui {
@@ -21,8 +26,8 @@ struct CommandLine {
   std::string motion;                    ///< motion file to open ("" none)
   std::vector<std::string> result_dirs;  ///< `saltus optimize` folders for --export-figures
   bool optimize = false;
-  std::optional<int> max_iterations;
-  std::optional<int> samples;
+  /// Optimiser options given (option table name and value), applied over the panel's values.
+  std::vector<std::pair<std::string, OptionValue>> options;
   std::optional<double> time;  ///< s
   std::optional<Stage> stage;
   std::optional<CameraPreset> camera;
@@ -46,6 +51,8 @@ struct CommandLine {
     return !screenshot.empty() || !screenshot_view.empty() || !save_result.empty() ||
            !export_figures.empty() || !export_video.empty() || benchmark;
   }
+  /// `settings` with the optimiser options given here set.
+  OptimizeSettings applied_to(OptimizeSettings settings) const;
 };
 
 /// Parses the arguments after the program name. Throws std::invalid_argument with a message

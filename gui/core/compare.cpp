@@ -5,9 +5,9 @@
 #include <stdexcept>
 
 #include "saltus/base/input_error.h"
-#include "saltus/base/json_reader.h"
 #include "saltus/body/segment_names.h"
 #include "saltus/evaluation/residual_measures.h"
+#include "saltus/formats/result_json.h"
 
 namespace saltus::gui {
 
@@ -30,10 +30,7 @@ FolderRun folder_run(const std::string& dir) {
   if (!fs::exists(result_path))
     throw InputError(result_path, "",
                      "missing (expected a `saltus optimize` or `saltus evaluate` output folder)");
-  const nlohmann::json document = read_json_file(result_path);
-  const JsonNode root(document, result_path);
-  root.require_object();
-  run.motion_path = root.at("motion_file").as_string();
+  run.motion_path = read_result_json(result_path).motion_file;
   const fs::path model = folder / "model.json";
   if (!fs::exists(model))
     throw InputError(model.string(), "", "missing (the folder's copy of the body model)");

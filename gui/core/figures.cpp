@@ -3,10 +3,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <set>
+#include <variant>
 
 #include "core/plot_series.h"
 #include "core/run_list.h"
-#include "saltus/base/json_reader.h"
 #include "saltus/body/segment_names.h"
 #include "saltus/evaluation/evaluate.h"
 #include "saltus/evaluation/residual_measures.h"
@@ -39,8 +39,23 @@ class StemSet {
 };
 
 std::string display_name(const ResultFolder& f) {
-  return f.motion.empty() ? f.name : f.motion;
+  return f.result.motion.empty() ? f.name : f.result.motion;
 }
+
+/// The figures' numbers of an optimisation folder (result.json as the library reads it).
+double avg_force_after(const ResultFolder& f) {
+  return f.result.optimization ? f.result.optimization->after.avg_root_force
+                               : f.result.before.avg_root_force;
+}
+const std::vector<double>& keyframe_times_after(const ResultFolder& f) {
+  return f.result.optimization ? f.result.optimization->keyframe_times_after
+                               : f.result.keyframe_times_before;
+}
+
+/// Root force and moment before and after: from the folder's trajectory CSVs, or denser.
+struct Curves {
+  WrenchSeries before, after;
+};
 
 /// The body weight of the folder's model.json, 0 when it cannot be read (the % axis is left
 /// out then).
@@ -65,30 +80,32 @@ WrenchSeries dense_series(const std::string& motion, const std::string& model, i
 /// optimized.motion.json (its stored spline is the optimised motion), "before" from the motion
 /// file result.json names (as `saltus optimize` interpolated it, with its knots). Where a file
 /// cannot be read, the CSV's samples stay (true values, only coarser).
-void densify(ResultFolder& f) {
+Curves dense_curves(const ResultFolder& f) {
   namespace fs = std::filesystem;
+  Curves c{root_wrench_series(f.before.samples),
+           root_wrench_series(f.after ? f.after->samples : f.before.samples)};
   const fs::path folder(f.path);
   const std::string model = (folder / "model.json").string();
   try {
-    f.after = dense_series((folder / "optimized.motion.json").string(), model, 1);
+    c.after = dense_series((folder / "optimized.motion.json").string(), model, 1);
   } catch (const std::exception&) {
   }
   try {
-    const nlohmann::json result = read_json_file((folder / "result.json").string());
-    const fs::path motion = result.at("motion_file").get<std::string>();
+    const fs::path motion = f.result.motion_file;
     // With the automatic resolution "before" is the paper's interpolation, knots at the
     // keyframes (optimize_motion); otherwise the knots `saltus optimize` used.
-    const bool automatic = result.contains("resolution") && result["resolution"].is_object() &&
-                           result["resolution"].value("automatic", false);
-    const int knots = automatic ? 1 : result.value("knots_per_interval", 1);
+    const auto& o = f.result.optimization;
+    const bool automatic = o && o->resolution && o->resolution->automatic;
+    const int knots = automatic ? 1 : f.result.knots_per_interval;
     // Relative to where `saltus optimize` ran: try the current folder, then the folder's parent.
     for (const fs::path& candidate : {motion, folder.parent_path() / motion}) {
       if (!fs::exists(candidate)) continue;
-      f.before = dense_series(candidate.string(), model, knots);
+      c.before = dense_series(candidate.string(), model, knots);
       break;
     }
   } catch (const std::exception&) {
   }
+  return c;
 }
 
 /// "M1" from "M1-straight-back-somersault" or "M1 straight back somersault".
@@ -97,17 +114,11 @@ std::string first_word(const std::string& name) {
   return name.substr(0, end);
 }
 
-/// What a mass study scaled, as people say it ("left and right thighs × 1.5"), from the
-/// folder's result.json; the run's own label when that is not there.
+/// What a mass study scaled, as people say it ("left and right thighs × 1.5"); the run's own
+/// label when the folder does not say which segments.
 std::string scaled_label(const MassStudyFolder& f) {
-  try {
-    const nlohmann::json doc =
-        read_json_file((std::filesystem::path(f.path) / "result.json").string());
-    const std::vector<std::string> segments = doc.at("scaled_segments");
-    return "model with " + mass_scaling_label(segments, doc.at("factor").get<double>());
-  } catch (const std::exception&) {
-    return f.run_labels[1];
-  }
+  if (f.scaled_segments.empty()) return f.runs[1].label;
+  return "model with " + mass_scaling_label(f.scaled_segments, f.factor);
 }
 
 }  // namespace
@@ -132,21 +143,23 @@ ChartSpec titled_figure(ChartSpec chart, const std::string& motion, const std::s
 }
 
 std::string folder_settings(const ResultFolder& f) {
-  std::string out = f.formulation.empty() ? std::string("optimised") : f.formulation;
-  out += " · " + status_text(f.status.empty() ? "solved" : f.status);
-  if (f.iterations > 0) out += " in " + std::to_string(f.iterations) + " iterations";
-  out += " · average root force " + number("%.3g", f.avg_root_force_before) + " → " +
-         number("%.3g", f.avg_root_force_after) + " N";
+  const auto formulation = f.result.option("formulation");
+  std::string out = formulation && std::holds_alternative<std::string>(*formulation)
+                        ? std::get<std::string>(*formulation)
+                        : std::string("optimised");
+  out += " · " + status_text(f.result.status.empty() ? "solved" : f.result.status);
+  const int iterations = f.result.optimization ? f.result.optimization->iterations : 0;
+  if (iterations > 0) out += " in " + std::to_string(iterations) + " iterations";
+  out += " · average root force " + number("%.3g", f.result.before.avg_root_force) + " → " +
+         number("%.3g", avg_force_after(f)) + " N";
   return out;
 }
 
-std::vector<Figure> result_figures(const std::vector<ResultFolder>& read) {
-  std::vector<ResultFolder> folders = read;
-  for (ResultFolder& f : folders)
-    densify(f);
+std::vector<Figure> result_figures(const std::vector<ResultFolder>& folders) {
   std::vector<Figure> out;
   StemSet stems;
   for (const ResultFolder& f : folders) {
+    const Curves curves = dense_curves(f);
     const std::string stem = stems.make(f.name);
     const std::string settings = folder_settings(f);
     RootChartStyle style;
@@ -155,15 +168,17 @@ std::vector<Figure> result_figures(const std::vector<ResultFolder>& read) {
     for (bool moment : {false, true}) {
       style.moment = moment;
       style.components = false;
-      out.push_back({stem + (moment ? "_root_moment.png" : "_root_force.png"),
-                     titled_figure(root_chart(style, f.before, &f.after, f.keyframe_times_before,
-                                              f.keyframe_times_after),
-                                   display_name(f), settings)});
+      out.push_back(
+          {stem + (moment ? "_root_moment.png" : "_root_force.png"),
+           titled_figure(root_chart(style, curves.before, &curves.after,
+                                    f.result.keyframe_times_before, keyframe_times_after(f)),
+                         display_name(f), settings)});
       style.components = true;
-      out.push_back({stem + (moment ? "_root_moment_components.png" : "_root_force_components.png"),
-                     titled_figure(root_chart(style, f.before, &f.after, f.keyframe_times_before,
-                                              f.keyframe_times_after),
-                                   display_name(f), settings)});
+      out.push_back(
+          {stem + (moment ? "_root_moment_components.png" : "_root_force_components.png"),
+           titled_figure(root_chart(style, curves.before, &curves.after,
+                                    f.result.keyframe_times_before, keyframe_times_after(f)),
+                         display_name(f), settings)});
     }
     ChartSpec times = keyframe_times_chart(f);
     times.title = "Keyframe times before and after optimisation";
@@ -193,8 +208,8 @@ ChartSpec average_root_force_figure(const std::vector<ResultFolder>& folders) {
   for (std::size_t i = 0; i < folders.size(); ++i) {
     before.x.push_back(static_cast<double>(i));
     after.x.push_back(static_cast<double>(i));
-    before.y.push_back(folders[i].avg_root_force_before);
-    after.y.push_back(folders[i].avg_root_force_after);
+    before.y.push_back(folders[i].result.before.avg_root_force);
+    after.y.push_back(avg_force_after(folders[i]));
     const std::string label = short_ok ? first_word(folders[i].name) : std::to_string(i + 1);
     chart.x_labels.push_back(label);
     if (!short_ok) listed += (i ? ", " : "") + label + " " + folders[i].name;
@@ -212,12 +227,12 @@ std::vector<FigureGrid> mass_study_load_figures(const std::vector<MassStudyFolde
     grid.file_name = stems.make(f.name) + "_loads.png";
     grid.columns = 2;
     const std::array<std::string, 2> labels{"model as given", scaled_label(f)};
-    for (std::size_t i = 0; i < f.loads.segments.size(); ++i) {
-      const SegmentLoadSeries& s = f.loads.segments[i];
+    for (std::size_t i = 0; i < f.loads.load_segments.size(); ++i) {
+      const std::string& segment = f.loads.load_segments[i];
       for (bool moment : {false, true}) {
         ChartSpec chart;
         chart.title = std::string(moment ? "Joint moment" : "Joint force") + " on the " +
-                      segment_label(s.segment) + (f.motion.empty() ? "" : "\n" + f.motion) +
+                      segment_label(segment) + (f.motion.empty() ? "" : "\n" + f.motion) +
                       " (optimised)";
         chart.x_title = "time (s)";
         chart.y_title = moment ? "|M| (N·m)" : "|F| (N)";
@@ -225,7 +240,7 @@ std::vector<FigureGrid> mass_study_load_figures(const std::vector<MassStudyFolde
           LineSpec line;
           line.label = labels[r];
           line.x = f.loads.time;
-          line.y = moment ? s.moment[r] : s.force[r];
+          line.y = moment ? f.loads.loads[i][r].moment_Nm : f.loads.loads[i][r].force_N;
           line.colour = magnitude_curve_colour(moment);
           style_compared_line(line, r == 1, true);
           chart.lines.push_back(std::move(line));

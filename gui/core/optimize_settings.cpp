@@ -1,9 +1,7 @@
 #include "core/optimize_settings.h"
 
-#include <algorithm>
-#include <cmath>
+#include <cctype>
 #include <cstdio>
-#include <stdexcept>
 
 #include "saltus/base/constants.h"
 #include "saltus/evaluation/force_metrics.h"
@@ -26,32 +24,101 @@ std::string times_text(const std::vector<double>& times) {
   }
   return out;
 }
+
+/// The knot spans per keyframe interval used: K when every interval has K, else each one's.
+std::string spans_text(const OptimizationResult& r) {
+  bool uniform = true;
+  for (int s : r.subdivisions)
+    uniform = uniform && s == r.knots_per_interval;
+  if (uniform) return std::to_string(r.knots_per_interval);
+  std::string out;
+  for (std::size_t i = 0; i < r.subdivisions.size(); ++i)
+    out += (i ? ", " : "") + std::to_string(r.subdivisions[i]);
+  return out;
+}
 }  // namespace
 
-OptimizeOptions to_optimize_options(const OptimizeSettings& s) {
-  if (!(s.epsilon > 0) || !std::isfinite(s.epsilon))
-    throw std::invalid_argument("epsilon must be positive");
-  if (s.knots_per_interval < 0 || s.knots_per_interval > kMaxKnotsPerInterval)
-    throw std::invalid_argument("knots per interval must be auto or 1-50");
-  if (s.max_iterations < 0 || s.max_iterations > kMaxIterations)
-    throw std::invalid_argument("max iterations must be in 0-100000");
-  if (s.samples < kMinSamples || s.samples > kMaxSamples)
-    throw std::invalid_argument("samples must be in 2-100000");
-  if (!(s.max_joint_turn_deg >= 0 && s.max_joint_turn_deg <= 360))
-    throw std::invalid_argument("max joint turn must be in 0-360°");
-  OptimizeOptions o;
-  o.nlp.formulation = s.strict ? Formulation::kStrict : Formulation::kRelaxed;
-  o.nlp.epsilon = s.epsilon;
-  o.nlp.optimize_timing = s.optimize_timing;
-  o.automatic_resolution = s.knots_per_interval == 0;
-  o.nlp.knots_per_interval = std::max(1, s.knots_per_interval);
-  o.nlp.samples = s.samples;
-  o.nlp.joint_turn_limit = s.max_joint_turn_deg / kDegreesPerRadian;
-  o.solver.max_iterations = s.max_iterations;
-  // The CLI's default tolerance (src/cli/main.cpp); the stalled-objective exit keeps the
-  // library's default, as the CLI does.
-  o.solver.tolerance = kCliTolerance;
-  return o;
+OptimizeOptions to_optimize_options(const OptimizeSettings& settings) {
+  return settings.optimize_options();
+}
+
+std::string first_changed_option(const OptimizeSettings& before, const OptimizeSettings& after) {
+  for (const OptionSpec& spec : option_table())
+    if (before.get(spec.name) != after.get(spec.name)) return spec.label;
+  return "";
+}
+
+std::string option_tooltip(const OptionSpec& spec) {
+  std::string out = spec.help;
+  if (!out.empty()) out[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(out[0])));
+  if (spec.kind == OptionKind::kInteger || spec.kind == OptionKind::kReal)
+    out += " (" + (spec.unit.empty() ? std::string() : spec.unit + "; ") + option_range_text(spec) +
+           ")";
+  return out + ".\n" + spec.flag + " in saltus optimize and saltus-gui";
+}
+
+namespace {
+
+constexpr const char* kSettingsPrefix = "optimize/";
+
+/// Settings an earlier version stored under another key or in another form.
+struct LegacySetting {
+  const char* key;
+  const char* option;
+  std::optional<std::string> (*convert)(const std::string& text);
+};
+const LegacySetting kLegacySettings[] = {
+    {"optimize/strict", "formulation",
+     [](const std::string& t) -> std::optional<std::string> {
+       if (t == "true") return std::string("strict");
+       if (t == "false") return std::string("relaxed");
+       return std::nullopt;
+     }},
+    {"optimize/timing", "optimize_timing",
+     [](const std::string& t) -> std::optional<std::string> { return t; }},
+    {"optimize/max_joint_turn_deg", "max_joint_turn",
+     [](const std::string& t) -> std::optional<std::string> { return t; }},
+    // A build of the app stored the automatic resolution as knots 0.
+    {"optimize/knots", "knots_per_interval",
+     [](const std::string& t) -> std::optional<std::string> {
+       return t == "0" ? std::string("auto") : t;
+     }},
+};
+
+/// The key an option is stored under: "optimize/<name>", except where an earlier version's
+/// value under that name must not be read. "optimize/knots_per_interval" held the paper's 1 as
+/// a default nobody chose before the automatic resolution (auto) became the default.
+std::string settings_key(const OptionSpec& spec) {
+  if (spec.name == "knots_per_interval") return std::string(kSettingsPrefix) + "knots";
+  return kSettingsPrefix + spec.name;
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, std::string>> settings_entries(
+    const OptimizeSettings& settings) {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const OptionSpec& spec : option_table())
+    out.emplace_back(settings_key(spec), option_value_text(settings.get(spec.name)));
+  return out;
+}
+
+OptimizeSettings settings_from_entries(
+    const std::function<std::optional<std::string>(const std::string& key)>& stored) {
+  OptimizeSettings settings;
+  auto take = [&settings](const std::string& name, const std::string& text) {
+    try {
+      settings.set_text(name, text);
+    } catch (const OptionValueError&) {
+      // Out of today's range or not a value: the default stays.
+    }
+  };
+  for (const LegacySetting& legacy : kLegacySettings)
+    if (const auto text = stored(legacy.key))
+      if (const auto converted = legacy.convert(*text)) take(legacy.option, *converted);
+  for (const OptionSpec& spec : option_table())
+    if (const auto text = stored(settings_key(spec))) take(spec.name, *text);
+  return settings;
 }
 
 std::vector<ResultRow> result_table(const OptimizationResult& r, const OptimizeOptions& options) {
@@ -64,12 +131,13 @@ std::vector<ResultRow> result_table(const OptimizationResult& r, const OptimizeO
       {"model", "", strict ? "strict, ε = " + number("%g", options.nlp.epsilon) : "relaxed"});
   rows.push_back({"keyframes", std::to_string(r.before.keyframe_times.size()),
                   std::to_string(r.after.keyframe_times.size())});
-  // K before is the one asked for; after, the one used (optimize_motion refines the knots when
-  // the interpolation cannot pass through the keyframes).
-  rows.push_back(
-      {"knots per keyframe interval K",
-       options.automatic_resolution ? "auto" : std::to_string(options.nlp.knots_per_interval),
-       std::to_string(r.knots_per_interval)});
+  // K before is the one asked for ("auto": the automatic resolution, relaxed model); after, the
+  // spans per interval used (optimize_motion refines the knots when the interpolation cannot
+  // pass through the keyframes, and the automatic resolution where the residual lives).
+  const bool automatic = options.automatic_resolution && !strict;
+  rows.push_back({"knots per keyframe interval K",
+                  automatic ? "auto" : std::to_string(options.nlp.knots_per_interval),
+                  spans_text(r)});
   rows.push_back({"variables", "", std::to_string(r.variables)});
   rows.push_back({"constraints", "", std::to_string(r.constraints)});
   rows.push_back({"objective J (N²)", number("%.4g", b.objective), number("%.4g", a.objective)});

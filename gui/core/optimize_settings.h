@@ -1,37 +1,43 @@
 #pragma once
 /// @file
-/// The optimisation panel's choices, their translation into the library's OptimizeOptions (with
-/// the same defaults as `saltus optimize`), the rows of the result table and the progress line.
+/// The optimisation panel's values (one per option of the library's option table, so the panel,
+/// saltus-gui's command line and `saltus optimize` share names, ranges and defaults), how they
+/// are stored between sessions, the rows of the result table and the progress line.
 
+#include <functional>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "saltus/optim/optimize.h"
+#include "saltus/optim/option_table.h"
 
 namespace saltus::gui {
 
-struct OptimizeSettings {
-  bool strict = false;          ///< strict spacetime constraints instead of the relaxed model
-  double epsilon = 100.0;       ///< strict bound on each |F_i|, N or N·m
-  bool optimize_timing = true;  ///< interior keyframe times are variables
-  int knots_per_interval = 0;   ///< 0: automatic resolution (`--knots-per-interval auto`)
-  int max_iterations = SolverOptions{}.max_iterations;  ///< the library's (and CLI's) default
-  int samples = kDefaultSamples;
-  /// Soft limit on a joint's turn between two control points (`--max-joint-turn`), 0 = none.
-  double max_joint_turn_deg = 180.0;
-};
+/// The Optimise panel's values: every option of saltus/optim/option_table.h, each at the
+/// library's default until set (set() checks the table's range and names the flag).
+using OptimizeSettings = OptionValues;
 
-/// `saltus optimize --tol`'s default: the library's.
-inline const double kCliTolerance = SolverOptions{}.tolerance;
-
-/// Ranges the panel enforces (the CLI's).
-constexpr int kMaxKnotsPerInterval = 50;
-constexpr int kMaxIterations = 100000;
-constexpr int kMinSamples = 2;
-constexpr int kMaxSamples = 100000;
-
-/// Throws std::invalid_argument naming the field for a value out of range.
+/// The library's options for these values.
 OptimizeOptions to_optimize_options(const OptimizeSettings& settings);
+
+/// The label of the first option (table order) whose value differs, "" when none: what an undo
+/// step names.
+std::string first_changed_option(const OptimizeSettings& before, const OptimizeSettings& after);
+
+/// A form's tooltip for an option: its help, then unit and range, then the CLI flag.
+std::string option_tooltip(const OptionSpec& spec);
+
+/// The values as stored settings: ("optimize/<name>", text) per option ("optimize/knots" for
+/// knots_per_interval: the older key held a default nobody chose, see settings_key).
+std::vector<std::pair<std::string, std::string>> settings_entries(const OptimizeSettings& settings);
+/// Stored settings back (`stored` gives a key's text, or none). A value that no longer reads
+/// (another version's range, a hand edit) keeps the default. Keys of earlier versions
+/// ("optimize/strict", "optimize/timing", "optimize/max_joint_turn_deg") still read;
+/// "optimize/knots_per_interval" (always 1 before the automatic resolution) does not.
+OptimizeSettings settings_from_entries(
+    const std::function<std::optional<std::string>(const std::string& key)>& stored);
 
 struct ResultRow {
   std::string quantity;
@@ -39,7 +45,8 @@ struct ResultRow {
   std::string after;
 };
 
-/// Keyframes, knot refinement (asked/used), variables, constraints, objective and average root
+/// Keyframes, knot spans per interval (asked: K or auto; used: K, or each interval's),
+/// variables, constraints, objective and average root
 /// force before/after, iterations (and restarts), seconds, status, RMS/peak force and moment,
 /// keyframe times and errors.
 std::vector<ResultRow> result_table(const OptimizationResult& result,

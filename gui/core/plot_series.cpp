@@ -4,7 +4,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "saltus/base/input_error.h"
 #include "saltus/body/segment_names.h"
 #include "saltus/evaluation/force_metrics.h"
 #include "saltus/evaluation/residual_measures.h"
@@ -13,7 +12,6 @@ namespace saltus::gui {
 
 namespace {
 
-const char* const kColumns[6] = {"root_fx", "root_fy", "root_fz", "root_mx", "root_my", "root_mz"};
 const char* const kAxisNames[3] = {"x", "y", "z"};
 
 /// The paler "before" version of a colour: 45 % towards white.
@@ -76,26 +74,6 @@ WrenchSeries root_wrench_series(const std::vector<SampleRecord>& samples) {
   }
   out.force_magnitude = root_force_magnitudes(samples);
   out.moment_magnitude = root_moment_magnitudes(samples);
-  return out;
-}
-
-WrenchSeries root_wrench_series(const CsvTable& table, const std::string& file) {
-  const int t = table.column("t");
-  if (t < 0) throw InputError(file, "", "missing column \"t\"");
-  int columns[6];
-  for (int i = 0; i < 6; ++i) {
-    columns[i] = table.column(kColumns[i]);
-    if (columns[i] < 0)
-      throw InputError(file, "", std::string("missing column \"") + kColumns[i] + "\"");
-  }
-  WrenchSeries out;
-  for (const std::vector<double>& row : table.rows) {
-    out.time.push_back(row.at(static_cast<std::size_t>(t)));
-    for (int i = 0; i < 6; ++i)
-      out.component[static_cast<std::size_t>(i)].push_back(
-          row.at(static_cast<std::size_t>(columns[i])));
-  }
-  fill_magnitudes(out);
   return out;
 }
 

@@ -18,7 +18,6 @@
 #include "saltus/body/body_model.h"
 #include "saltus/evaluation/rotation_metrics.h"
 #include "saltus/evaluation/sampling.h"
-#include "saltus/formats/trajectory_csv.h"
 
 namespace saltus::gui {
 
@@ -39,10 +38,8 @@ struct WrenchSeries {
   std::vector<double> moment_magnitude;          ///< |F4..F6|, N·m
 };
 
+/// From evaluated samples, or a trajectory CSV read by the library (read_trajectory_csv).
 WrenchSeries root_wrench_series(const std::vector<SampleRecord>& samples);
-/// From a trajectory CSV (DESIGN §6 columns t, root_fx..root_mz). Throws InputError naming
-/// `file` when a column is missing.
-WrenchSeries root_wrench_series(const CsvTable& table, const std::string& file);
 
 /// "F1 force x" ... "F6 moment z".
 std::string wrench_component_name(int component);

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <map>
+#include <variant>
 
 namespace saltus::gui {
 
@@ -87,12 +88,16 @@ std::string RunList::label(int index) const {
 }
 
 std::string settings_summary(const OptimizeSettings& s) {
-  std::string out = s.strict ? "strict, ε = " + number("%g", s.epsilon) : "relaxed";
-  out += s.optimize_timing ? ", times free" : ", times fixed";
-  out += s.knots_per_interval == 0 ? std::string(", knots auto")
-                                   : ", K = " + std::to_string(s.knots_per_interval);
-  out += ", " + std::to_string(s.samples) + " samples";
-  if (s.max_joint_turn_deg > 0) out += ", joint turn ≤ " + number("%g", s.max_joint_turn_deg) + "°";
+  const bool strict = std::get<std::string>(s.get("formulation")) == "strict";
+  std::string out = strict ? "strict, ε = " + number("%g", s.real("epsilon")) : "relaxed";
+  out += s.on("optimize_timing") ? ", times free" : ", times fixed";
+  const OptionValue knots = s.get("knots_per_interval");
+  out += std::holds_alternative<std::string>(knots)
+             ? ", knots " + std::get<std::string>(knots)
+             : ", K = " + std::to_string(std::get<int>(knots));
+  out += ", " + std::to_string(s.integer("samples")) + " samples";
+  if (s.real("max_joint_turn") > 0)
+    out += ", joint turn ≤ " + number("%g", s.real("max_joint_turn")) + "°";
   return out;
 }
 

@@ -14,6 +14,7 @@
 #include <stdexcept>
 
 #include "capture_verbs.h"
+#include "flags/option_flags.h"
 #include "saltus/base/constants.h"
 #include "saltus/base/input_error.h"
 #include "saltus/evaluation/evaluate.h"
@@ -41,33 +42,29 @@ struct CommonArgs {
   std::string motion_path;
   std::string out_dir;
   std::string model_override;
-  int samples = saltus::kDefaultSamples;
-  int knots_per_interval = 1;
   bool quiet = false;
+  saltus::cli::OptionFlags options;  ///< the option table's flags of the verb
 };
 
-void add_common(CLI::App* cmd, CommonArgs& args) {
+/// MOTION, --out, --model, --quiet and the option table's flags for runs of `runs` (evaluate and
+/// simulate: the evaluation options; optimize: all).
+void add_common(CLI::App* cmd, CommonArgs& args, saltus::OptionUse runs) {
   cmd->add_option("MOTION", args.motion_path, "motion file (*.motion.json) or capture (*.bvh)")
       ->required();
   cmd->add_option("--out", args.out_dir, "output folder (replaced if it holds an earlier result)")
       ->required();
-  cmd->add_option("--samples", args.samples, "time samples on [0, T], ends included")
-      ->check(CLI::Range(2, 1000000))
-      ->capture_default_str();
-  cmd->add_option("--knots-per-interval", args.knots_per_interval,
-                  "spline knot sub-intervals per keyframe interval (1 = knots at keyframes)")
-      ->check(CLI::Range(1, 50))
-      ->capture_default_str();
+  args.options.add(cmd,
+                   runs == saltus::OptionUse::kEvaluation
+                       ? saltus::cli::option_names(saltus::OptionUse::kEvaluation)
+                       : saltus::cli::all_option_names(),
+                   runs);
   cmd->add_option("--model", args.model_override,
                   "body model (name under resources/models or path), overrides the motion's");
   cmd->add_flag("--quiet,-q", args.quiet, "print nothing on success");
 }
 
 saltus::EvaluateOptions options_from(const CommonArgs& args) {
-  saltus::EvaluateOptions o;
-  o.samples = args.samples;
-  o.interpolation.knots_per_interval = args.knots_per_interval;
-  return o;
+  return args.options.values().evaluate_options();
 }
 
 std::string absolute(const std::string& path) {
@@ -145,96 +142,15 @@ int run_simulate(const CommonArgs& args) {
   return 0;
 }
 
-struct OptimizeArgs {
-  CommonArgs common;
-  std::string knots = "auto";
-  std::string formulation = "relaxed";
-  double epsilon = 100.0;
-  bool no_timing = false;
-  int max_iterations = saltus::SolverOptions{}.max_iterations;
-  double tolerance = saltus::SolverOptions{}.tolerance;
-  double objective_change_tolerance = saltus::SolverOptions{}.objective_change_tolerance;
-  double max_time_shift = 0.25;
-  double regularization = 1.0;
-  double max_joint_turn_deg = 180.0;
-};
-
-void add_optimize(CLI::App* cmd, OptimizeArgs& args) {
-  add_common(cmd, args.common);
-  cmd->remove_option(cmd->get_option("--knots-per-interval"));
-  cmd->add_option("--knots-per-interval", args.knots,
-                  "knot spans per keyframe interval: 'auto' (chosen from the motion, then "
-                  "refined where the residual lives) or a number (1 = knots at the keyframes, "
-                  "the paper's resolution)")
-      ->check([](const std::string& value) -> std::string {
-        if (value == "auto") return "";
-        try {
-          std::size_t used = 0;
-          const int k = std::stoi(value, &used);
-          if (used == value.size() && k >= 1 && k <= 50) return "";
-        } catch (const std::exception&) {
-        }
-        return "must be 'auto' or a whole number from 1 to 50, got '" + value + "'";
-      })
-      ->capture_default_str();
-  cmd->add_option("--formulation", args.formulation,
-                  "relaxed: minimise the root force (the paper's model); strict: classic "
-                  "spacetime constraints |F_i| <= epsilon at every sample")
-      ->check(CLI::IsMember({"relaxed", "strict"}))
-      ->capture_default_str();
-  cmd->add_option("--epsilon", args.epsilon, "strict model's bound on each |F_i|, N or N·m")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
-  cmd->add_flag("--no-timing", args.no_timing, "keep the keyframe times fixed");
-  cmd->add_option("--max-iter", args.max_iterations, "Ipopt iteration limit")
-      ->check(CLI::Range(0, 100000))
-      ->capture_default_str();
-  cmd->add_option("--tol", args.tolerance, "Ipopt convergence tolerance")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
-  cmd->add_option("--objective-change-tol", args.objective_change_tolerance,
-                  "also stop (solved, Ipopt 'acceptable') once the objective changes by less "
-                  "than this fraction for 3 iterations with the keyframes met; 0 = off")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
-  cmd->add_option("--max-time-shift", args.max_time_shift,
-                  "how far (s) a keyframe time may move from the given one")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
-  cmd->add_option("--regularization", args.regularization,
-                  "weight (N^2/rad^2) of the proximity term that keeps the joints near the "
-                  "interpolated motion (light limbs would otherwise flail); 0 = none")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
-  cmd->add_option("--max-joint-turn", args.max_joint_turn_deg,
-                  "soft limit (degrees) on how far a joint turns relative to its parent between "
-                  "two spline control points (where the interpolation itself turns further, "
-                  "that is the limit); 0 = none")
-      ->check(CLI::Range(0.0, 360.0))
-      ->capture_default_str();
-}
-
-int run_optimize(const OptimizeArgs& args) {
+int run_optimize(const CommonArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   saltus::check_output_folder(args.common.out_dir);
   const saltus::MotionFile file =
-      saltus::load_motion_or_capture(args.common.motion_path, args.common.model_override);
-  saltus::OptimizeOptions options;
-  options.nlp.formulation =
-      args.formulation == "strict" ? saltus::Formulation::kStrict : saltus::Formulation::kRelaxed;
-  options.nlp.epsilon = args.epsilon;
-  options.nlp.optimize_timing = !args.no_timing;
-  options.automatic_resolution = args.knots == "auto";
-  options.nlp.knots_per_interval = options.automatic_resolution ? 1 : std::stoi(args.knots);
-  options.nlp.samples = args.common.samples;
-  options.nlp.max_time_shift = args.max_time_shift;
-  options.nlp.regularization = args.regularization;
-  options.nlp.joint_turn_limit = args.max_joint_turn_deg / saltus::kDegreesPerRadian;
-  options.solver.max_iterations = args.max_iterations;
-  options.solver.tolerance = args.tolerance;
-  options.solver.objective_change_tolerance = args.objective_change_tolerance;
+      saltus::load_motion_or_capture(args.motion_path, args.model_override);
+  const saltus::OptionValues& values = args.options.values();
+  const saltus::OptimizeOptions options = values.optimize_options();
 
-  const bool quiet = args.common.quiet;
+  const bool quiet = args.quiet;
   const saltus::ProgressCallback progress = [quiet](const saltus::ProgressInfo& p) {
     if (quiet) return;
     std::fprintf(stderr, "  iter %3d  objective %.6e  constraint violation %.2e  %.3f s\n",
@@ -242,16 +158,14 @@ int run_optimize(const OptimizeArgs& args) {
   };
   const saltus::OptimizationResult result =
       saltus::optimize_motion(file.motion, file.model, options, progress);
-  saltus::write_optimization_outputs(args.common.out_dir, file, result, options);
+  saltus::write_optimization_outputs(args.out_dir, file, result, options);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!quiet) {
-    saltus::EvaluateOptions shown;
-    shown.samples = args.common.samples;
-    print_header("optimize", file, shown);
+    print_header("optimize", file, values.evaluate_options());
     std::printf("  %s model, %d variables, %d constraints: %s (%s) after %d iterations, %.3f s\n",
-                args.formulation.c_str(), result.variables, result.constraints,
-                result.solve.status.c_str(), result.solve.ipopt_status.c_str(),
+                std::get<std::string>(values.get("formulation")).c_str(), result.variables,
+                result.constraints, result.solve.status.c_str(), result.solve.ipopt_status.c_str(),
                 result.solve.iterations, result.solve.seconds);
     if (options.automatic_resolution) {
       std::printf("  automatic resolution:");
@@ -307,45 +221,37 @@ int run_optimize(const OptimizeArgs& args) {
         "  largest joint turn between two control points: %.0f deg before, %.0f deg after",
         saltus::largest_control_turn(result.before.trajectory, 1) * saltus::kDegreesPerRadian,
         saltus::largest_control_turn(result.after.trajectory, 1) * saltus::kDegreesPerRadian);
-    if (args.max_joint_turn_deg > 0)
+    if (values.real("max_joint_turn") > 0)
       std::printf(" (soft limit %.0f deg, or the interpolation's own turn)",
-                  args.max_joint_turn_deg);
+                  values.real("max_joint_turn"));
     std::printf("\n");
     std::printf(
         "  wrote %s/{result.json, trajectory_before.csv, trajectory_after.csv, model.json, "
         "optimized.motion.json} in %.3f s\n",
-        absolute(args.common.out_dir).c_str(), seconds);
+        absolute(args.out_dir).c_str(), seconds);
   }
   return result.solve.solved ? 0 : kExitNotSolved;
 }
 
 /// Settings shared by the study verbs and the report: the time grid and the iteration limit of
-/// every optimisation they run.
+/// every optimisation they run (option table).
 struct StudyArgs {
   std::string out_dir;
-  int samples = saltus::kDefaultSamples;
-  int max_iterations = saltus::SolverOptions{}.max_iterations;
   bool quiet = false;
+  saltus::cli::OptionFlags options;
 };
 
 void add_study_common(CLI::App* cmd, StudyArgs& args) {
   cmd->add_option("--out", args.out_dir, "output folder (replaced if it holds an earlier result)")
       ->required();
-  cmd->add_option("--samples", args.samples, "time samples on [0, T] of every optimisation")
-      ->check(CLI::Range(2, 1000000))
-      ->capture_default_str();
-  cmd->add_option("--max-iter", args.max_iterations, "Ipopt iteration limit of every run")
-      ->check(CLI::Range(1, 100000))
-      ->capture_default_str();
+  args.options.add(cmd, {"samples", "max_iterations"});
   cmd->add_flag("--quiet,-q", args.quiet, "print nothing on success");
 }
 
 saltus::OptimizeOptions study_optimize_options(const StudyArgs& args) {
-  saltus::OptimizeOptions o;
+  saltus::OptimizeOptions o = args.options.values().optimize_options();
   // The studies reproduce the paper's protocol at its resolution (knots at the keyframes).
   o.automatic_resolution = false;
-  o.nlp.samples = args.samples;
-  o.solver.max_iterations = args.max_iterations;
   return o;
 }
 
@@ -515,23 +421,23 @@ int main(int argc, char** argv) {
       "evaluate",
       "Interpolate the keyframes (paper §5) and compute the root force and moment the motion "
       "needs (inverse dynamics); writes result.json, trajectory.csv, model.json");
-  add_common(evaluate, evaluate_args);
+  add_common(evaluate, evaluate_args, saltus::OptionUse::kEvaluation);
 
   CommonArgs simulate_args;
   CLI::App* simulate = app.add_subcommand(
       "simulate",
       "Free flight: the joints follow the keyframed motion, the body's orientation and position "
       "follow Newton's laws; reports how far the landing is from the last keyframe");
-  add_common(simulate, simulate_args);
+  add_common(simulate, simulate_args, saltus::OptionUse::kEvaluation);
 
-  OptimizeArgs optimize_args;
+  CommonArgs optimize_args;
   CLI::App* optimize = app.add_subcommand(
       "optimize",
       "Optimise the motion so it obeys Newton's laws as nearly as possible while keeping the "
       "keyframes within tolerance (paper eqs. 1-4), keyframe times included; writes before/after "
       "trajectories, result.json and optimized.motion.json. Exit status 3 if Ipopt does not "
       "converge (results are still written)");
-  add_optimize(optimize, optimize_args);
+  add_common(optimize, optimize_args, saltus::OptionUse::kOptimization);
 
   CLI::App* study = app.add_subcommand(
       "study", "The paper's experiments: the convergence study (§3.4) and the mass study (§6.1)");

@@ -113,8 +113,8 @@ TEST_F(CompareWindowTest, AnotherModelIsOptimisedLikeTheRunShown) {
   // The paper's Fig. 8 explored: the optimised motion with the given masses against the
   // optimised motion with heavier thighs, the joint loads of both.
   OptimizeSettings s;
-  s.max_iterations = 4;
-  s.samples = 31;
+  s.set("max_iterations", 4);
+  s.set("samples", 31);
   QString error;
   ASSERT_TRUE(window_->runs().start(s, &error)) << error.toStdString();
   ASSERT_TRUE(window_->runs().wait(300000));
@@ -143,8 +143,8 @@ TEST_F(CompareWindowTest, BeforeAndAfterOfAnOptimisation) {
   EXPECT_FALSE(window_->compare().compare_before_after(&error));  // nothing optimised yet
   EXPECT_FALSE(error.isEmpty());
   OptimizeSettings s;
-  s.max_iterations = 2;
-  s.samples = 21;
+  s.set("max_iterations", 2);
+  s.set("samples", 21);
   ASSERT_TRUE(window_->runs().start(s, &error)) << error.toStdString();
   ASSERT_TRUE(window_->runs().wait(300000));
   ASSERT_TRUE(window_->document().has_optimization());

@@ -72,8 +72,8 @@ class MainWindowTest : public ::testing::Test {
 
   OptimizeSettings few_iterations() const {
     OptimizeSettings s;
-    s.max_iterations = 3;
-    s.samples = 31;
+    s.set("max_iterations", 3);
+    s.set("samples", 31);
     return s;
   }
 
@@ -118,17 +118,17 @@ TEST(MainWindowSettings, RemembersPanelValuesAndRecentFiles) {
     first.show();
     ASSERT_TRUE(first.open_motion(motion_path()));
     OptimizeSettings s;
-    s.max_iterations = 2;
-    s.samples = 21;
-    s.optimize_timing = false;
+    s.set("max_iterations", 2);
+    s.set("samples", 21);
+    s.set("optimize_timing", false);
     ASSERT_TRUE(first.runs().start(s));
     ASSERT_TRUE(first.runs().wait(300000));
     first.close();
   }
   MainWindow second(true);
-  EXPECT_EQ(second.runs().settings().max_iterations, 2);
-  EXPECT_EQ(second.runs().settings().samples, 21);
-  EXPECT_FALSE(second.runs().settings().optimize_timing);
+  EXPECT_EQ(second.runs().settings().integer("max_iterations"), 2);
+  EXPECT_EQ(second.runs().settings().integer("samples"), 21);
+  EXPECT_FALSE(second.runs().settings().on("optimize_timing"));
   const QStringList recent = QSettings().value("files/recent").toStringList();
   ASSERT_FALSE(recent.isEmpty());
   EXPECT_EQ(QFileInfo(recent.front()).fileName(), QFileInfo(motion_path()).fileName());
@@ -194,7 +194,7 @@ TEST_F(MainWindowTest, OptimisesInTheBackgroundAndMatchesTheBaseline) {
 
 TEST_F(MainWindowTest, CancelStopsTheOptimisationAtTheNextIteration) {
   OptimizeSettings many = few_iterations();
-  many.max_iterations = 500;
+  many.set("max_iterations", 500);
   ASSERT_TRUE(window_->runs().start(many));
   // Cancel once the solver is iterating (or at once if it is quick to get there).
   QElapsedTimer clock;

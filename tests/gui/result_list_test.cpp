@@ -28,8 +28,8 @@ class ResultListTest : public test::OpenMotionTest {
   /// Runs to the end (or cancels after `cancel_after_ms`) and returns the run's index.
   int run(int max_iterations, int cancel_after_ms = -1) {
     OptimizeSettings s;
-    s.max_iterations = max_iterations;
-    s.samples = 31;
+    s.set("max_iterations", max_iterations);
+    s.set("samples", 31);
     QString error;
     EXPECT_TRUE(window_->runs().start(s, &error)) << error.toStdString();
     if (cancel_after_ms >= 0) {
@@ -94,8 +94,8 @@ TEST_F(ResultListTest, ASolvedRunStaysShownWhateverComesAfter) {
 
 TEST_F(ResultListTest, TheProgressShowsIterationsNotAShareOfTheLimit) {
   OptimizeSettings s;
-  s.max_iterations = 300;
-  s.samples = 31;
+  s.set("max_iterations", 300);
+  s.set("samples", 31);
   ASSERT_TRUE(window_->runs().start(s));
   auto* bar = window_->runs().panel()->findChild<QProgressBar*>();
   ASSERT_NE(bar, nullptr);

@@ -6,7 +6,7 @@
 
 #include <QApplication>
 #include <QComboBox>
-#include <QDoubleSpinBox>
+#include <QLineEdit>
 #include <QSpinBox>
 #include <QTest>
 
@@ -64,7 +64,7 @@ TEST_F(ShortcutScopeTest, KeysInTheSamplesBoxStayInTheBox) {
   // Digits and letters are typed, not taken as camera or stage keys.
   press(samples, Qt::Key_3);
   EXPECT_EQ(window_->view().camera(), CameraPreset::kFollow);
-  auto* epsilon = window_->runs().panel()->findChild<QDoubleSpinBox*>("max_joint_turn");
+  auto* epsilon = window_->runs().panel()->findChild<QLineEdit*>("max_joint_turn");
   ASSERT_NE(epsilon, nullptr);
   press(epsilon, Qt::Key_B);
   press(epsilon, Qt::Key_R);

@@ -121,7 +121,7 @@ TEST_F(UndoTest, OptionEditsUndoToo) {
   // Two arrow clicks in quick succession: one step.
   samples->stepUp();
   samples->stepUp();
-  EXPECT_EQ(window_->runs().settings().samples, before + 2);
+  EXPECT_EQ(window_->runs().settings().integer("samples"), before + 2);
   EXPECT_EQ(stack()->count(), 1);
   EXPECT_NE(stack()->undoText().indexOf("samples"), -1) << stack()->undoText().toStdString();
   window_->edits().undo();
@@ -132,8 +132,8 @@ TEST_F(UndoTest, OptionEditsUndoToo) {
 
 TEST_F(UndoTest, UndoingAnEditBringsBackTheRunItMadeStale) {
   OptimizeSettings s;
-  s.max_iterations = 4;
-  s.samples = 31;
+  s.set("max_iterations", 4);
+  s.set("samples", 31);
   QString error;
   ASSERT_TRUE(window_->runs().start(s, &error)) << error.toStdString();
   ASSERT_TRUE(window_->runs().wait(300000));

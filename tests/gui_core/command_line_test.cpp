@@ -1,6 +1,9 @@
-// saltus-gui's command line: batch flags, positional motion vs result folders, bad usage.
+// saltus-gui's command line: batch flags, positional motion vs result folders, the option
+// table's optimiser flags, bad usage.
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "core/command_line.h"
 
@@ -21,7 +24,9 @@ TEST(CommandLine, ScreenshotRunIsBatch) {
                                             "1.25", "--screenshot", "s.png", "--size", "800x600",
                                             "--camera", "follow", "--stage", "before"});
   EXPECT_TRUE(c.batch());
-  EXPECT_EQ(c.max_iterations, 5);
+  ASSERT_EQ(c.options.size(), 1u);
+  EXPECT_EQ(c.options[0].first, "max_iterations");
+  EXPECT_EQ(c.options[0].second, OptionValue(5));
   EXPECT_DOUBLE_EQ(*c.time, 1.25);
   EXPECT_EQ(c.screenshot, "s.png");
   EXPECT_EQ(c.width, 800);
@@ -70,6 +75,76 @@ TEST(CommandLine, BenchmarkWithSeconds) {
   EXPECT_DOUBLE_EQ(c.benchmark_seconds, 3.0);
 }
 
+/// A value of the option other than its default.
+OptionValue other_value(const OptionSpec& spec) {
+  const OptionValue standard = spec.default_value();
+  switch (spec.kind) {
+    case OptionKind::kSwitch:
+      return !std::get<bool>(standard);
+    case OptionKind::kChoice:
+      return spec.choices[std::get<std::string>(standard) == spec.choices[0] ? 1 : 0];
+    case OptionKind::kInteger:
+      return standard == OptionValue(static_cast<int>(spec.min)) ? static_cast<int>(spec.min) + 1
+                                                                 : static_cast<int>(spec.min);
+    case OptionKind::kReal:
+      break;
+  }
+  const double low = spec.min_exclusive ? spec.min + 0.5 : spec.min;
+  return standard == OptionValue(low) ? low + 1 : low;
+}
+
+TEST(CommandLine, TakesEveryOptimiserOptionOfTheTable) {
+  std::vector<std::string> args{"m.json", "--optimize"};
+  OptimizeSettings panel;  // what the Optimise panel shows
+  panel.set("samples", 31);
+  OptimizeSettings expected = panel;
+  for (const OptionSpec& spec : option_table()) {
+    const OptionValue value = other_value(spec);
+    args.push_back(spec.flag);
+    if (spec.kind != OptionKind::kSwitch) args.push_back(option_value_text(value));
+    expected.set(spec.name, value);
+  }
+  const CommandLine c = parse_command_line(args);
+  EXPECT_EQ(c.options.size(), option_table().size());
+  EXPECT_EQ(c.applied_to(panel), expected);
+  // Only what is given changes the panel's values; a word stands for itself.
+  const CommandLine some = parse_command_line({"m.json", "--max-iter", "9", "--threads", "auto"});
+  OptimizeSettings changed = panel;
+  changed.set("max_iterations", 9);
+  changed.set("threads", std::string("auto"));
+  EXPECT_EQ(some.applied_to(panel), changed);
+  // Knots: a number, or auto (the automatic resolution) over a panel that had a number.
+  OptimizeSettings numbered = panel;
+  numbered.set("knots_per_interval", 3);
+  const CommandLine automatic = parse_command_line({"m.json", "--knots-per-interval", "auto"});
+  EXPECT_TRUE(automatic.applied_to(numbered).optimize_options().automatic_resolution);
+  EXPECT_EQ(automatic.applied_to(numbered), panel);
+  // The help text lists the table's flags with their defaults.
+  const std::string usage = usage_text();
+  for (const OptionSpec& spec : option_table())
+    EXPECT_NE(usage.find(spec.flag), std::string::npos) << spec.flag;
+  EXPECT_NE(usage.find("--max-iter INT=300"), std::string::npos) << usage;
+}
+
+TEST(CommandLine, OptionValuesAreCheckedByTheTable) {
+  for (const OptionSpec& spec : option_table()) {
+    if (spec.kind == OptionKind::kSwitch) continue;
+    // Not a value of any option; and for numbers, just past the range.
+    std::vector<std::string> bad{"nonsense"};
+    if (spec.kind == OptionKind::kInteger) bad.push_back(std::to_string(int(spec.min) - 1));
+    if (spec.kind == OptionKind::kReal && !std::isinf(spec.max))
+      bad.push_back(option_value_text(spec.max + 1));
+    for (const std::string& text : bad) {
+      try {
+        parse_command_line({"m.json", spec.flag, text});
+        ADD_FAILURE() << "accepted " << spec.flag << " " << text;
+      } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find(spec.flag), std::string::npos) << e.what();
+      }
+    }
+  }
+}
+
 TEST(CommandLine, RejectsBadUsage) {
   for (const std::vector<std::string>& bad : std::vector<std::vector<std::string>>{
            {"--export-figures", "figs"},
@@ -86,9 +161,15 @@ TEST(CommandLine, RejectsBadUsage) {
            {"m.json", "--frobnicate"},
            {"a.json", "b.json"},
            {"m.json", "--screenshot", "--optimize"},
+           {"m.json", "--seconds", "0"},
+           {"m.json", "--size", "800x"},
+           {"m.json", "--size", "x600"},
+           {"m.json", "--size", "800x600x2"},
        })
     EXPECT_THROW(parse_command_line(bad), std::invalid_argument) << bad.back();
   EXPECT_TRUE(parse_command_line({"--help"}).help);
+  EXPECT_TRUE(parse_command_line({"-h"}).help);
+  EXPECT_TRUE(parse_command_line({"--version"}).version);
   EXPECT_NE(usage_text().find("--export-figures DIR RESULT_DIR"), std::string::npos);
 }
 

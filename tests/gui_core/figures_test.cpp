@@ -10,25 +10,30 @@
 namespace saltus::gui {
 namespace {
 
+/// An optimisation folder as the library reads it (read_result_folder), not on disk: its
+/// curves come from its CSV samples.
 ResultFolder folder(const std::string& name, double before, double after) {
   ResultFolder f;
   f.path = "/nonexistent/" + name;
   f.name = name;
-  f.motion = "M1 straight back somersault";
-  f.status = "solved";
-  f.formulation = "relaxed";
-  f.iterations = 25;
-  f.avg_root_force_before = before;
-  f.avg_root_force_after = after;
-  for (WrenchSeries* w : {&f.before, &f.after}) {
-    w->time = {0.0, 1.0, 2.0};
-    for (auto& c : w->component)
-      c = {1.0, -2.0, 3.0};
-    w->force_magnitude = {1.7, 3.5, 5.2};
-    w->moment_magnitude = {1.7, 3.5, 5.2};
+  f.result.kind = ResultJson::Kind::kOptimization;
+  f.result.motion = "M1 straight back somersault";
+  f.result.status = "solved";
+  f.result.options = {{"formulation", std::string("relaxed")}};
+  f.result.before.avg_root_force = before;
+  f.result.keyframe_times_before = {0.0, 1.0, 2.0};
+  ResultJson::Optimization o;
+  o.iterations = 25;
+  o.after.avg_root_force = after;
+  o.keyframe_times_after = {0.0, 1.1, 2.0};
+  f.result.optimization = o;
+  for (double t : {0.0, 1.0, 2.0}) {
+    SampleRecord r;
+    r.time = t;
+    r.root_wrench << 1.0, -2.0, 3.0, 1.0, -2.0, 3.0;
+    f.before.samples.push_back(r);
   }
-  f.keyframe_times_before = {0.0, 1.0, 2.0};
-  f.keyframe_times_after = {0.0, 1.1, 2.0};
+  f.after = f.before;
   return f;
 }
 
@@ -92,13 +97,17 @@ TEST(Figures, MassStudyPanelsNameTheSegmentsAsPeopleDo) {
   f.path = "/nonexistent";
   f.name = "mass-M7";
   f.motion = "M7";
-  f.run_labels = {"given", "thigh_l+thigh_r x1.5"};
+  f.runs[0].label = "given";
+  f.runs[1].label = "thigh_l+thigh_r x1.5";
+  f.scaled_segments = {"thigh_l", "thigh_r"};
+  f.factor = 1.5;
   f.loads.time = {0.0, 1.0};
-  SegmentLoadSeries s;
-  s.segment = "thigh_r";
-  s.force = {std::vector<double>{1, 2}, std::vector<double>{3, 4}};
-  s.moment = {std::vector<double>{5, 6}, std::vector<double>{7, 8}};
-  f.loads.segments = {s};
+  f.loads.load_segments = {"thigh_r"};
+  f.loads.loads.resize(1);
+  f.loads.loads[0][0].force_N = {1, 2};
+  f.loads.loads[0][0].moment_Nm = {5, 6};
+  f.loads.loads[0][1].force_N = {3, 4};
+  f.loads.loads[0][1].moment_Nm = {7, 8};
   const std::vector<FigureGrid> grids = mass_study_load_figures({f});
   ASSERT_EQ(grids.size(), 1u);
   ASSERT_EQ(grids[0].panels.size(), 2u);
@@ -106,6 +115,7 @@ TEST(Figures, MassStudyPanelsNameTheSegmentsAsPeopleDo) {
       << grids[0].panels[0].title;
   EXPECT_EQ(grids[0].panels[0].title.find("thigh_r"), std::string::npos);
   EXPECT_EQ(grids[0].panels[1].lines[1].y, (std::vector<double>{7, 8}));
+  EXPECT_EQ(grids[0].panels[0].lines[1].label, "model with left and right thighs × 1.5");
 }
 
 }  // namespace

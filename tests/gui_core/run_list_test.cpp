@@ -86,12 +86,12 @@ TEST(RunList, CountsUnsavedRunsAndLabelsThemInWords) {
 TEST(RunList, SettingsSummaryNamesWhatARunUsed) {
   OptimizeSettings s;
   EXPECT_EQ(settings_summary(s), "relaxed, times free, knots auto, 101 samples, joint turn ≤ 180°");
-  s.knots_per_interval = 1;
+  s.set("knots_per_interval", 1);
   EXPECT_EQ(settings_summary(s), "relaxed, times free, K = 1, 101 samples, joint turn ≤ 180°");
-  s.strict = true;
-  s.epsilon = 50;
-  s.optimize_timing = false;
-  s.max_joint_turn_deg = 0;
+  s.set("formulation", std::string("strict"));
+  s.set("epsilon", 50.0);
+  s.set("optimize_timing", false);
+  s.set("max_joint_turn", 0.0);
   EXPECT_EQ(settings_summary(s), "strict, ε = 50, times fixed, K = 1, 101 samples");
 }
 

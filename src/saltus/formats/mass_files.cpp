@@ -2,16 +2,24 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <iterator>
 #include <map>
 #include <sstream>
 
+#include "saltus/base/input_error.h"
+#include "saltus/base/json_reader.h"
 #include "saltus/base/text_format.h"
 #include "saltus/formats/model_file.h"
 #include "saltus/formats/output_folder.h"
+#include "saltus/formats/result_json.h"
 
 namespace saltus {
 
 namespace {
+
+/// The quantities of one run and segment in mass.csv, in column order.
+const char* const kLoadColumns[8] = {"fx", "fy", "fz", "mx", "my", "mz", "force_N", "moment_Nm"};
 
 /// Joint wrench (force first) of `segment` at every sample of an evaluation.
 const Vector6d& load(const SampleRecord& sample, int segment) {
@@ -22,12 +30,11 @@ const Vector6d& load(const SampleRecord& sample, int segment) {
 
 std::string mass_study_csv(const MassStudyResult& study) {
   std::ostringstream out;
-  const char* prefix[] = {"given", "scaled"};
   out << 't';
   for (std::size_t r = 0; r < study.runs.size(); ++r)
     for (const std::string& s : study.load_segments)
-      for (const char* q : {"fx", "fy", "fz", "mx", "my", "mz", "force_N", "moment_Nm"})
-        out << ',' << prefix[r] << '.' << s << '.' << q;
+      for (const char* q : kLoadColumns)
+        out << ',' << kMassRunPrefixes.at(r) << '.' << s << '.' << q;
   out << '\n';
   out.precision(10);
   const std::size_t samples = study.runs.front().result.after.samples.size();
@@ -114,6 +121,122 @@ nlohmann::json write_mass_outputs(const std::string& out_dir, const MotionFile& 
   write_text(folder.file("result.json"), result.dump(2) + "\n");
   folder.commit();
   return result;
+}
+
+MassCsv read_mass_csv(const std::string& path) {
+  return parse_mass_csv(read_csv_table(path), path);
+}
+
+MassCsv parse_mass_csv(const CsvTable& table, const std::string& file) {
+  const std::vector<std::string>& columns = table.columns;
+  const std::size_t per_segment = std::size(kLoadColumns);
+  if (columns.empty() || columns[0] != "t" || (columns.size() - 1) % (2 * per_segment) != 0)
+    throw InputError(file, "line 1",
+                     "expected t, then per run (given, scaled) and load segment the columns "
+                     "<run>.<segment>.fx ... moment_Nm");
+  MassCsv out;
+  out.time = table.column_values("t", file);
+  const std::size_t segments = (columns.size() - 1) / (2 * per_segment);
+  const std::string first_suffix = std::string(".") + kLoadColumns[0];
+  for (std::size_t s = 0; s < segments; ++s) {
+    // given.<segment>.fx names the segment; every other column must follow it.
+    const std::string& first = columns[1 + s * per_segment];
+    const std::string prefix = std::string(kMassRunPrefixes[0]) + ".";
+    if (first.rfind(prefix, 0) != 0 || first.size() <= prefix.size() + first_suffix.size() ||
+        first.compare(first.size() - first_suffix.size(), first_suffix.size(), first_suffix) != 0)
+      throw InputError(file, "line 1",
+                       "column " + std::to_string(2 + s * per_segment) + " is \"" + first +
+                           "\", expected given.<segment>.fx");
+    out.load_segments.push_back(
+        first.substr(prefix.size(), first.size() - prefix.size() - first_suffix.size()));
+  }
+  for (const std::string& segment : out.load_segments) {
+    std::array<MassLoads, 2> runs;
+    for (std::size_t r = 0; r < 2; ++r) {
+      const std::string stem = std::string(kMassRunPrefixes[r]) + "." + segment + ".";
+      std::vector<std::vector<double>> values;
+      for (const char* q : kLoadColumns)
+        values.push_back(table.column_values(stem + q, file));
+      MassLoads& loads = runs[r];
+      for (std::size_t k = 0; k < out.time.size(); ++k) {
+        Vector6d w;
+        for (int i = 0; i < 6; ++i)
+          w[i] = values[static_cast<std::size_t>(i)][k];
+        loads.wrench.push_back(w);
+      }
+      loads.force_N = values[6];
+      loads.moment_Nm = values[7];
+    }
+    out.loads.push_back(std::move(runs));
+  }
+  return out;
+}
+
+namespace {
+
+std::vector<std::string> string_list(const JsonNode& node) {
+  node.require_array();
+  std::vector<std::string> list;
+  for (std::size_t i = 0; i < node.size(); ++i)
+    list.push_back(node.at(i).as_string());
+  return list;
+}
+
+/// result.json of a mass study; the folder's path, name and mass.csv are left to the caller.
+MassStudyFolder parse_mass_result(const nlohmann::json& document, const std::string& file) {
+  const JsonNode root(document, file);
+  root.require_object();
+  if (root.at("study").as_string() != "mass")
+    throw InputError(file, "/study", "not \"mass\" (not a `saltus study mass` folder)");
+  MassStudyFolder out;
+  out.motion = root.at("motion").as_string();
+  out.motion_file = root.at("motion_file").as_string();
+  out.factor = root.at("factor").as_double();
+  out.scaled_segments = string_list(root.at("scaled_segments"));
+  out.load_segments = string_list(root.at("load_segments"));
+  const JsonNode runs = root.at("runs");
+  runs.require_array();
+  if (runs.size() != 2)
+    throw InputError(file, runs.path_or_root(),
+                     "expected two runs (given and scaled), found " + std::to_string(runs.size()));
+  for (std::size_t r = 0; r < 2; ++r) {
+    const JsonNode run = runs.at(r);
+    MassStudyFolder::Run& to = out.runs[r];
+    to.label = run.at("label").as_string();
+    to.model = run.at("model").as_string();
+    to.status = run.at("status").as_string();
+    to.iterations = run.at("iterations").as_int();
+    to.avg_force_before_N = run.at("avg_force_before_N").as_double();
+    to.avg_force_after_N = run.at("avg_force_after_N").as_double();
+  }
+  return out;
+}
+
+}  // namespace
+
+bool is_mass_study_folder(const std::string& dir) {
+  const std::filesystem::path result = std::filesystem::path(dir) / "result.json";
+  if (!std::filesystem::is_regular_file(result)) return false;
+  try {
+    const nlohmann::json document = read_json_file(result.string());
+    return document.is_object() && document.value("study", std::string()) == "mass";
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+MassStudyFolder read_mass_study_folder(const std::string& dir) {
+  const std::string what = "a `saltus study mass` output folder";
+  const std::string result_path = output_file(dir, "result.json", what);
+  MassStudyFolder out = parse_mass_result(read_json_file(result_path), result_path);
+  out.path = dir;
+  out.name = folder_name(dir);
+  const std::string csv = output_file(dir, "mass.csv", what);
+  out.loads = read_mass_csv(csv);
+  if (out.loads.load_segments != out.load_segments)
+    throw InputError(csv, "line 1",
+                     "its load segments differ from result.json's \"load_segments\"");
+  return out;
 }
 
 }  // namespace saltus

@@ -15,7 +15,7 @@ namespace saltus {
 
 namespace {
 
-constexpr const char* kModelFormat = "saltus-model/1";
+constexpr const char* kModelFormat = kModelFormatTag;
 constexpr const char* kRootJoint = "root";
 
 std::string in_quotes(const std::string& text) {

@@ -9,6 +9,9 @@
 
 namespace saltus {
 
+/// The file's "format".
+inline constexpr const char* kModelFormatTag = "saltus-model/1";
+
 /// Parses and validates a "saltus-model/1" document. `file` is used in error messages only.
 /// Validation: format tag, unique segment and joint names, root first with parent null and joint
 /// "root", every other parent named earlier in the list (so no cycles, topological order), finite

@@ -22,7 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kMotionFormat = "saltus-motion/1";
+constexpr const char* kMotionFormat = kMotionFormatTag;
 /// DESIGN §2: files may be off unit norm by rounding; worse than this is a mistake, not noise.
 constexpr double kQuaternionNormTolerance = 1e-3;
 /// The first keyframe time must be 0; allow only printing noise so "0.0" and "1e-15" both work.

@@ -9,6 +9,9 @@
 
 namespace saltus {
 
+/// The file's "format".
+inline constexpr const char* kMotionFormatTag = "saltus-motion/1";
+
 /// Parses and validates a "saltus-motion/1" document against `model` (every keyframe must give
 /// every joint of the model, no unknown joints). `file` is used in messages. Normalises
 /// quaternions off by at most 1e-3 in norm; rejects worse. Throws InputError naming file and

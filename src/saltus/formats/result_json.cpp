@@ -1,9 +1,14 @@
 #include "saltus/formats/result_json.h"
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <variant>
 
+#include "saltus/base/constants.h"
+#include "saltus/base/input_error.h"
 #include "saltus/base/json_reader.h"
 #include "saltus/base/text_format.h"
 #include "saltus/formats/finite_check.h"
@@ -14,10 +19,21 @@
 
 namespace saltus {
 
+namespace {
+
+/// The keys of a before/after block (DESIGN §6) and the figures they hold.
+const std::pair<const char*, double ForceMetrics::*> kForceMetricKeys[6] = {
+    {"objective", &ForceMetrics::objective},     {"avg_root_force", &ForceMetrics::avg_root_force},
+    {"rms_force_N", &ForceMetrics::rms_force_N}, {"rms_moment_Nm", &ForceMetrics::rms_moment_Nm},
+    {"max_force_N", &ForceMetrics::max_force_N}, {"max_moment_Nm", &ForceMetrics::max_moment_Nm}};
+
+}  // namespace
+
 nlohmann::json force_metrics_to_json(const ForceMetrics& m) {
-  return {{"objective", m.objective},     {"avg_root_force", m.avg_root_force},
-          {"rms_force_N", m.rms_force_N}, {"rms_moment_Nm", m.rms_moment_Nm},
-          {"max_force_N", m.max_force_N}, {"max_moment_Nm", m.max_moment_Nm}};
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [key, field] : kForceMetricKeys)
+    j[key] = m.*field;
+  return j;
 }
 
 namespace {
@@ -26,26 +42,8 @@ nlohmann::json vector_json(const Eigen::Vector3d& v) {
   return {v.x(), v.y(), v.z()};
 }
 
-/// Fields shared by every result.json; optimiser-only ones are null here.
-nlohmann::json base_result(const MotionFile& file, const EvaluateOptions& options,
-                           const std::string& status) {
-  nlohmann::json r;
-  r["format"] = "saltus-result/1";
-  r["status"] = status;
-  r["motion"] = file.motion.name;
-  r["motion_file"] = file.path;
-  r["model"] = file.model.name;
-  r["samples"] = options.samples;
-  r["knots_per_interval"] = options.interpolation.knots_per_interval;
-  r["flight_time_s"] = file.motion.flight_time();
-  r["keyframes"] = file.motion.keyframes.size();
-  r["iterations"] = nullptr;
-  r["solve_seconds"] = nullptr;
-  r["variables"] = nullptr;
-  r["constraints"] = nullptr;
-  r["after"] = nullptr;
-  r["keyframe_times_after"] = nullptr;
-  return r;
+nlohmann::json option_json(const OptionValue& value) {
+  return std::visit([](const auto& v) { return nlohmann::json(v); }, value);
 }
 
 /// Composes the file in memory, then writes it (write_text: the message of a failed write names
@@ -82,56 +80,386 @@ nlohmann::json write_outputs(const std::string& out_dir, const MotionFile& file,
   return result;
 }
 
-/// How the reported residual figures were computed (DESIGN §6).
-nlohmann::json residual_check_json(const DenseCheck& check) {
-  return {{"rule", "Simpson's rule on every knot span, " + std::to_string(kCheckPointsPerSpan) +
-                       " or more intervals per span, " + format_number("%g", kCheckMaxSpacing) +
-                       " s apart or closer, and at least the samples over the flight"},
-          {"points", check.points}};
+/// The fields every result shares.
+ResultJson common_result(const MotionFile& file, ResultJson::Kind kind, const std::string& status,
+                         int knots_per_interval) {
+  ResultJson r;
+  r.kind = kind;
+  r.status = status;
+  r.motion = file.motion.name;
+  r.motion_file = file.path;
+  r.model = file.model.name;
+  r.knots_per_interval = knots_per_interval;
+  r.flight_time_s = file.motion.flight_time();
+  r.keyframes = static_cast<int>(file.motion.keyframes.size());
+  return r;
 }
 
-void put_keyframe_errors(nlohmann::json& r, const KeyframeErrors& e) {
-  r["max_translation_error_m"] = e.max_translation_error_m;
-  r["max_quaternion_error"] = e.max_quaternion_error;
-  r["max_rotation_error_deg"] = e.max_rotation_error_deg;
+/// The same for an evaluation or a simulation, with the options it records.
+ResultJson common_result(const MotionFile& file, ResultJson::Kind kind, const std::string& status,
+                         const EvaluateOptions& options) {
+  ResultJson r = common_result(file, kind, status, options.interpolation.knots_per_interval);
+  r.options = recorded_options(with_evaluation_options(options), false);
+  return r;
+}
+
+/// How the reported residual figures were computed (DESIGN §6).
+ResultJson::ResidualCheck residual_check(const DenseCheck& check) {
+  ResultJson::ResidualCheck c;
+  c.rule = "Simpson's rule on every knot span, " + std::to_string(kCheckPointsPerSpan) +
+           " or more intervals per span, " + format_number("%g", kCheckMaxSpacing) +
+           " s apart or closer, and at least the samples over the flight";
+  c.points = check.points;
+  return c;
+}
+
+/// A before/after block with the optimiser's own objective beside the dense check's figures.
+nlohmann::json metrics_json(const ForceMetrics& metrics, const std::optional<double>& optimizer) {
+  nlohmann::json j = force_metrics_to_json(metrics);
+  if (optimizer) {
+    j["optimizer_objective"] = *optimizer;
+    j["optimizer_avg_root_force"] = std::sqrt(*optimizer / 6.0);
+  }
+  return j;
+}
+
+nlohmann::json resolution_json(const ResultJson::Optimization::Resolution& resolution) {
+  nlohmann::json levels = nlohmann::json::array();
+  for (const OptimizationResult::Level& level : resolution.levels)
+    levels.push_back({{"subdivisions", level.subdivisions},
+                      {"avg_root_force", level.avg_root_force},
+                      {"iterations", level.iterations},
+                      {"status", level.status}});
+  return {{"automatic", resolution.automatic},
+          {"subdivisions", resolution.subdivisions},
+          {"knots", resolution.knots},
+          {"levels", levels}};
+}
+
+bool read_bool(const JsonNode& node) {
+  if (!node.value().is_boolean()) node.fail("expected true or false");
+  return node.value().get<bool>();
+}
+
+ForceMetrics read_force_metrics(const JsonNode& node) {
+  node.require_object();
+  ForceMetrics m;
+  for (const auto& [key, field] : kForceMetricKeys)
+    m.*field = node.at(key).as_double();
+  return m;
+}
+
+/// The JSON value of a recorded option, as the option's kind reads it.
+OptionValue read_option(const OptionSpec& spec, const JsonNode& node) {
+  const nlohmann::json& v = node.value();
+  OptionValue value;
+  if (spec.kind == OptionKind::kSwitch)
+    value = read_bool(node);
+  else if (v.is_string())
+    value = v.get<std::string>();
+  else if (spec.kind == OptionKind::kInteger)
+    value = node.as_int();
+  else if (spec.kind == OptionKind::kReal)
+    value = node.as_double();
+  else
+    node.fail("expected one of " + option_range_text(spec));
+  try {
+    return checked_option_value(spec, value);
+  } catch (const OptionValueError& e) {
+    node.fail(e.problem());
+  }
+}
+
+/// An array of whole numbers, each at least `min` ("subdivisions": spans per interval).
+std::vector<int> read_int_array(const JsonNode& node, int min) {
+  node.require_array();
+  std::vector<int> out;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const JsonNode item = node.at(i);
+    out.push_back(item.as_int());
+    if (out.back() < min) item.fail("expected a whole number of at least " + std::to_string(min));
+  }
+  return out;
+}
+
+ResultJson::Optimization::Resolution read_resolution(const JsonNode& node) {
+  node.require_object();
+  ResultJson::Optimization::Resolution r;
+  r.automatic = read_bool(node.at("automatic"));
+  r.subdivisions = read_int_array(node.at("subdivisions"), 1);
+  r.knots = node.at("knots").as_double_array();
+  const JsonNode levels = node.at("levels");
+  levels.require_array();
+  for (std::size_t i = 0; i < levels.size(); ++i) {
+    const JsonNode level = levels.at(i);
+    level.require_object();
+    OptimizationResult::Level l;
+    l.subdivisions = read_int_array(level.at("subdivisions"), 1);
+    l.avg_root_force = level.at("avg_root_force").as_double();
+    l.iterations = level.at("iterations").as_int();
+    l.status = level.at("status").as_string();
+    r.levels.push_back(std::move(l));
+  }
+  return r;
+}
+
+bool records(const OptionSpec& spec, ResultJson::Kind kind) {
+  return spec.recorded == ResultRecord::kEveryResult ||
+         (spec.recorded == ResultRecord::kOptimization && kind == ResultJson::Kind::kOptimization);
 }
 
 }  // namespace
 
+std::optional<OptionValue> ResultJson::option(const std::string& result_key) const {
+  for (const auto& [key, value] : options)
+    if (key == result_key) return value;
+  return std::nullopt;
+}
+
+nlohmann::json result_to_json(const ResultJson& r) {
+  nlohmann::json j;
+  j["format"] = r.format;
+  j["status"] = r.status;
+  j["motion"] = r.motion;
+  j["motion_file"] = r.motion_file;
+  j["model"] = r.model;
+  j["knots_per_interval"] = r.knots_per_interval;
+  j["flight_time_s"] = r.flight_time_s;
+  j["keyframes"] = r.keyframes;
+  for (const auto& [key, value] : r.options)
+    j[key] = option_json(value);
+  const auto& o = r.optimization;
+  j["before"] = metrics_json(r.before, o ? o->optimizer_objective_before : std::nullopt);
+  j["keyframe_times_before"] = r.keyframe_times_before;
+  if (const auto& c = r.residual_check) {
+    j["residual_check"] = {{"rule", c->rule}, {"points", c->points}};
+    if (c->optimizer_agrees) j["residual_check"]["optimizer_agrees"] = *c->optimizer_agrees;
+  }
+  const KeyframeErrors* e = r.keyframe_errors ? &*r.keyframe_errors : nullptr;
+  j["max_translation_error_m"] = e ? nlohmann::json(e->max_translation_error_m) : nullptr;
+  j["max_quaternion_error"] = e ? nlohmann::json(e->max_quaternion_error) : nullptr;
+  j["max_rotation_error_deg"] = e ? nlohmann::json(e->max_rotation_error_deg) : nullptr;
+  if (r.takeoff_angular_momentum)
+    j["takeoff_angular_momentum"] = vector_json(*r.takeoff_angular_momentum);
+  if (const auto& s = r.simulation) {
+    j["takeoff_angular_momentum_source"] = s->angular_momentum_source;
+    nlohmann::json joints = nlohmann::json::object();
+    for (const auto& [name, deg] : s->landing_joint_error_deg)
+      joints[name] = deg;
+    j["landing"] = {{"root_error_deg", s->landing_root_error_deg},
+                    {"joint_error_deg", joints},
+                    {"com_error_m", s->landing_com_error_m}};
+    if (s->landing_root_vs_motion_deg)
+      j["landing"]["root_vs_motion_deg"] = *s->landing_root_vs_motion_deg;
+    if (s->angular_momentum_spread) j["angular_momentum_spread"] = *s->angular_momentum_spread;
+  }
+  // Evaluations and simulations keep the optimiser's DESIGN §6 fields, as null.
+  j["iterations"] = o ? nlohmann::json(o->iterations) : nullptr;
+  j["solve_seconds"] = o ? nlohmann::json(o->solve_seconds) : nullptr;
+  j["variables"] = o ? nlohmann::json(o->variables) : nullptr;
+  j["constraints"] = o ? nlohmann::json(o->constraints) : nullptr;
+  j["after"] = o ? metrics_json(o->after, o->optimizer_objective_after) : nullptr;
+  j["keyframe_times_after"] = o ? nlohmann::json(o->keyframe_times_after) : nullptr;
+  if (o && o->keyframe_time_spreads) {
+    j["keyframe_time_spread_s"] = *o->keyframe_time_spreads;
+    j["keyframe_times_undetermined"] = o->keyframe_times_undetermined;
+  }
+  if (o && o->ipopt_status) j["ipopt_status"] = *o->ipopt_status;
+  if (o && o->restarts) j["restarts"] = *o->restarts;
+  if (o && o->tolerances)
+    j["tolerances"] = {{"translation_m", o->tolerances->translation_m},
+                       {"quaternion", o->tolerances->quaternion}};
+  if (o && o->resolution) j["resolution"] = resolution_json(*o->resolution);
+  if (o && o->largest_joint_turn_deg)
+    j["largest_joint_turn_deg"] = {{"before", o->largest_joint_turn_deg->first},
+                                   {"after", o->largest_joint_turn_deg->second}};
+  return j;
+}
+
+ResultJson parse_result_json(const nlohmann::json& document, const std::string& file) {
+  const JsonNode root(document, file);
+  root.require_object();
+  ResultJson r;
+  const JsonNode format = root.at("format");
+  r.format = format.as_string();
+  if (r.format != kResultFormatTag)
+    format.fail("expected \"" + std::string(kResultFormatTag) + "\", found \"" + r.format +
+                "\" (not a saltus evaluate, simulate or optimize result)");
+  r.status = root.at("status").as_string();
+  if (r.status == "evaluated")
+    r.kind = ResultJson::Kind::kEvaluation;
+  else if (root.find("landing"))
+    r.kind = ResultJson::Kind::kSimulation;
+  else if (root.find("after"))
+    r.kind = ResultJson::Kind::kOptimization;
+  else
+    root.at("after").fail("null or missing in a result that was neither evaluated nor simulated");
+  r.motion = root.at("motion").as_string();
+  r.motion_file = root.at("motion_file").as_string();
+  r.model = root.at("model").as_string();
+  r.knots_per_interval = root.at("knots_per_interval").as_int();
+  r.flight_time_s = root.at("flight_time_s").as_double();
+  r.keyframes = root.at("keyframes").as_int();
+  for (const OptionSpec& spec : option_table())
+    if (records(spec, r.kind))
+      if (const auto node = root.find(spec.result_key))
+        r.options.emplace_back(spec.result_key, read_option(spec, *node));
+  r.before = read_force_metrics(root.at("before"));
+  r.keyframe_times_before = root.at("keyframe_times_before").as_double_array();
+  if (const auto check = root.find("residual_check")) {
+    ResultJson::ResidualCheck c;
+    c.rule = check->at("rule").as_string();
+    c.points = check->at("points").as_int();
+    if (const auto agrees = check->find("optimizer_agrees"))
+      c.optimizer_agrees = read_bool(*agrees);
+    r.residual_check = c;
+  }
+  if (const auto translation = root.find("max_translation_error_m")) {
+    KeyframeErrors e;
+    e.max_translation_error_m = translation->as_double();
+    e.max_quaternion_error = root.at("max_quaternion_error").as_double();
+    e.max_rotation_error_deg = root.at("max_rotation_error_deg").as_double();
+    r.keyframe_errors = e;
+  }
+  if (const auto momentum = root.find("takeoff_angular_momentum"))
+    r.takeoff_angular_momentum = momentum->as_vector3();
+  if (r.kind == ResultJson::Kind::kSimulation) {
+    ResultJson::Simulation s;
+    s.angular_momentum_source = root.at("takeoff_angular_momentum_source").as_string();
+    const JsonNode landing = root.at("landing");
+    landing.require_object();
+    s.landing_root_error_deg = landing.at("root_error_deg").as_double();
+    s.landing_com_error_m = landing.at("com_error_m").as_double();
+    const JsonNode joints = landing.at("joint_error_deg");
+    joints.require_object();
+    for (const auto& [name, node] : joints.members())
+      s.landing_joint_error_deg[name] = node.as_double();
+    if (const auto vs_motion = landing.find("root_vs_motion_deg"))
+      s.landing_root_vs_motion_deg = vs_motion->as_double();
+    if (const auto spread = root.find("angular_momentum_spread"))
+      s.angular_momentum_spread = spread->as_double();
+    r.simulation = std::move(s);
+  }
+  if (r.kind == ResultJson::Kind::kOptimization) {
+    ResultJson::Optimization o;
+    o.iterations = root.at("iterations").as_int();
+    o.solve_seconds = root.at("solve_seconds").as_double();
+    o.variables = root.at("variables").as_int();
+    o.constraints = root.at("constraints").as_int();
+    o.after = read_force_metrics(root.at("after"));
+    if (const auto objective = root.at("before").find("optimizer_objective"))
+      o.optimizer_objective_before = objective->as_double();
+    if (const auto objective = root.at("after").find("optimizer_objective"))
+      o.optimizer_objective_after = objective->as_double();
+    o.keyframe_times_after = root.at("keyframe_times_after").as_double_array();
+    if (const auto spreads = root.find("keyframe_time_spread_s")) {
+      o.keyframe_time_spreads = spreads->as_double_array();
+      o.keyframe_times_undetermined = read_int_array(root.at("keyframe_times_undetermined"), 0);
+    }
+    if (const auto status = root.find("ipopt_status")) o.ipopt_status = status->as_string();
+    if (const auto restarts = root.find("restarts")) o.restarts = restarts->as_int();
+    if (const auto tolerances = root.find("tolerances")) {
+      Tolerances t;
+      t.translation_m = tolerances->at("translation_m").as_double();
+      t.quaternion = tolerances->at("quaternion").as_double();
+      o.tolerances = t;
+    }
+    if (const auto resolution = root.find("resolution"))
+      o.resolution = read_resolution(*resolution);
+    if (const auto turn = root.find("largest_joint_turn_deg"))
+      o.largest_joint_turn_deg =
+          std::make_pair(turn->at("before").as_double(), turn->at("after").as_double());
+    r.optimization = std::move(o);
+  }
+  return r;
+}
+
+ResultJson read_result_json(const std::string& path) {
+  return parse_result_json(read_json_file(path), path);
+}
+
+ResultJson evaluation_result(const MotionFile& file, const MotionEvaluation& e,
+                             const EvaluateOptions& options) {
+  ResultJson r = common_result(file, ResultJson::Kind::kEvaluation, "evaluated", options);
+  r.before = e.metrics;
+  r.keyframe_times_before = e.keyframe_times;
+  r.residual_check = residual_check(e.check);
+  r.keyframe_errors = e.keyframe_errors;
+  r.takeoff_angular_momentum = e.samples.front().angular_momentum;
+  return r;
+}
+
+ResultJson simulation_result(const MotionFile& file, const SimulationResult& s,
+                             const EvaluateOptions& options) {
+  ResultJson r = common_result(file, ResultJson::Kind::kSimulation, "simulated", options);
+  r.before = s.metrics;
+  for (const Keyframe& k : file.motion.keyframes)
+    r.keyframe_times_before.push_back(k.time);
+  r.takeoff_angular_momentum = s.angular_momentum;
+  ResultJson::Simulation sim;
+  sim.angular_momentum_source =
+      s.angular_momentum_from_file ? "motion file" : "best constant fit to the motion's L(t)";
+  sim.angular_momentum_spread = s.angular_momentum_spread;
+  sim.landing_root_vs_motion_deg = s.landing_vs_motion_deg;
+  sim.landing_root_error_deg = s.landing_root_error_deg;
+  sim.landing_joint_error_deg = s.landing_joint_error_deg;
+  sim.landing_com_error_m = s.landing_com_error_m;
+  r.simulation = std::move(sim);
+  return r;
+}
+
+ResultJson optimization_result(const MotionFile& file, const OptimizationResult& result,
+                               const OptimizeOptions& options) {
+  // knots_per_interval is the K used; the one asked for is an option (option table).
+  ResultJson r = common_result(file, ResultJson::Kind::kOptimization, result.solve.status,
+                               result.knots_per_interval);
+  r.options = recorded_options(options, true);
+  r.before = result.before.metrics;
+  r.keyframe_times_before = result.before.keyframe_times;
+  r.residual_check = residual_check(result.after.check);
+  r.residual_check->optimizer_agrees = optimizer_agrees_with_check(result);
+  r.keyframe_errors = result.after.keyframe_errors;
+  ResultJson::Optimization o;
+  o.optimizer_objective_before = result.optimizer_objective_before;
+  o.optimizer_objective_after = result.optimizer_objective_after;
+  o.iterations = result.solve.iterations;
+  o.solve_seconds = result.solve.seconds;
+  o.variables = result.variables;
+  o.constraints = result.constraints;
+  o.after = result.after.metrics;
+  o.keyframe_times_after = result.after.keyframe_times;
+  // How far each optimised time could move with the residual within kTimeSpreadForceRise:
+  // times beyond kDeterminedTimeSpread are not recovered, only chosen.
+  o.keyframe_time_spreads = result.keyframe_time_spreads;
+  for (std::size_t i = 0; i < result.keyframe_time_spreads.size(); ++i)
+    if (result.keyframe_time_spreads[i] > kDeterminedTimeSpread)
+      o.keyframe_times_undetermined.push_back(static_cast<int>(i));
+  o.ipopt_status = result.solve.ipopt_status;
+  o.restarts = result.solve.restarts;
+  o.tolerances = file.motion.tolerances;
+  ResultJson::Optimization::Resolution resolution;
+  resolution.automatic =
+      options.automatic_resolution && options.nlp.formulation == Formulation::kRelaxed;
+  resolution.subdivisions = result.subdivisions;
+  if (!result.after.trajectory.rotations.empty())
+    resolution.knots = result.after.trajectory.rotations.front().knots();
+  resolution.levels = result.levels;
+  o.resolution = std::move(resolution);
+  o.largest_joint_turn_deg =
+      std::make_pair(largest_control_turn(result.before.trajectory, 1) * kDegreesPerRadian,
+                     largest_control_turn(result.after.trajectory, 1) * kDegreesPerRadian);
+  r.optimization = std::move(o);
+  return r;
+}
+
 nlohmann::json evaluation_result_json(const MotionFile& file, const MotionEvaluation& e,
                                       const EvaluateOptions& options) {
-  nlohmann::json r = base_result(file, options, "evaluated");
-  r["before"] = force_metrics_to_json(e.metrics);
-  r["residual_check"] = residual_check_json(e.check);
-  r["keyframe_times_before"] = e.keyframe_times;
-  put_keyframe_errors(r, e.keyframe_errors);
-  r["takeoff_angular_momentum"] = vector_json(e.samples.front().angular_momentum);
-  return r;
+  return result_to_json(evaluation_result(file, e, options));
 }
 
 nlohmann::json simulation_result_json(const MotionFile& file, const SimulationResult& s,
                                       const EvaluateOptions& options) {
-  nlohmann::json r = base_result(file, options, "simulated");
-  r["before"] = force_metrics_to_json(s.metrics);
-  std::vector<double> times;
-  for (const Keyframe& k : file.motion.keyframes)
-    times.push_back(k.time);
-  r["keyframe_times_before"] = times;
-  r["max_translation_error_m"] = nullptr;
-  r["max_quaternion_error"] = nullptr;
-  r["max_rotation_error_deg"] = nullptr;
-  r["takeoff_angular_momentum"] = vector_json(s.angular_momentum);
-  r["takeoff_angular_momentum_source"] =
-      s.angular_momentum_from_file ? "motion file" : "best constant fit to the motion's L(t)";
-  r["angular_momentum_spread"] = s.angular_momentum_spread;
-  nlohmann::json joints = nlohmann::json::object();
-  for (const auto& [name, deg] : s.landing_joint_error_deg)
-    joints[name] = deg;
-  r["landing"] = {{"root_error_deg", s.landing_root_error_deg},
-                  {"joint_error_deg", joints},
-                  {"com_error_m", s.landing_com_error_m},
-                  {"root_vs_motion_deg", s.landing_vs_motion_deg}};
-  return r;
+  return result_to_json(simulation_result(file, s, options));
 }
 
 nlohmann::json write_evaluation_outputs(const std::string& out_dir, const MotionFile& file,
@@ -150,65 +478,7 @@ nlohmann::json write_simulation_outputs(const std::string& out_dir, const Motion
 
 nlohmann::json optimization_result_json(const MotionFile& file, const OptimizationResult& result,
                                         const OptimizeOptions& options) {
-  EvaluateOptions evaluate;
-  evaluate.samples = options.nlp.samples;
-  evaluate.interpolation.knots_per_interval = result.knots_per_interval;  // the one used
-  nlohmann::json r = base_result(file, evaluate, result.solve.status);
-  r["knots_per_interval_requested"] = options.nlp.knots_per_interval;
-  // The knots the optimised motion lives on, and how the automatic resolution got there.
-  nlohmann::json levels = nlohmann::json::array();
-  for (const OptimizationResult::Level& level : result.levels)
-    levels.push_back({{"subdivisions", level.subdivisions},
-                      {"avg_root_force", level.avg_root_force},
-                      {"iterations", level.iterations},
-                      {"status", level.status}});
-  r["resolution"] = {{"automatic", options.automatic_resolution &&
-                                       options.nlp.formulation == Formulation::kRelaxed},
-                     {"subdivisions", result.subdivisions},
-                     {"knots", result.after.trajectory.rotations.empty()
-                                   ? std::vector<double>{}
-                                   : result.after.trajectory.rotations.front().knots()},
-                     {"levels", levels}};
-  r["ipopt_status"] = result.solve.ipopt_status;
-  r["restarts"] = result.solve.restarts;
-  r["formulation"] = options.nlp.formulation == Formulation::kRelaxed ? "relaxed" : "strict";
-  if (options.nlp.formulation == Formulation::kStrict) r["epsilon"] = options.nlp.epsilon;
-  r["timing_optimized"] = options.nlp.optimize_timing;
-  r["iterations"] = result.solve.iterations;
-  r["solve_seconds"] = result.solve.seconds;
-  r["variables"] = result.variables;
-  r["constraints"] = result.constraints;
-  r["before"] = force_metrics_to_json(result.before.metrics);
-  r["after"] = force_metrics_to_json(result.after.metrics);
-  // The optimiser's own figure beside the true one (the dense check), so anyone can see that
-  // the two agree.
-  for (auto [key, objective] :
-       {std::pair<const char*, double>{"before", result.optimizer_objective_before},
-        {"after", result.optimizer_objective_after}}) {
-    r[key]["optimizer_objective"] = objective;
-    r[key]["optimizer_avg_root_force"] = std::sqrt(objective / 6.0);
-  }
-  r["residual_check"] = residual_check_json(result.after.check);
-  r["residual_check"]["optimizer_agrees"] = optimizer_agrees_with_check(result);
-  r["keyframe_times_before"] = result.before.keyframe_times;
-  r["keyframe_times_after"] = result.after.keyframe_times;
-  // How far each optimised time could move with the residual within kTimeSpreadForceRise:
-  // times beyond kDeterminedTimeSpread are not recovered, only chosen.
-  r["keyframe_time_spread_s"] = result.keyframe_time_spreads;
-  std::vector<int> undetermined;
-  for (std::size_t i = 0; i < result.keyframe_time_spreads.size(); ++i)
-    if (result.keyframe_time_spreads[i] > kDeterminedTimeSpread)
-      undetermined.push_back(static_cast<int>(i));
-  r["keyframe_times_undetermined"] = undetermined;
-  put_keyframe_errors(r, result.after.keyframe_errors);
-  r["tolerances"] = {{"translation_m", file.motion.tolerances.translation_m},
-                     {"quaternion", file.motion.tolerances.quaternion}};
-  r["joint_turn_limit_deg"] =
-      options.nlp.limits_joint_turns() ? options.nlp.joint_turn_limit * kDegreesPerRadian : 0.0;
-  r["largest_joint_turn_deg"] = {
-      {"before", largest_control_turn(result.before.trajectory, 1) * kDegreesPerRadian},
-      {"after", largest_control_turn(result.after.trajectory, 1) * kDegreesPerRadian}};
-  return r;
+  return result_to_json(optimization_result(file, result, options));
 }
 
 nlohmann::json write_optimization_outputs(const std::string& out_dir, const MotionFile& file,
@@ -231,6 +501,35 @@ nlohmann::json write_optimization_outputs(const std::string& out_dir, const Moti
   write_common_files(folder, file, r);
   folder.commit();
   return r;
+}
+
+std::string folder_name(const std::string& dir) {
+  const std::filesystem::path folder(dir);
+  return folder.filename().empty() ? folder.parent_path().filename().string()
+                                   : folder.filename().string();
+}
+
+std::string output_file(const std::string& dir, const std::string& name, const std::string& what) {
+  namespace fs = std::filesystem;
+  if (!fs::is_directory(dir)) throw InputError(dir, "", "not a folder (expected " + what + ")");
+  const std::string path = (fs::path(dir) / name).string();
+  if (!fs::exists(path)) throw InputError(path, "", "missing (not " + what + ")");
+  return path;
+}
+
+ResultFolder read_result_folder(const std::string& dir) {
+  const std::string what = "a complete saltus evaluate, simulate or optimize folder";
+  ResultFolder out;
+  out.path = dir;
+  out.name = folder_name(dir);
+  out.result = read_result_json(output_file(dir, "result.json", what));
+  if (out.result.kind == ResultJson::Kind::kOptimization) {
+    out.before = read_trajectory_csv(output_file(dir, "trajectory_before.csv", what));
+    out.after = read_trajectory_csv(output_file(dir, "trajectory_after.csv", what));
+  } else {
+    out.before = read_trajectory_csv(output_file(dir, "trajectory.csv", what));
+  }
+  return out;
 }
 
 }  // namespace saltus

@@ -1,20 +1,122 @@
 #pragma once
 /// @file
 /// The result folders of `saltus evaluate`, `saltus simulate` and `saltus optimize` (DESIGN §6):
-/// result.json, the trajectory CSVs, model.json and optimized.motion.json, all or nothing
-/// (OutputFolder).
+/// result.json, the trajectory CSVs, model.json and optimized.motion.json, written all or
+/// nothing (OutputFolder) and read back here. result.json records the options of the option
+/// table (optim/option_table.h) under their result keys.
 
+#include <Eigen/Core>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "saltus/evaluation/evaluate.h"
 #include "saltus/evaluation/simulate.h"
+#include "saltus/formats/motion_file.h"
+#include "saltus/formats/trajectory_csv.h"
 #include "saltus/optim/optimize.h"
+#include "saltus/optim/option_table.h"
 
 namespace saltus {
 
+/// result.json's "format".
+inline constexpr const char* kResultFormatTag = "saltus-result/1";
+
+/// result.json as data: what the writers below put in it and read_result_json reads back.
+/// Keys added after the first release (restarts, tolerances, ...) may be missing from older
+/// files; they read as empty.
+struct ResultJson {
+  enum class Kind { kEvaluation, kSimulation, kOptimization };
+  Kind kind = Kind::kEvaluation;
+  std::string format = kResultFormatTag;
+  std::string status;          ///< "evaluated", "simulated", or the solver's ("solved", ...)
+  std::string motion;          ///< the motion's name
+  std::string motion_file;     ///< the motion file as given
+  std::string model;           ///< the body model's name
+  int knots_per_interval = 1;  ///< the refinement K used
+  double flight_time_s = 0.0;
+  int keyframes = 0;
+  /// The options recorded (OptionSpec::result_key and value), in table order.
+  std::vector<std::pair<std::string, OptionValue>> options;
+  ForceMetrics before;  ///< the evaluated, simulated or interpolated ("before") motion
+  std::vector<double> keyframe_times_before;
+  /// How the residual figures were computed (the dense check); evaluations and optimisations.
+  struct ResidualCheck {
+    std::string rule;
+    int points = 0;
+    std::optional<bool> optimizer_agrees;  ///< optimisations: its quadrature agrees with it
+  };
+  std::optional<ResidualCheck> residual_check;
+  /// Of the evaluated or the optimised motion; none for simulations (null in the file).
+  std::optional<KeyframeErrors> keyframe_errors;
+  std::optional<Eigen::Vector3d> takeoff_angular_momentum;  ///< evaluations and simulations
+
+  struct Simulation {
+    /// "motion file", or "best constant fit to the motion's L(t)" ("keyframes" in older files)
+    std::string angular_momentum_source;
+    std::optional<double> angular_momentum_spread;  ///< kg·m²/s, RMS of L(t) about it
+    double landing_root_error_deg = 0.0;
+    std::map<std::string, double> landing_joint_error_deg;  ///< joint name -> degrees
+    double landing_com_error_m = 0.0;
+    std::optional<double> landing_root_vs_motion_deg;
+  };
+  std::optional<Simulation> simulation;
+
+  struct Optimization {
+    int iterations = 0;
+    double solve_seconds = 0.0;
+    int variables = 0;
+    int constraints = 0;
+    ForceMetrics after;
+    /// J by the optimiser's own quadrature at the start and the end, written into "before"
+    /// and "after" with its average root force.
+    std::optional<double> optimizer_objective_before, optimizer_objective_after;
+    std::vector<double> keyframe_times_after;
+    /// Per keyframe, how far its optimised time could move (s) before the residual rises by
+    /// kTimeSpreadForceRise, and the keyframes whose spread exceeds kDeterminedTimeSpread
+    /// (OptimizationResult::keyframe_time_spreads); missing from files before them.
+    std::optional<std::vector<double>> keyframe_time_spreads;
+    std::vector<int> keyframe_times_undetermined;
+    std::optional<std::string> ipopt_status;
+    std::optional<int> restarts;
+    std::optional<Tolerances> tolerances;
+    /// Largest joint turn between two control points (°), before and after.
+    std::optional<std::pair<double, double>> largest_joint_turn_deg;
+    /// The knots the optimised motion lives on and how the automatic resolution chose them
+    /// (OptimizationResult::subdivisions, levels); missing from files before it.
+    struct Resolution {
+      bool automatic = false;         ///< chosen automatically (relaxed model, `auto` knots)
+      std::vector<int> subdivisions;  ///< knot spans per keyframe interval
+      std::vector<double> knots;      ///< of the optimised motion's splines (s)
+      std::vector<OptimizationResult::Level> levels;  ///< each level tried, in order
+    };
+    std::optional<Resolution> resolution;
+  };
+  std::optional<Optimization> optimization;
+
+  /// The value recorded for `result_key`, if any.
+  std::optional<OptionValue> option(const std::string& result_key) const;
+};
+
+/// The document to write; `parse_result_json(result_to_json(r)) == r`.
+nlohmann::json result_to_json(const ResultJson& result);
+/// Reads a result.json document. Throws InputError naming `file` and the JSON field.
+ResultJson parse_result_json(const nlohmann::json& document, const std::string& file);
+ResultJson read_result_json(const std::string& path);
+
 /// before/after block of result.json.
 nlohmann::json force_metrics_to_json(const ForceMetrics& metrics);
+
+/// What result.json records of an evaluation, a simulation and an optimisation.
+ResultJson evaluation_result(const MotionFile& file, const MotionEvaluation& evaluation,
+                             const EvaluateOptions& options);
+ResultJson simulation_result(const MotionFile& file, const SimulationResult& simulation,
+                             const EvaluateOptions& options);
+ResultJson optimization_result(const MotionFile& file, const OptimizationResult& result,
+                               const OptimizeOptions& options);
 
 /// result.json of an evaluation ("before" filled; optimiser-only fields null).
 nlohmann::json evaluation_result_json(const MotionFile& file, const MotionEvaluation& evaluation,
@@ -44,5 +146,25 @@ nlohmann::json optimization_result_json(const MotionFile& file, const Optimizati
 nlohmann::json write_optimization_outputs(const std::string& out_dir, const MotionFile& file,
                                           const OptimizationResult& result,
                                           const OptimizeOptions& options);
+
+/// A result folder read back: result.json and its trajectories.
+struct ResultFolder {
+  std::string path;
+  std::string name;  ///< the folder's own name
+  ResultJson result;
+  /// trajectory.csv, or an optimisation's trajectory_before.csv.
+  TrajectoryCsv before;
+  std::optional<TrajectoryCsv> after;  ///< an optimisation's trajectory_after.csv
+};
+
+/// Reads a `saltus evaluate`, `simulate` or `optimize` output folder. Throws InputError naming
+/// the file (and field) that is missing or malformed.
+ResultFolder read_result_folder(const std::string& dir);
+
+/// The folder's own name ("out" for "a/out" and "a/out/").
+std::string folder_name(const std::string& dir);
+/// DIR/name, which must exist; throws InputError naming the folder or the file as not `what`
+/// ("a `saltus study mass` folder").
+std::string output_file(const std::string& dir, const std::string& name, const std::string& what);
 
 }  // namespace saltus

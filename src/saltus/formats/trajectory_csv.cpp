@@ -1,23 +1,36 @@
 #include "saltus/formats/trajectory_csv.h"
 
 #include <charconv>
-#include <cmath>
-#include <cstdio>
 #include <fstream>
-#include <sstream>
+#include <iterator>
 
 #include "saltus/base/input_error.h"
 
 namespace saltus {
 
+namespace {
+
+/// The columns after the segments' (DESIGN §6): CoM, root wrench F1..F6, residual.
+const char* const kTrailingColumns[15] = {"com_x",   "com_y",   "com_z",   "root_fx", "root_fy",
+                                          "root_fz", "root_mx", "root_my", "root_mz", "res_fx",
+                                          "res_fy",  "res_fz",  "res_mx",  "res_my",  "res_mz"};
+const char* const kSegmentColumns[7] = {".x", ".y", ".z", ".qw", ".qx", ".qy", ".qz"};
+
+[[noreturn]] void bad_column(const std::string& file, std::size_t index, const std::string& found,
+                             const std::string& expected) {
+  throw InputError(file, "line 1",
+                   "column " + std::to_string(index + 1) + " is \"" + found + "\", expected " +
+                       expected + " (DESIGN §6 trajectory columns)");
+}
+
+}  // namespace
+
 std::vector<std::string> trajectory_csv_header(const BodyModel& model) {
   std::vector<std::string> h{"t"};
   for (const Segment& s : model.segments)
-    for (const char* c : {".x", ".y", ".z", ".qw", ".qx", ".qy", ".qz"})
+    for (const char* c : kSegmentColumns)
       h.push_back(s.name + c);
-  for (const char* c :
-       {"com_x", "com_y", "com_z", "root_fx", "root_fy", "root_fz", "root_mx", "root_my", "root_mz",
-        "res_fx", "res_fy", "res_fz", "res_mx", "res_my", "res_mz"})
+  for (const char* c : kTrailingColumns)
     h.emplace_back(c);
   return h;
 }
@@ -61,46 +74,57 @@ void write_trajectory_csv(std::ostream& out, const BodyModel& model,
   }
 }
 
-int CsvTable::column(const std::string& name) const {
-  for (std::size_t i = 0; i < columns.size(); ++i)
-    if (columns[i] == name) return static_cast<int>(i);
-  return -1;
-}
-
-CsvTable read_csv_table(const std::string& path) {
+TrajectoryCsv read_trajectory_csv(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError(path, "", "cannot open file for reading");
-  CsvTable table;
-  std::string line;
-  if (!std::getline(in, line)) throw InputError(path, "line 1", "empty file, expected a header");
-  {
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ','))
-      table.columns.push_back(cell);
+  return parse_trajectory_csv(in, path);
+}
+
+TrajectoryCsv parse_trajectory_csv(std::istream& in, const std::string& file) {
+  const CsvTable table = parse_csv_table(in, file);
+  const std::vector<std::string>& columns = table.columns;
+  const std::size_t trailing = std::size(kTrailingColumns);
+  if (columns.empty() || columns[0] != "t")
+    bad_column(file, 0, columns.empty() ? "" : columns[0], "\"t\"");
+  if (columns.size() < 1 + trailing || (columns.size() - 1 - trailing) % 7 != 0)
+    throw InputError(file, "line 1",
+                     std::to_string(columns.size()) +
+                         " columns: expected t, 7 per segment, then com_x ... res_mz");
+  TrajectoryCsv out;
+  const std::size_t segments = (columns.size() - 1 - trailing) / 7;
+  for (std::size_t s = 0; s < segments; ++s) {
+    const std::string& first = columns[1 + 7 * s];
+    const std::size_t dot = first.rfind(".x");
+    if (dot == std::string::npos || dot + 2 != first.size() || dot == 0)
+      bad_column(file, 1 + 7 * s, first, "a segment's \"<name>.x\"");
+    out.segments.push_back(first.substr(0, dot));
+    for (std::size_t c = 0; c < 7; ++c)
+      if (columns[1 + 7 * s + c] != out.segments.back() + kSegmentColumns[c])
+        bad_column(file, 1 + 7 * s + c, columns[1 + 7 * s + c],
+                   "\"" + out.segments.back() + kSegmentColumns[c] + "\"");
   }
-  int line_number = 1;
-  while (std::getline(in, line)) {
-    ++line_number;
-    if (line.empty()) continue;
-    std::vector<double> row;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) {
-      char* end = nullptr;
-      const double v = std::strtod(cell.c_str(), &end);
-      if (end == cell.c_str() || *end != '\0' || !std::isfinite(v))
-        throw InputError(path, "line " + std::to_string(line_number),
-                         "not a finite number: \"" + cell + "\"");
-      row.push_back(v);
+  for (std::size_t c = 0; c < trailing; ++c)
+    if (columns[1 + 7 * segments + c] != kTrailingColumns[c])
+      bad_column(file, 1 + 7 * segments + c, columns[1 + 7 * segments + c],
+                 std::string("\"") + kTrailingColumns[c] + "\"");
+
+  out.samples.reserve(table.rows.size());
+  for (const std::vector<double>& row : table.rows) {
+    SampleRecord r;
+    const double* v = row.data();
+    r.time = *v++;
+    for (std::size_t s = 0; s < segments; ++s, v += 7) {
+      r.segment_position.emplace_back(v[0], v[1], v[2]);
+      r.segment_rotation.emplace_back(v[3], v[4], v[5], v[6]);  // w, x, y, z
     }
-    if (row.size() != table.columns.size())
-      throw InputError(path, "line " + std::to_string(line_number),
-                       "expected " + std::to_string(table.columns.size()) + " values, found " +
-                           std::to_string(row.size()));
-    table.rows.push_back(std::move(row));
+    r.com = Eigen::Vector3d(v[0], v[1], v[2]);
+    for (int i = 0; i < 6; ++i) {
+      r.root_wrench[i] = v[3 + i];
+      r.residual[i] = v[9 + i];
+    }
+    out.samples.push_back(std::move(r));
   }
-  return table;
+  return out;
 }
 
 }  // namespace saltus

@@ -3,12 +3,14 @@
 /// The trajectory CSV of DESIGN §6: one row per sample; columns t; per segment S (model order)
 /// S.x,S.y,S.z,S.qw,S.qx,S.qy,S.qz; com_x..z; root_fx..root_mz (F1..F6); res_fx..res_mz.
 
+#include <istream>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "saltus/body/body_model.h"
 #include "saltus/evaluation/sampling.h"
+#include "saltus/formats/csv_table.h"
 
 namespace saltus {
 
@@ -20,15 +22,18 @@ std::vector<std::string> trajectory_csv_header(const BodyModel& model);
 void write_trajectory_csv(std::ostream& out, const BodyModel& model,
                           const std::vector<SampleRecord>& samples);
 
-/// A parsed trajectory CSV: column names and rows of numbers.
-struct CsvTable {
-  std::vector<std::string> columns;
-  std::vector<std::vector<double>> rows;
-  /// Index of a column, -1 if absent.
-  int column(const std::string& name) const;
+/// A trajectory CSV read back.
+struct TrajectoryCsv {
+  std::vector<std::string> segments;  ///< segment names, in the file's (the model's) order
+  /// One per row: time, segment positions and rotations, CoM, root wrench and residual as
+  /// written; the quantities the file does not hold are left zero or empty.
+  std::vector<SampleRecord> samples;
 };
 
-/// Reads a numeric CSV with a header line. Throws InputError naming the file and line.
-CsvTable read_csv_table(const std::string& path);
+/// Reads a trajectory CSV. Throws InputError naming the file and the line, or the column that
+/// is not where DESIGN §6 puts it.
+TrajectoryCsv read_trajectory_csv(const std::string& path);
+/// The same from a stream; `file` names it in errors.
+TrajectoryCsv parse_trajectory_csv(std::istream& in, const std::string& file);
 
 }  // namespace saltus

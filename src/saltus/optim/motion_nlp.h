@@ -82,33 +82,23 @@ struct MotionNlpOptions {
   /// Fukushima 2001: damping ∝ ‖F‖² keeps fast local convergence at a zero residual).
   /// Light segments (feet, forearms) barely change the root force, so undamped Gauss-Newton
   /// steps would swing them by radians on a linear model that no longer holds. μ starts at
-  /// damping.initial (1: measured on M1 as the steadiest fixed value) and, with adapt_damping,
-  /// follows how well the damped model predicted each step (see AdaptiveDamping for the
-  /// measured reason). Measured at K = 1, 101 samples: M1-M7 and the dive took 32-186
-  /// iterations (744 in all) with μ fixed at 1 and 25-69 (364) with adaptation; the relaxed
-  /// convergence study (105 runs) 9296 and 5440, all solved both ways.
+  /// damping.initial and, with adapt_damping, follows how well the damped model predicted each
+  /// step (AdaptiveDamping; measurements in docs/optimizer.md, "Measurement history").
   DampingRule damping;
   bool adapt_damping = true;
   /// Weight w (N²/rad²) of the proximity term w·Σ‖δ‖² added to the relaxed objective (δ: the
   /// joints' control-point tangents relative to the interpolation, rad): turning a joint control
   /// by 1 rad costs as much as 1 N² of mean squared root wrench. The root force hardly depends
   /// on light segments, so without it the optimum swings feet and forearms through large angles
-  /// between keyframes for tiny gains. Measured on M1: with w = 1 every segment stays within
-  /// about 30° of the interpolation (180° with none) while the root force falls 20×. A fixed
-  /// physical weight, not one relative to the starting J, so that a bad start (wrong timing) is
-  /// not held near its own interpolation. Reported objectives are J alone. 0 disables it.
+  /// between keyframes for tiny gains. A fixed physical weight, not one relative to the
+  /// starting J, so that a bad start (wrong timing) is not held near its own interpolation.
+  /// Reported objectives are J alone. 0 disables it.
   double regularization = 1.0;
   /// Soft limit (rad) on the turn of each non-root joint between two consecutive control points
   /// (JointTurnPenalty: the floor of L; the interpolation's own larger turns stay allowed), with
-  /// weight joint_turn_weight (N²/rad², in J's units: 0.1 rad past the limit costs 10 N², 0.3 rad
-  /// 90 N²; J after optimisation at K = 1 is 1.8 N² for M1, 2700 N² for M3, so the limit holds
-  /// to a few hundredths of a radian). Half a revolution: no joint turns
-  /// further relative to its parent between two controls, and it keeps every run well off the
-  /// spline's branch point at 2π. Measured at K = 1: the largest non-root turn after optimising
-  /// M2, M3, M5, M7 and the dive fell from 5.3-6.3 rad to 3.1-3.4 rad, and the average root
-  /// force rose where the spins had been buying it (M2 +10 %, M3 +7 %, M5 +26 %, M7 +5 %, dive
-  /// +17 %; all still below the paper's); the examples took 329 iterations instead of 350; the
-  /// relaxed convergence study solved all 105 cases. At K = 3 no turn reaches it. 0 = none.
+  /// weight joint_turn_weight (N²/rad², in J's units: 0.1 rad past the limit costs 10 N²). Half a
+  /// revolution: no joint turns further relative to its parent between two controls, and every
+  /// run stays well off the spline's branch point at 2π. 0 = none.
   double joint_turn_limit = 3.14159265358979323846;
   double joint_turn_weight = 1000.0;
   bool limits_joint_turns() const { return joint_turn_limit > 0 && joint_turn_weight > 0; }
@@ -116,8 +106,7 @@ struct MotionNlpOptions {
   /// samples, keyframes or knot spans); 0 = one per hardware thread, at most 4. A fixed
   /// default, not the machine's core count, so that the same input gives the same output
   /// everywhere: the values do not depend on it, but the Hessian's blocked products round
-  /// differently with where each thread's memory lies, and the iterations follow the rounding
-  /// (the dive at K = 1 with 101 samples: 55 iterations with 2 threads, 83 with 1).
+  /// differently with where each thread's memory lies, and the iterations follow the rounding.
   int threads = 2;
 };
 

@@ -59,12 +59,7 @@ inline constexpr int kMaxAutomaticKnotsPerInterval = 4;
 /// the optimiser starts from (rad); beyond it the knots are refined. Near 2π the curve's
 /// derivatives with respect to its controls blow up like 1/sin(turn/2)
 /// (QuaternionSpline::largest_control_turn); at 1.75π they are 2.6 times those at π.
-/// Measured on the interpolations of M1-M7 and the dive: at most 3.66 rad as given. With the
-/// convergence study's timing errors, keyframes 0.05 s apart made the fit turn the arms by
-/// exactly 2π (M5 at ±0.05 s: a root-force gradient of 1e17 at the start, then 300 iterations
-/// of wandering), and M5 and M7 at ±0.1 s start at 5.72-5.74 rad, from where two M5 runs
-/// reached the branch point (dual infeasibility 1e12) and never converged. Refined once, all
-/// of these solve (0.2-0.7 N).
+/// Why 1.75π: docs/optimizer.md, "Measurement history".
 inline constexpr double kMaxControlTurn = 1.75 * 3.14159265358979323846;
 
 /// The largest turn between consecutive control points (rad) over the curves of segments

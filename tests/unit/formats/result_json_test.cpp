@@ -1,7 +1,8 @@
-// Result folders (formats/result_json.h): result.json's figures are the evaluation's and agree
-// with the trajectory.csv written beside it — J, RMS and peak root force recomputed here from the
-// CSV's root wrench columns by the trapezoidal rule, to the coarser grid's accuracy — and the
-// simulation's result names its momentum and landing.
+// result.json (formats/result_json.h): every kind written and read back field for field (seeded),
+// the keys of DESIGN §6, older files without later keys, bad documents naming the field; real
+// result folders read back; and the figures agree with the trajectory.csv written beside them —
+// J, RMS and peak root force recomputed here from the CSV's root wrench columns by the
+// trapezoidal rule — and the simulation's result names its momentum and landing.
 
 #include "saltus/formats/result_json.h"
 
@@ -9,13 +10,446 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <random>
+#include <tuple>
 
+#include "saltus/base/input_error.h"
+#include "saltus/formats/motion_file.h"
 #include "saltus/formats/trajectory_csv.h"
 #include "support/cli_runner.h"
+#include "support/temp_path.h"
 #include "support/test_motions.h"
 
 namespace saltus {
 namespace {
+
+namespace fs = std::filesystem;
+
+std::string m1_path() {
+  return std::string(SALTUS_EXAMPLES_DIR) + "/motions/M1-straight-back-somersault.motion.json";
+}
+
+/// A fresh folder private to the test process, removed afterwards.
+struct TempDir {
+  explicit TempDir(const std::string& name) : path(test::temp_path(name)) { fs::remove_all(path); }
+  ~TempDir() { fs::remove_all(path); }
+  fs::path path;
+};
+
+// Every field, compared exactly (JSON keeps doubles to the last bit).
+auto fields(const ForceMetrics& m) {
+  return std::tie(m.objective, m.avg_root_force, m.rms_force_N, m.rms_moment_Nm, m.max_force_N,
+                  m.max_moment_Nm);
+}
+auto fields(const KeyframeErrors& e) {
+  return std::tie(e.max_translation_error_m, e.max_quaternion_error, e.max_rotation_error_deg);
+}
+auto fields(const Tolerances& t) {
+  return std::tie(t.translation_m, t.quaternion);
+}
+auto fields(const ResultJson::Simulation& s) {
+  return std::tie(s.angular_momentum_source, s.angular_momentum_spread, s.landing_root_error_deg,
+                  s.landing_joint_error_deg, s.landing_com_error_m, s.landing_root_vs_motion_deg);
+}
+auto fields(const ResultJson::ResidualCheck& c) {
+  return std::tie(c.rule, c.points, c.optimizer_agrees);
+}
+auto fields(const OptimizationResult::Level& l) {
+  return std::tie(l.subdivisions, l.avg_root_force, l.iterations, l.status);
+}
+auto fields(const ResultJson::Optimization::Resolution& r) {
+  std::vector<decltype(fields(r.levels.front()))> levels;
+  for (const OptimizationResult::Level& l : r.levels)
+    levels.push_back(fields(l));
+  return std::make_tuple(r.automatic, r.subdivisions, r.knots, levels);
+}
+auto fields(const ResultJson::Optimization& o) {
+  return std::make_tuple(
+      o.iterations, o.solve_seconds, o.variables, o.constraints, fields(o.after),
+      o.optimizer_objective_before, o.optimizer_objective_after, o.keyframe_times_after,
+      o.keyframe_time_spreads, o.keyframe_times_undetermined, o.ipopt_status, o.restarts,
+      o.tolerances ? std::optional(fields(*o.tolerances)) : std::nullopt, o.largest_joint_turn_deg,
+      o.resolution ? std::optional(fields(*o.resolution)) : std::nullopt);
+}
+template <typename T>
+auto optional_fields(const std::optional<T>& x) {
+  return x ? std::optional(fields(*x)) : std::nullopt;
+}
+
+void expect_same(const ResultJson& a, const ResultJson& b) {
+  EXPECT_EQ(std::tie(a.kind, a.format, a.status, a.motion, a.motion_file, a.model),
+            std::tie(b.kind, b.format, b.status, b.motion, b.motion_file, b.model));
+  EXPECT_EQ(std::tie(a.knots_per_interval, a.flight_time_s, a.keyframes, a.options),
+            std::tie(b.knots_per_interval, b.flight_time_s, b.keyframes, b.options));
+  EXPECT_TRUE(fields(a.before) == fields(b.before));
+  EXPECT_EQ(a.keyframe_times_before, b.keyframe_times_before);
+  EXPECT_TRUE(optional_fields(a.residual_check) == optional_fields(b.residual_check));
+  EXPECT_TRUE(optional_fields(a.keyframe_errors) == optional_fields(b.keyframe_errors));
+  EXPECT_EQ(a.takeoff_angular_momentum, b.takeoff_angular_momentum);
+  EXPECT_TRUE(optional_fields(a.simulation) == optional_fields(b.simulation));
+  EXPECT_TRUE(optional_fields(a.optimization) == optional_fields(b.optimization));
+}
+
+/// A result.json of `kind` with seeded values in every field the kind has.
+ResultJson random_result(ResultJson::Kind kind, std::mt19937& rng) {
+  std::uniform_real_distribution<double> any(-1e3, 1e3), positive(1e-9, 1e4);
+  std::uniform_int_distribution<int> count(2, 12);
+  auto metrics = [&] {
+    ForceMetrics m;
+    m.objective = positive(rng);
+    m.avg_root_force = positive(rng);
+    m.rms_force_N = positive(rng);
+    m.rms_moment_Nm = positive(rng);
+    m.max_force_N = positive(rng);
+    m.max_moment_Nm = positive(rng);
+    return m;
+  };
+  auto times = [&](int n) {
+    std::vector<double> t{0.0};
+    for (int i = 1; i < n; ++i)
+      t.push_back(t.back() + positive(rng) / 1e4);
+    return t;
+  };
+  ResultJson r;
+  r.kind = kind;
+  r.status = kind == ResultJson::Kind::kEvaluation   ? "evaluated"
+             : kind == ResultJson::Kind::kSimulation ? "simulated"
+                                                     : (rng() % 2 ? "solved" : "max_iterations");
+  r.motion = "motion " + std::to_string(rng());
+  r.motion_file = "dir/m" + std::to_string(rng()) + ".motion.json";
+  r.model = "model-" + std::to_string(rng() % 100);
+  r.knots_per_interval = 1 + static_cast<int>(rng() % 4);
+  r.keyframes = count(rng);
+  r.flight_time_s = positive(rng) / 1e3;
+  // The options through the table, at seeded values.
+  OptionValues values;
+  values.set("samples", static_cast<int>(2 + rng() % 5000));
+  if (rng() % 4 == 0)
+    values.set("knots_per_interval", std::string("auto"));
+  else
+    values.set("knots_per_interval", static_cast<int>(1 + rng() % 50));
+  values.set("formulation", std::string(rng() % 2 ? "strict" : "relaxed"));
+  values.set("epsilon", positive(rng));
+  values.set("optimize_timing", rng() % 2 == 0);
+  values.set("max_joint_turn", std::uniform_real_distribution<double>(0, 360)(rng));
+  r.options = recorded_options(values.optimize_options(), kind == ResultJson::Kind::kOptimization);
+  r.before = metrics();
+  r.keyframe_times_before = times(r.keyframes);
+  if (kind != ResultJson::Kind::kSimulation) {
+    r.keyframe_errors = KeyframeErrors{positive(rng), positive(rng), positive(rng)};
+    r.residual_check = ResultJson::ResidualCheck{"rule " + std::to_string(rng()),
+                                                 static_cast<int>(rng() % 1000), std::nullopt};
+    if (kind == ResultJson::Kind::kOptimization) r.residual_check->optimizer_agrees = rng() % 2;
+  }
+  if (kind != ResultJson::Kind::kOptimization)
+    r.takeoff_angular_momentum = Eigen::Vector3d(any(rng), any(rng), any(rng));
+  if (kind == ResultJson::Kind::kSimulation) {
+    ResultJson::Simulation s;
+    s.angular_momentum_source =
+        rng() % 2 ? "motion file" : "best constant fit to the motion's L(t)";
+    s.angular_momentum_spread = positive(rng);
+    s.landing_root_vs_motion_deg = positive(rng);
+    s.landing_root_error_deg = positive(rng);
+    s.landing_com_error_m = positive(rng);
+    for (const char* joint : {"root", "hip_l", "knee_r"})
+      s.landing_joint_error_deg[joint] = positive(rng);
+    r.simulation = s;
+  }
+  if (kind == ResultJson::Kind::kOptimization) {
+    ResultJson::Optimization o;
+    o.iterations = count(rng) * 10;
+    o.solve_seconds = positive(rng);
+    o.variables = count(rng) * 30;
+    o.constraints = count(rng) * 7;
+    o.after = metrics();
+    o.optimizer_objective_before = positive(rng);
+    o.optimizer_objective_after = positive(rng);
+    o.keyframe_times_after = times(r.keyframes);
+    o.keyframe_time_spreads.emplace();
+    for (int i = 0; i < r.keyframes; ++i) {
+      const bool end = i == 0 || i + 1 == r.keyframes;
+      o.keyframe_time_spreads->push_back(end ? 0.0 : positive(rng) / 1e5);
+      if (o.keyframe_time_spreads->back() > kDeterminedTimeSpread)
+        o.keyframe_times_undetermined.push_back(i);
+    }
+    o.ipopt_status = "acceptable";
+    o.restarts = static_cast<int>(rng() % 3);
+    o.tolerances = Tolerances{positive(rng), positive(rng)};
+    o.largest_joint_turn_deg = std::make_pair(positive(rng), positive(rng));
+    ResultJson::Optimization::Resolution resolution;
+    resolution.automatic = rng() % 2;
+    for (int i = 1; i < r.keyframes; ++i)
+      resolution.subdivisions.push_back(1 + static_cast<int>(rng() % 8));
+    resolution.knots = times(count(rng) + 7);
+    for (int level = 0; resolution.automatic && level < 1 + static_cast<int>(rng() % 3); ++level)
+      resolution.levels.push_back({resolution.subdivisions, positive(rng), count(rng),
+                                   rng() % 2 ? "solved" : "acceptable"});
+    o.resolution = resolution;
+    r.optimization = o;
+  }
+  return r;
+}
+
+TEST(ResultJson, EveryKindReadsBackWhatWasWritten) {
+  std::mt19937 rng(12);
+  for (int trial = 0; trial < 30; ++trial) {
+    for (auto kind : {ResultJson::Kind::kEvaluation, ResultJson::Kind::kSimulation,
+                      ResultJson::Kind::kOptimization}) {
+      const ResultJson written = random_result(kind, rng);
+      // Through the text a file holds, as nlohmann writes and reads it.
+      const std::string text = result_to_json(written).dump(2);
+      const ResultJson read = parse_result_json(nlohmann::json::parse(text), "r.json");
+      SCOPED_TRACE(text);
+      expect_same(read, written);
+      EXPECT_EQ(result_to_json(read).dump(2), text);
+    }
+  }
+}
+
+TEST(ResultJson, KeysAreThoseOfDesignSection6) {
+  std::mt19937 rng(3);
+  const nlohmann::json e = result_to_json(random_result(ResultJson::Kind::kEvaluation, rng));
+  for (const char* key : {"format",
+                          "status",
+                          "motion",
+                          "motion_file",
+                          "model",
+                          "samples",
+                          "knots_per_interval",
+                          "flight_time_s",
+                          "keyframes",
+                          "iterations",
+                          "solve_seconds",
+                          "variables",
+                          "constraints",
+                          "before",
+                          "after",
+                          "keyframe_times_before",
+                          "keyframe_times_after",
+                          "max_translation_error_m",
+                          "max_quaternion_error",
+                          "max_rotation_error_deg",
+                          "takeoff_angular_momentum",
+                          "residual_check"})
+    EXPECT_TRUE(e.contains(key)) << key;
+  EXPECT_EQ(e.size(), 22u) << e.dump();
+  EXPECT_TRUE(e["after"].is_null());
+  EXPECT_TRUE(e["iterations"].is_null());
+  EXPECT_TRUE(e["samples"].is_number_integer());
+  const nlohmann::json o = result_to_json(random_result(ResultJson::Kind::kOptimization, rng));
+  for (const char* key :
+       {"knots_per_interval_requested", "ipopt_status", "restarts", "formulation",
+        "timing_optimized", "tolerances", "joint_turn_limit_deg", "largest_joint_turn_deg",
+        "resolution", "keyframe_time_spread_s", "keyframe_times_undetermined"})
+    EXPECT_TRUE(o.contains(key)) << key;
+  for (const char* key : {"automatic", "subdivisions", "knots", "levels"})
+    EXPECT_TRUE(o["resolution"].contains(key)) << key;
+  EXPECT_TRUE(o["resolution"]["automatic"].is_boolean());
+  EXPECT_TRUE(o["resolution"]["levels"].is_array());
+  EXPECT_FALSE(e.contains("resolution"));
+  EXPECT_FALSE(o.contains("takeoff_angular_momentum"));
+  EXPECT_TRUE(o["residual_check"].contains("optimizer_agrees"));
+  for (const char* stage : {"before", "after"})
+    EXPECT_EQ(o[stage]["optimizer_avg_root_force"].get<double>(),
+              std::sqrt(o[stage]["optimizer_objective"].get<double>() / 6.0));
+  const nlohmann::json s = result_to_json(random_result(ResultJson::Kind::kSimulation, rng));
+  for (const char* key : {"takeoff_angular_momentum_source", "angular_momentum_spread", "landing"})
+    EXPECT_TRUE(s.contains(key)) << key;
+  EXPECT_TRUE(s["landing"].contains("root_vs_motion_deg"));
+  EXPECT_FALSE(s.contains("residual_check"));
+  EXPECT_EQ(o.contains("epsilon"), o["formulation"] == "strict");
+  EXPECT_TRUE(o["iterations"].is_number_integer());
+  EXPECT_TRUE(o["joint_turn_limit_deg"].is_number_float());
+}
+
+TEST(ResultJson, OlderOptimisationResultsWithoutTheLaterKeysStillRead) {
+  std::mt19937 rng(5);
+  nlohmann::json j = result_to_json(random_result(ResultJson::Kind::kOptimization, rng));
+  for (const char* key : {"restarts", "tolerances", "largest_joint_turn_deg", "ipopt_status",
+                          "knots_per_interval_requested", "joint_turn_limit_deg", "formulation",
+                          "timing_optimized", "epsilon", "residual_check", "resolution",
+                          "keyframe_time_spread_s", "keyframe_times_undetermined"})
+    j.erase(key);
+  for (const char* stage : {"before", "after"})
+    for (const char* key : {"optimizer_objective", "optimizer_avg_root_force"})
+      j[stage].erase(key);
+  const ResultJson r = parse_result_json(j, "old.json");
+  EXPECT_EQ(r.kind, ResultJson::Kind::kOptimization);
+  ASSERT_TRUE(r.optimization);
+  EXPECT_FALSE(r.optimization->restarts);
+  EXPECT_FALSE(r.optimization->tolerances);
+  EXPECT_FALSE(r.optimization->optimizer_objective_after);
+  EXPECT_FALSE(r.optimization->resolution);
+  EXPECT_FALSE(r.optimization->keyframe_time_spreads);
+  EXPECT_FALSE(r.residual_check);
+  EXPECT_FALSE(r.option("formulation"));
+  ASSERT_TRUE(r.option("samples"));
+  EXPECT_EQ(result_to_json(r), j);
+}
+
+TEST(ResultJson, BadDocumentsNameTheField) {
+  std::mt19937 rng(9);
+  const nlohmann::json good = result_to_json(random_result(ResultJson::Kind::kOptimization, rng));
+  auto expect_error = [](const nlohmann::json& j, const std::string& field) {
+    try {
+      parse_result_json(j, "bad.json");
+      ADD_FAILURE() << "accepted, expected an error at " << field;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("bad.json"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+    }
+  };
+  nlohmann::json j = good;
+  j["format"] = "saltus-study/1";
+  expect_error(j, "/format");
+  j = good;
+  j["samples"] = 1;
+  expect_error(j, "/samples");
+  j = good;
+  j["formulation"] = "loose";
+  expect_error(j, "/formulation");
+  j = good;
+  j["timing_optimized"] = "yes";
+  expect_error(j, "/timing_optimized");
+  j = good;
+  j["after"].erase("max_force_N");
+  expect_error(j, "/after");
+  j = good;
+  j["after"] = nullptr;
+  expect_error(j, "/after");
+  j = good;
+  j["keyframe_times_before"] = "0, 1";
+  expect_error(j, "/keyframe_times_before");
+  j = good;
+  j["resolution"]["subdivisions"] = {1, 0, 2};
+  expect_error(j, "/resolution/subdivisions/1");
+  j = good;
+  j["keyframe_times_undetermined"] = {1, -1};
+  expect_error(j, "/keyframe_times_undetermined/1");
+  j = good;
+  j["resolution"]["automatic"] = "auto";
+  expect_error(j, "/resolution/automatic");
+  j = good;
+  j["resolution"]["levels"] = {{{"subdivisions", {1}}, {"avg_root_force", 1.0}}};
+  expect_error(j, "/resolution/levels/0");
+  j = good;
+  j["resolution"].erase("knots");
+  expect_error(j, "/resolution");
+  expect_error(nlohmann::json::array(), "bad.json");
+}
+
+/// The motion's samples as the trajectory CSV holds them (rotations in one hemisphere).
+void expect_trajectory(const TrajectoryCsv& csv, const std::vector<SampleRecord>& samples,
+                       const BodyModel& model) {
+  ASSERT_EQ(csv.samples.size(), samples.size());
+  ASSERT_EQ(csv.segments.size(), static_cast<std::size_t>(model.size()));
+  for (int s = 0; s < model.size(); ++s)
+    EXPECT_EQ(csv.segments[s], model.segments[s].name);
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    EXPECT_EQ(csv.samples[k].time, samples[k].time);
+    EXPECT_EQ(csv.samples[k].root_wrench, samples[k].root_wrench);
+    EXPECT_EQ(csv.samples[k].residual, samples[k].residual);
+    EXPECT_EQ(csv.samples[k].com, samples[k].com);
+    for (int s = 0; s < model.size(); ++s) {
+      EXPECT_EQ(csv.samples[k].segment_position[s], samples[k].segment_position[s]);
+      Eigen::Quaterniond q = samples[k].segment_rotation[s];
+      if (q.w() < 0) q.coeffs() = -q.coeffs();
+      EXPECT_EQ(csv.samples[k].segment_rotation[s].coeffs(), q.coeffs());
+    }
+  }
+}
+
+TEST(ResultFolder, EvaluationAndSimulationFoldersReadBack) {
+  const MotionFile file = load_motion_file(m1_path());
+  EvaluateOptions options;
+  options.samples = 21;
+  options.interpolation.knots_per_interval = 2;
+  TempDir dir("saltus_result_json_test_eval");
+  const MotionEvaluation e = evaluate_motion(file.motion, file.model, options);
+  write_evaluation_outputs((dir.path / "e").string(), file, e, options);
+  const ResultFolder f = read_result_folder((dir.path / "e/").string());
+  EXPECT_EQ(f.name, "e");
+  expect_same(f.result, evaluation_result(file, e, options));
+  EXPECT_EQ(f.result.option("samples"), OptionValue(21));
+  EXPECT_EQ(f.result.knots_per_interval, 2);
+  EXPECT_FALSE(f.after);
+  expect_trajectory(f.before, e.samples, file.model);
+
+  const SimulationResult s = simulate_motion(file.motion, file.model, options);
+  write_simulation_outputs((dir.path / "s").string(), file, s, options);
+  const ResultFolder g = read_result_folder((dir.path / "s").string());
+  EXPECT_EQ(g.result.kind, ResultJson::Kind::kSimulation);
+  expect_same(g.result, simulation_result(file, s, options));
+  expect_trajectory(g.before, s.samples, file.model);
+}
+
+TEST(ResultFolder, OptimisationFolderReadsBack) {
+  const MotionFile file = load_motion_file(m1_path());
+  OptionValues values;
+  values.set("samples", 21);
+  values.set("max_iterations", 2);
+  values.set("formulation", std::string("strict"));
+  const OptimizeOptions options = values.optimize_options();
+  const OptimizationResult result = optimize_motion(file.motion, file.model, options);
+  TempDir dir("saltus_result_json_test_opt");
+  write_optimization_outputs(dir.path.string(), file, result, options);
+  const ResultFolder f = read_result_folder(dir.path.string());
+  expect_same(f.result, optimization_result(file, result, options));
+  EXPECT_EQ(f.result.option("epsilon"), values.get("epsilon"));
+  EXPECT_EQ(f.result.option("timing_optimized"), OptionValue(true));
+  ASSERT_TRUE(f.after);
+  expect_trajectory(f.before, result.before.samples, file.model);
+  expect_trajectory(*f.after, result.after.samples, file.model);
+
+  // The strict model has no automatic resolution: its knots are the uniform ones.
+  ASSERT_TRUE(f.result.optimization->resolution);
+  EXPECT_FALSE(f.result.optimization->resolution->automatic);
+  EXPECT_EQ(f.result.optimization->resolution->knots,
+            result.after.trajectory.rotations.front().knots());
+
+  fs::remove(dir.path / "trajectory_after.csv");
+  EXPECT_THROW(read_result_folder(dir.path.string()), InputError);
+  EXPECT_THROW(read_result_folder((dir.path / "nothing").string()), InputError);
+}
+
+TEST(ResultFolder, ResolutionReadsBackAutomaticOrUniform) {
+  const MotionFile file = load_motion_file(m1_path());
+  const int intervals = static_cast<int>(file.motion.keyframes.size()) - 1;
+  for (const std::string knots : {"auto", "2"}) {
+    SCOPED_TRACE(knots);
+    OptionValues values;
+    values.set("samples", 21);
+    values.set("max_iterations", 2);
+    values.set_text("knots_per_interval", knots);
+    const OptimizeOptions options = values.optimize_options();
+    const OptimizationResult result = optimize_motion(file.motion, file.model, options);
+    TempDir dir("saltus_result_json_test_resolution_" + knots);
+    write_optimization_outputs(dir.path.string(), file, result, options);
+    const ResultFolder f = read_result_folder(dir.path.string());
+    expect_same(f.result, optimization_result(file, result, options));
+    ASSERT_TRUE(f.result.optimization->resolution);
+    const auto& r = *f.result.optimization->resolution;
+    EXPECT_EQ(r.automatic, knots == "auto");
+    ASSERT_EQ(r.subdivisions.size(), static_cast<std::size_t>(intervals));
+    // The knots are those of the optimised motion, one clamped cubic over the spans.
+    EXPECT_EQ(r.knots, result.after.trajectory.rotations.front().knots());
+    int spans = 0;
+    for (int s : r.subdivisions)
+      spans += s;
+    EXPECT_EQ(r.knots.size(), static_cast<std::size_t>(spans + 7));
+    if (knots == "auto") {
+      ASSERT_FALSE(r.levels.empty());
+      EXPECT_EQ(r.levels.back().subdivisions.size(), r.subdivisions.size());
+    } else {
+      EXPECT_EQ(r.subdivisions, std::vector<int>(intervals, 2));
+    }
+    EXPECT_EQ(f.result.option("knots_per_interval_requested"),
+              OptionValue(knots == "auto" ? 1 : 2));
+  }
+}
 
 MotionFile pike_file() {
   MotionFile file;

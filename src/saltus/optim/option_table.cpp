@@ -1,0 +1,418 @@
+#include "saltus/optim/option_table.h"
+
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "saltus/base/constants.h"
+
+namespace saltus {
+
+namespace {
+
+constexpr double kUnbounded = std::numeric_limits<double>::infinity();
+
+/// An entry's name, flag and texts; the rest is set by the helpers below.
+OptionSpec entry(const char* name, const char* flag, const char* label, const char* unit,
+                 const char* help) {
+  OptionSpec o;
+  o.name = name;
+  o.flag = flag;
+  o.label = label;
+  o.unit = unit;
+  o.help = help;
+  return o;
+}
+
+/// A number in [min, max] (or (min, max] when min_exclusive).
+void range(OptionSpec& o, OptionKind kind, double min, double max, bool min_exclusive = false) {
+  o.kind = kind;
+  o.min = min;
+  o.max = max;
+  o.min_exclusive = min_exclusive;
+}
+
+/// The value is the field options.*part.*field (bool, int or double, as the option's kind).
+template <typename Part, typename T>
+void bind(OptionSpec& o, Part OptimizeOptions::*part, T Part::*field) {
+  o.read = [part, field](const OptimizeOptions& x) -> OptionValue { return x.*part.*field; };
+  o.write = [part, field](OptimizeOptions& x, const OptionValue& v) {
+    x.*part.*field = std::get<T>(v);
+  };
+}
+
+void record(OptionSpec& o, const char* key, ResultRecord recorded) {
+  o.result_key = key;
+  o.recorded = recorded;
+}
+
+/// The table. Ranges: `--samples` stops at 100000 because an optimisation there already holds
+/// 1.6 GB (the wrench Jacobian of every sample) and writes two 200 MB trajectories; the limit
+/// is the same for every verb, the app and the studies.
+std::vector<OptionSpec> make_table() {
+  constexpr auto nlp = &OptimizeOptions::nlp;
+  constexpr auto solver = &OptimizeOptions::solver;
+  std::vector<OptionSpec> t;
+
+  OptionSpec o = entry("formulation", "--formulation", "Model", "",
+                       "relaxed: minimise the root force with the keyframes within tolerance (the "
+                       "paper's model); strict: classic spacetime constraints, every root force "
+                       "and moment component bounded by --epsilon at every sample");
+  o.kind = OptionKind::kChoice;
+  o.choices = {"relaxed", "strict"};
+  o.choice_labels = {"relaxed (paper)", "strict: |F_i| ≤ ε"};
+  record(o, "formulation", ResultRecord::kOptimization);
+  o.read = [](const OptimizeOptions& x) -> OptionValue {
+    return std::string(x.nlp.formulation == Formulation::kStrict ? "strict" : "relaxed");
+  };
+  o.write = [](OptimizeOptions& x, const OptionValue& v) {
+    x.nlp.formulation =
+        std::get<std::string>(v) == "strict" ? Formulation::kStrict : Formulation::kRelaxed;
+  };
+  t.push_back(o);
+
+  o = entry("epsilon", "--epsilon", "ε (strict)", "N or N·m",
+            "the strict model's bound on each |F_i| at every sample");
+  range(o, OptionKind::kReal, 0.0, kUnbounded, true);
+  record(o, "epsilon", ResultRecord::kOptimization);
+  bind(o, nlp, &MotionNlpOptions::epsilon);
+  o.applies = [](const OptimizeOptions& x) { return x.nlp.formulation == Formulation::kStrict; };
+  t.push_back(o);
+
+  o = entry("optimize_timing", "--no-timing", "Optimise keyframe times", "",
+            "the interior keyframe times are optimised too; --no-timing keeps the given times");
+  o.kind = OptionKind::kSwitch;
+  record(o, "timing_optimized", ResultRecord::kOptimization);
+  bind(o, nlp, &MotionNlpOptions::optimize_timing);
+  t.push_back(o);
+
+  o = entry("knots_per_interval", "--knots-per-interval", "Knots per interval", "",
+            "knot spans per keyframe interval: a number (1 = knots at the keyframes, the paper's "
+            "resolution) or, for optimize, auto (chosen from how far the body turns, then "
+            "refined where the residual lives; relaxed model)");
+  range(o, OptionKind::kInteger, 1, 50);
+  o.use = OptionUse::kEvaluation;
+  o.word = "auto";
+  o.word_use = OptionUse::kOptimization;
+  // "knots_per_interval" records the K used, which may be finer (optimize_motion), and
+  // "resolution" whether it was automatic; this key keeps the number as it always did.
+  record(o, "knots_per_interval_requested", ResultRecord::kOptimization);
+  o.read = [](const OptimizeOptions& x) -> OptionValue {
+    if (x.automatic_resolution) return std::string("auto");
+    return x.nlp.knots_per_interval;
+  };
+  o.write = [](OptimizeOptions& x, const OptionValue& v) {
+    x.automatic_resolution = std::holds_alternative<std::string>(v);
+    x.nlp.knots_per_interval = x.automatic_resolution ? 1 : std::get<int>(v);
+  };
+  o.recorded_value = [](const OptimizeOptions& x) -> OptionValue {
+    return x.nlp.knots_per_interval;
+  };
+  t.push_back(o);
+
+  o = entry("samples", "--samples", "Samples", "",
+            "time samples on [0, T], both ends included: the evaluation grid and the optimiser's "
+            "quadrature grid (fewer = faster)");
+  range(o, OptionKind::kInteger, 2, 100000);
+  o.use = OptionUse::kEvaluation;
+  record(o, "samples", ResultRecord::kEveryResult);
+  bind(o, nlp, &MotionNlpOptions::samples);
+  t.push_back(o);
+
+  o = entry("max_iterations", "--max-iter", "Max iterations", "",
+            "Ipopt's iteration limit (0: only the starting point is evaluated)");
+  range(o, OptionKind::kInteger, 0, 100000);
+  bind(o, solver, &SolverOptions::max_iterations);
+  t.push_back(o);
+
+  o = entry("tolerance", "--tol", "Tolerance", "",
+            "Ipopt's convergence tolerance: the NLP error of an optimal exit");
+  range(o, OptionKind::kReal, 0.0, kUnbounded, true);
+  bind(o, solver, &SolverOptions::tolerance);
+  t.push_back(o);
+
+  o = entry("objective_change_tolerance", "--objective-change-tol", "Objective change tolerance",
+            "",
+            "also stop (solved, Ipopt 'acceptable') once the objective changes by less than this "
+            "fraction for 3 iterations with the keyframes met; 0 = off");
+  range(o, OptionKind::kReal, 0.0, kUnbounded);
+  bind(o, solver, &SolverOptions::objective_change_tolerance);
+  t.push_back(o);
+
+  o = entry("max_time_shift", "--max-time-shift", "Max time shift", "s",
+            "how far a keyframe time may move from the given one");
+  range(o, OptionKind::kReal, 0.0, kUnbounded);
+  bind(o, nlp, &MotionNlpOptions::max_time_shift);
+  o.applies = [](const OptimizeOptions& x) { return x.nlp.optimize_timing; };
+  t.push_back(o);
+
+  o = entry("min_time_gap", "--min-time-gap", "Min keyframe gap", "s",
+            "the least time between consecutive keyframes (paper eq. 4), at most half the "
+            "shortest given interval");
+  range(o, OptionKind::kReal, 0.0, kUnbounded, true);
+  bind(o, nlp, &MotionNlpOptions::min_time_gap);
+  o.applies = [](const OptimizeOptions& x) { return x.nlp.optimize_timing; };
+  t.push_back(o);
+
+  o = entry("regularization", "--regularization", "Regularization", "N²/rad²",
+            "weight of the proximity term that keeps the joints near the interpolated motion "
+            "(light limbs would otherwise flail); 0 = none");
+  range(o, OptionKind::kReal, 0.0, kUnbounded);
+  bind(o, nlp, &MotionNlpOptions::regularization);
+  t.push_back(o);
+
+  o = entry("max_joint_turn", "--max-joint-turn", "Max joint turn", "°",
+            "soft limit on how far a joint turns relative to its parent between two spline "
+            "control points (where the interpolation itself turns further, that is the limit); "
+            "0 = none");
+  range(o, OptionKind::kReal, 0.0, 360.0);
+  record(o, "joint_turn_limit_deg", ResultRecord::kOptimization);
+  o.read = [](const OptimizeOptions& x) -> OptionValue {
+    return x.nlp.joint_turn_limit * kDegreesPerRadian;
+  };
+  o.write = [](OptimizeOptions& x, const OptionValue& v) {
+    x.nlp.joint_turn_limit = std::get<double>(v) / kDegreesPerRadian;
+  };
+  o.recorded_value = [](const OptimizeOptions& x) -> OptionValue {
+    return x.nlp.limits_joint_turns() ? x.nlp.joint_turn_limit * kDegreesPerRadian : 0.0;
+  };
+  t.push_back(o);
+
+  o = entry("threads", "--threads", "Threads", "",
+            "threads that evaluate the root wrench and its derivatives (auto: one per hardware "
+            "thread, at most 4). The values do not depend on it, but their rounding does, and "
+            "the iterations can follow the rounding");
+  range(o, OptionKind::kInteger, 1, 64);
+  o.word = "auto";
+  o.read = [](const OptimizeOptions& x) -> OptionValue {
+    if (x.nlp.threads == 0) return std::string("auto");
+    return x.nlp.threads;
+  };
+  o.write = [](OptimizeOptions& x, const OptionValue& v) {
+    x.nlp.threads = std::holds_alternative<std::string>(v) ? 0 : std::get<int>(v);
+  };
+  t.push_back(o);
+  return t;
+}
+
+[[noreturn]] void reject(const OptionSpec& spec, const std::string& problem) {
+  throw OptionValueError(spec.flag, problem);
+}
+
+std::string quoted(const std::string& text) {
+  return "\"" + text + "\"";
+}
+
+bool in_range(const OptionSpec& spec, double v) {
+  return (spec.min_exclusive ? v > spec.min : v >= spec.min) && v <= spec.max;
+}
+
+std::size_t index_of(std::string_view name) {
+  const std::vector<OptionSpec>& table = option_table();
+  for (std::size_t i = 0; i < table.size(); ++i)
+    if (table[i].name == name) return i;
+  throw std::logic_error("no option named \"" + std::string(name) + "\" in the option table");
+}
+
+}  // namespace
+
+const std::vector<OptionSpec>& option_table() {
+  static const std::vector<OptionSpec> table = make_table();
+  return table;
+}
+
+const OptionSpec& option_spec(std::string_view name) {
+  return option_table()[index_of(name)];
+}
+
+OptionValue OptionSpec::default_value(OptionUse runs) const {
+  return read(runs == OptionUse::kEvaluation ? with_evaluation_options(EvaluateOptions{})
+                                             : OptimizeOptions{});
+}
+
+OptionValue parse_option_value(const OptionSpec& spec, const std::string& text, OptionUse runs) {
+  switch (spec.kind) {
+    case OptionKind::kSwitch:
+      if (text == "true" || text == "on" || text == "1") return true;
+      if (text == "false" || text == "off" || text == "0") return false;
+      reject(spec, quoted(text) + " is not true or false");
+    case OptionKind::kChoice:
+      return checked_option_value(spec, text, runs);
+    case OptionKind::kInteger:
+    case OptionKind::kReal:
+      break;
+  }
+  if (!spec.word.empty() && text == spec.word) return checked_option_value(spec, text, runs);
+  const char* first = text.data();
+  const char* last = first + text.size();
+  if (spec.kind == OptionKind::kInteger) {
+    int value = 0;
+    const auto [end, error] = std::from_chars(first, last, value);
+    if (error != std::errc() || end != last || text.empty())
+      reject(spec, quoted(text) +
+                       " is not a whole number (allowed: " + option_range_text(spec, runs) + ")");
+    return checked_option_value(spec, value, runs);
+  }
+  double value = 0.0;  // from_chars: the same text gives the same number in every locale
+  const auto [end, error] = std::from_chars(first, last, value);
+  if (error != std::errc() || end != last || text.empty() || !std::isfinite(value))
+    reject(spec,
+           quoted(text) + " is not a number (allowed: " + option_range_text(spec, runs) + ")");
+  return checked_option_value(spec, value, runs);
+}
+
+OptionValue checked_option_value(const OptionSpec& spec, const OptionValue& value, OptionUse runs) {
+  const auto* word = std::get_if<std::string>(&value);
+  switch (spec.kind) {
+    case OptionKind::kSwitch:
+      if (!std::holds_alternative<bool>(value)) reject(spec, "expected on or off");
+      return value;
+    case OptionKind::kChoice:
+      if (word)
+        for (const std::string& choice : spec.choices)
+          if (*word == choice) return value;
+      reject(spec, (word ? quoted(*word) : std::string("the value")) + " is not one of " +
+                       option_range_text(spec, runs));
+    case OptionKind::kInteger:
+    case OptionKind::kReal:
+      break;
+  }
+  if (word) {
+    if (spec.takes_word(runs) && *word == spec.word) return value;
+    if (!spec.word.empty() && *word == spec.word)
+      reject(spec, quoted(*word) + " is for optimisations only (allowed here: " +
+                       option_range_text(spec, runs) + ")");
+    reject(spec,
+           quoted(*word) + " is not allowed (allowed: " + option_range_text(spec, runs) + ")");
+  }
+  double number = 0.0;
+  if (const auto* i = std::get_if<int>(&value))
+    number = *i;
+  else if (const auto* d = std::get_if<double>(&value))
+    number = *d;
+  else
+    reject(spec, "expected a number (allowed: " + option_range_text(spec, runs) + ")");
+  if (spec.kind == OptionKind::kInteger && !std::holds_alternative<int>(value))
+    reject(spec, option_value_text(value) + " is not a whole number");
+  if (!std::isfinite(number) || !in_range(spec, number))
+    reject(spec, option_value_text(value) +
+                     " is out of range (allowed: " + option_range_text(spec, runs) + ")");
+  if (spec.kind == OptionKind::kReal) return number;
+  return value;
+}
+
+std::string option_value_text(const OptionValue& value) {
+  if (const auto* b = std::get_if<bool>(&value)) return *b ? "true" : "false";
+  if (const auto* i = std::get_if<int>(&value)) return std::to_string(*i);
+  if (const auto* s = std::get_if<std::string>(&value)) return *s;
+  char buffer[32];
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, std::get<double>(value)).ptr;
+  return std::string(buffer, end);
+}
+
+std::string option_range_text(const OptionSpec& spec, OptionUse runs) {
+  if (spec.kind == OptionKind::kSwitch) return "true|false";
+  if (spec.kind == OptionKind::kChoice) {
+    std::string out;
+    for (const std::string& c : spec.choices)
+      out += (out.empty() ? "" : "|") + c;
+    return out;
+  }
+  const std::string low =
+      option_value_text(spec.kind == OptionKind::kInteger ? OptionValue(static_cast<int>(spec.min))
+                                                          : OptionValue(spec.min));
+  std::string out;
+  if (std::isinf(spec.max))
+    out = (spec.min_exclusive ? "> " : ">= ") + low;
+  else
+    out = low + "-" +
+          option_value_text(spec.kind == OptionKind::kInteger
+                                ? OptionValue(static_cast<int>(spec.max))
+                                : OptionValue(spec.max));
+  if (spec.takes_word(runs)) out += " or " + spec.word;
+  return out;
+}
+
+OptionValues::OptionValues(OptionUse runs)
+    : OptionValues(runs == OptionUse::kEvaluation ? with_evaluation_options(EvaluateOptions{})
+                                                  : OptimizeOptions{},
+                   runs) {}
+
+OptionValues::OptionValues(const OptimizeOptions& options, OptionUse runs) : runs_(runs) {
+  for (const OptionSpec& spec : option_table())
+    values_.push_back(spec.read(options));
+}
+
+const OptionValue& OptionValues::get(std::string_view name) const {
+  return values_[index_of(name)];
+}
+
+int OptionValues::integer(std::string_view name) const {
+  return std::get<int>(get(name));
+}
+
+double OptionValues::real(std::string_view name) const {
+  return std::get<double>(get(name));
+}
+
+bool OptionValues::on(std::string_view name) const {
+  return std::get<bool>(get(name));
+}
+
+void OptionValues::set(std::string_view name, const OptionValue& value) {
+  const std::size_t i = index_of(name);
+  values_[i] = checked_option_value(option_table()[i], value, runs_);
+}
+
+void OptionValues::set_text(std::string_view name, const std::string& text) {
+  const std::size_t i = index_of(name);
+  values_[i] = parse_option_value(option_table()[i], text, runs_);
+}
+
+OptimizeOptions OptionValues::optimize_options() const {
+  OptimizeOptions options;
+  const std::vector<OptionSpec>& table = option_table();
+  for (std::size_t i = 0; i < table.size(); ++i)
+    table[i].write(options, values_[i]);
+  return options;
+}
+
+EvaluateOptions OptionValues::evaluate_options() const {
+  return evaluation_options(optimize_options());
+}
+
+bool OptionValues::applies(std::string_view name) const {
+  const OptionSpec& spec = option_spec(name);
+  return !spec.applies || spec.applies(optimize_options());
+}
+
+EvaluateOptions evaluation_options(const OptimizeOptions& options) {
+  EvaluateOptions e;
+  e.samples = options.nlp.samples;
+  e.interpolation.knots_per_interval = options.nlp.knots_per_interval;
+  return e;
+}
+
+OptimizeOptions with_evaluation_options(const EvaluateOptions& options) {
+  OptimizeOptions o;
+  o.automatic_resolution = false;
+  o.nlp.samples = options.samples;
+  o.nlp.knots_per_interval = options.interpolation.knots_per_interval;
+  return o;
+}
+
+std::vector<std::pair<std::string, OptionValue>> recorded_options(const OptimizeOptions& options,
+                                                                  bool optimization) {
+  std::vector<std::pair<std::string, OptionValue>> out;
+  for (const OptionSpec& spec : option_table()) {
+    const bool recorded = spec.recorded == ResultRecord::kEveryResult ||
+                          (optimization && spec.recorded == ResultRecord::kOptimization);
+    if (!recorded || (spec.applies && !spec.applies(options))) continue;
+    out.emplace_back(spec.result_key,
+                     spec.recorded_value ? spec.recorded_value(options) : spec.read(options));
+  }
+  return out;
+}
+
+}  // namespace saltus
