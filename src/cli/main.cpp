@@ -144,7 +144,7 @@ int run_simulate(const CommonArgs& args) {
 
 int run_optimize(const CommonArgs& args) {
   const auto start = std::chrono::steady_clock::now();
-  saltus::check_output_folder(args.common.out_dir);
+  saltus::check_output_folder(args.out_dir);
   const saltus::MotionFile file =
       saltus::load_motion_or_capture(args.motion_path, args.model_override);
   const saltus::OptionValues& values = args.options.values();
