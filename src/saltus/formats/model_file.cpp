@@ -123,18 +123,20 @@ ShapePart parse_shape_part(const JsonNode& node) {
   part.center = node.at("center").as_vector3_within(plausible::kMaxSegmentLength, "m");
   if (part.type == "ellipsoid") {
     const JsonNode radii = node.at("radii");
-    part.radii = radii.as_vector3_within(plausible::kMaxSegmentLength, "m");
+    part.radii = radii.as_vector3();
     if (!(part.radii.minCoeff() > 0.0))
       radii.fail("ellipsoid radii must be positive, found " +
                  message_number(part.radii.minCoeff()));
+    radii.as_vector3_within(plausible::kMaxSegmentLength, "m");
   } else if (part.type == "capsule") {
     // Signed, as a segment shape's length.
     part.length = node.at("length").as_double_within(-plausible::kMaxSegmentLength,
                                                      plausible::kMaxSegmentLength, "m");
     const JsonNode radius = node.at("radius");
-    part.radius = radius.as_double_within(0.0, plausible::kMaxSegmentLength, "m");
+    part.radius = radius.as_double();
     if (!(part.radius > 0.0))
       radius.fail("capsule radius must be positive, found " + message_number(part.radius));
+    radius.as_double_within(0.0, plausible::kMaxSegmentLength, "m");
   } else {
     type.fail("part type must be \"ellipsoid\" or \"capsule\", found " + in_quotes(part.type));
   }
