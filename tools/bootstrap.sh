@@ -15,8 +15,19 @@ cd "$root"
 packages=(build-essential cmake pkg-config clang-format
           libeigen3-dev coinor-libipopt-dev libopenblas0-serial nlohmann-json3-dev libcli11-dev
           libgtest-dev libbenchmark-dev
-          libvtk9-qt-dev libvtk9-dev qtbase5-dev xvfb xauth libgl1-mesa-dri ffmpeg
-          slurm-wlm munge parallel)
+          libvtk9-qt-dev libvtk9-dev qtbase5-dev xvfb xauth libgl1-mesa-dri ffmpeg)
+# The test form also builds under AddressSanitizer and UndefinedBehaviorSanitizer with clang and
+# runs the readers' libFuzzer targets (llvm-symbolizer, from llvm, makes the reports readable).
+# The cluster tests start a private Slurm on this machine and run a study through GNU parallel.
+[ "$mode" = test ] && packages+=(clang libclang-rt-14-dev llvm slurm-wlm munge parallel)
+
+# Each stage's wall time, so CI logs show where the time goes (CI's limit is 60 minutes).
+stage_start=$SECONDS
+stage() {
+  echo "-- $((SECONDS - stage_start)) s (total $SECONDS s)"
+  echo "== $*"
+  stage_start=$SECONDS
+}
 
 missing=()
 for p in "${packages[@]}"; do
@@ -33,7 +44,7 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-echo "== configure and build (Release)"
+stage "configure and build (Release)"
 cmake --preset release >/dev/null
 cmake --build --preset release -j"$(nproc)"
 
@@ -43,7 +54,7 @@ if [ "$mode" = demo ]; then
   build/release/bin/saltus evaluate "$motion" --out out/M1-evaluate
   echo "== saltus simulate $motion"
   build/release/bin/saltus simulate "$motion" --out out/M1-simulate
-  # The main job: every bundled skill optimised (relaxed model, the paper's resolution).
+  # The main job: every bundled skill optimised (relaxed model, automatic resolution).
   for motion in examples/motions/*.motion.json; do
     name="$(basename "$motion" .motion.json)"
     echo "== saltus optimize $motion"
@@ -52,9 +63,19 @@ if [ "$mode" = demo ]; then
   exit 0
 fi
 
-echo "== format check (clang-format, .clang-format)"
+stage "format check (clang-format, .clang-format)"
 mapfile -t sources < <(git ls-files '*.h' '*.cpp' 2>/dev/null || find src tests -name '*.h' -o -name '*.cpp')
 clang-format --dry-run --Werror "${sources[@]}"
 
-echo "== tests"
+stage "tests"
 ctest --preset release --output-on-failure --no-tests=error -j"$(nproc)"
+
+# The same unit, integration and cli tests with clang under AddressSanitizer and
+# UndefinedBehaviorSanitizer (float-cast-overflow included), and the readers' libFuzzer targets
+# for a short seeded run each (docs/safety.md). No GUI: it adds nothing the sanitizers look at.
+stage "sanitizer build (clang, ASan + UBSan, libFuzzer targets)"
+cmake --preset sanitize >/dev/null
+cmake --build --preset sanitize -j"$(nproc)"
+stage "sanitizer tests and fuzzing"
+ctest --preset sanitize --output-on-failure --no-tests=error -j"$(nproc)"
+echo "-- $((SECONDS - stage_start)) s (total $SECONDS s)"

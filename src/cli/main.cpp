@@ -1,6 +1,8 @@
 // `saltus`: command-line front end. Parses arguments, calls the library, prints a summary.
 // Exit status: 0 success, 2 bad input (message names file and field), 3 optimisation did not
-// converge (results written anyway), 1 internal error.
+// converge (results written anyway), 4 the output could not be written (another run is writing
+// the same folder, or the system refused: disk full, no permission; nothing was changed),
+// 1 internal error.
 
 #include <CLI/CLI.hpp>
 #include <cctype>
@@ -20,6 +22,7 @@
 #include "saltus/evaluation/simulate.h"
 #include "saltus/formats/capture_files.h"
 #include "saltus/formats/motion_file.h"
+#include "saltus/formats/output_folder.h"
 #include "saltus/formats/result_json.h"
 #include "saltus/motion/motion.h"
 #include "saltus/optim/optimize.h"
@@ -30,6 +33,7 @@ namespace {
 constexpr int kExitBadInput = 2;
 constexpr int kExitInternal = 1;
 constexpr int kExitNotSolved = 3;
+constexpr int kExitOutputNotWritten = 4;
 
 struct CommonArgs {
   std::string motion_path;
@@ -85,6 +89,7 @@ void print_outputs(const std::string& out_dir, double seconds) {
 
 int run_evaluate(const CommonArgs& args) {
   const auto start = std::chrono::steady_clock::now();
+  saltus::check_output_folder(args.out_dir);
   const saltus::MotionFile file =
       saltus::load_motion_or_capture(args.motion_path, args.model_override);
   const saltus::EvaluateOptions options = options_from(args);
@@ -105,6 +110,7 @@ int run_evaluate(const CommonArgs& args) {
 
 int run_simulate(const CommonArgs& args) {
   const auto start = std::chrono::steady_clock::now();
+  saltus::check_output_folder(args.out_dir);
   const saltus::MotionFile file =
       saltus::load_motion_or_capture(args.motion_path, args.model_override);
   const saltus::EvaluateOptions options = options_from(args);
@@ -135,6 +141,7 @@ int run_simulate(const CommonArgs& args) {
 
 int run_optimize(const CommonArgs& args) {
   const auto start = std::chrono::steady_clock::now();
+  saltus::check_output_folder(args.out_dir);
   const saltus::MotionFile file =
       saltus::load_motion_or_capture(args.motion_path, args.model_override);
   const saltus::OptionValues& values = args.options.values();
@@ -283,6 +290,9 @@ int main(int argc, char** argv) {
   } catch (const saltus::InputError& e) {
     std::fprintf(stderr, "saltus: error: %s\n", e.what());
     return kExitBadInput;
+  } catch (const saltus::OutputError& e) {
+    std::fprintf(stderr, "saltus: error: %s\n", e.what());
+    return kExitOutputNotWritten;
   } catch (const std::invalid_argument& e) {
     std::fprintf(stderr, "saltus: error: %s\n", e.what());
     return kExitBadInput;

@@ -1,25 +1,312 @@
 #include "saltus/base/json_reader.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <climits>
 #include <cmath>
-#include <fstream>
-#include <sstream>
+#include <cstdio>
+#include <cstring>
+
+#include "saltus/base/text_format.h"
 
 namespace saltus {
 
-nlohmann::json read_json_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, "", "cannot open file for reading");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  try {
-    return nlohmann::json::parse(buffer.str());
-  } catch (const nlohmann::json::parse_error& e) {
-    // e.what() carries "line L, column C" which is what a user needs to find the typo.
-    std::string what = e.what();
-    const auto pos = what.find("parse error");
-    throw InputError(path, "",
-                     "invalid JSON: " + (pos == std::string::npos ? what : what.substr(pos)));
+namespace {
+
+/// Length of the well-formed UTF-8 sequence starting at text[i], 0 if there is none
+/// (Unicode 15, Table 3-7).
+std::size_t utf8_sequence_length(const std::string& text, std::size_t i) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+  const unsigned char b0 = byte(i);
+  if (b0 < 0x80) return 1;
+  std::size_t n = 0;
+  unsigned char low = 0x80;
+  unsigned char high = 0xBF;
+  if (b0 >= 0xC2 && b0 <= 0xDF) {
+    n = 2;
+  } else if (b0 >= 0xE0 && b0 <= 0xEF) {
+    n = 3;
+    if (b0 == 0xE0) low = 0xA0;
+    if (b0 == 0xED) high = 0x9F;  // no surrogates
+  } else if (b0 >= 0xF0 && b0 <= 0xF4) {
+    n = 4;
+    if (b0 == 0xF0) low = 0x90;
+    if (b0 == 0xF4) high = 0x8F;  // nothing past U+10FFFF
+  } else {
+    return 0;
   }
+  if (i + n > text.size()) return 0;
+  if (byte(i + 1) < low || byte(i + 1) > high) return 0;
+  for (std::size_t k = 2; k < n; ++k)
+    if (byte(i + k) < 0x80 || byte(i + k) > 0xBF) return 0;
+  return n;
+}
+
+std::string hex_byte(unsigned char c) {
+  char buffer[8];
+  std::snprintf(buffer, sizeof buffer, "\\x%02X", static_cast<unsigned>(c));
+  return buffer;
+}
+
+/// Builds the document from nlohmann's SAX events while tracking where it is, so that a
+/// duplicate key, a number out of range or too deep a nesting is reported with its JSON pointer.
+/// (nlohmann's own DOM parser keeps the last of two equal keys and reports 1e400 as an
+/// out_of_range exception without a position.)
+class TrackingSax {
+ public:
+  using json = nlohmann::json;
+
+  TrackingSax(const std::string& text, const std::string& file) : text_(text), file_(file) {}
+
+  json take() { return std::move(root_); }
+
+  bool null() { return add(json(nullptr)); }
+  bool boolean(bool v) { return add(json(v)); }
+  bool number_integer(json::number_integer_t v) { return add(json(v)); }
+  bool number_unsigned(json::number_unsigned_t v) { return add(json(v)); }
+  bool number_float(json::number_float_t v, const json::string_t&) { return add(json(v)); }
+  bool string(json::string_t& v) { return add(json(std::move(v))); }
+  bool binary(json::binary_t&) { return add(json(nullptr)); }  // not produced by JSON text
+
+  bool start_object(std::size_t) { return open(json::object()); }
+  bool start_array(std::size_t) { return open(json::array()); }
+  bool end_object() { return close(); }
+  bool end_array() { return close(); }
+
+  bool key(json::string_t& key) {
+    json& object = *open_.back();
+    if (object.contains(key))
+      throw InputError(file_, pointer() + "/" + json_pointer_escape(key),
+                       "the key \"" + printable(key) +
+                           "\" appears twice in this object (JSON readers disagree on which "
+                           "one counts; keep one)");
+    keys_.back() = key;
+    return true;
+  }
+
+  bool parse_error(std::size_t position, const std::string& last_token,
+                   const nlohmann::detail::exception& e) {
+    if (e.id == 406) {  // out_of_range: number overflow, e.g. 1e400
+      throw InputError(file_, pointer_of_next_value(),
+                       "number " + printable(last_token) +
+                           " is out of range (a double's magnitude is at most 1.8e308); at " +
+                           line_and_column(position));
+    }
+    // e.what() carries "line L, column C" which is what a user needs to find the typo.
+    const std::string what = e.what();
+    const auto at = what.find("parse error");
+    throw InputError(
+        file_, "", "invalid JSON: " + printable(at == std::string::npos ? what : what.substr(at)));
+  }
+
+ private:
+  json* place(json&& value) {
+    if (open_.empty()) {
+      root_ = std::move(value);
+      return &root_;
+    }
+    json& parent = *open_.back();
+    if (parent.is_array()) {
+      parent.push_back(std::move(value));
+      return &parent.back();
+    }
+    json& slot = parent[keys_.back()];
+    slot = std::move(value);
+    return &slot;
+  }
+
+  bool add(json&& value) {
+    place(std::move(value));
+    return true;
+  }
+
+  bool open(json&& container) {
+    if (open_.size() >= kMaxJsonDepth)
+      throw InputError(file_, pointer_of_next_value(),
+                       "nested deeper than " + std::to_string(kMaxJsonDepth) +
+                           " levels (Saltus files nest a few levels)");
+    json* p = place(std::move(container));
+    open_.push_back(p);
+    keys_.emplace_back();
+    return true;
+  }
+
+  bool close() {
+    open_.pop_back();
+    keys_.pop_back();
+    return true;
+  }
+
+  /// JSON pointer of the innermost open container.
+  std::string pointer() const {
+    std::string out;
+    for (std::size_t level = 0; level + 1 < open_.size(); ++level)
+      out += "/" + component(level);
+    return out;
+  }
+
+  /// The component that leads from open container `level` to the one inside it.
+  std::string component(std::size_t level) const {
+    const json& container = *open_[level];
+    if (container.is_array()) return std::to_string(container.size() - 1);
+    return json_pointer_escape(keys_[level]);
+  }
+
+  /// Where the value being parsed now goes.
+  std::string pointer_of_next_value() const {
+    if (open_.empty()) return "";
+    const json& container = *open_.back();
+    const std::string last =
+        container.is_array() ? std::to_string(container.size()) : json_pointer_escape(keys_.back());
+    return pointer() + "/" + last;
+  }
+
+  std::string line_and_column(std::size_t position) const {
+    std::size_t line = 1;
+    std::size_t column = 1;
+    for (std::size_t i = 0; i < position && i < text_.size(); ++i) {
+      if (text_[i] == '\n') {
+        ++line;
+        column = 1;
+      } else {
+        ++column;
+      }
+    }
+    return "line " + std::to_string(line) + ", column " + std::to_string(column);
+  }
+
+  const std::string& text_;
+  const std::string& file_;
+  json root_;
+  std::vector<json*> open_;        ///< open containers, outermost first
+  std::vector<std::string> keys_;  ///< per open container: the current key (objects)
+};
+
+std::string system_error_text(int error) {
+  return std::strerror(error);
+}
+
+}  // namespace
+
+bool is_valid_utf8(const std::string& text) {
+  for (std::size_t i = 0; i < text.size();) {
+    const std::size_t n = utf8_sequence_length(text, i);
+    if (n == 0) return false;
+    i += n;
+  }
+  return true;
+}
+
+std::string printable(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size();) {
+    const std::size_t n = utf8_sequence_length(text, i);
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (n == 0 || (n == 1 && (c < 0x20 || c == 0x7F))) {
+      out += hex_byte(c);
+      ++i;
+    } else {
+      out.append(text, i, n);
+      i += n;
+    }
+  }
+  return out;
+}
+
+std::string nearest_name(const std::string& name, const std::vector<std::string>& candidates) {
+  const auto lower = [](std::string s) {
+    for (char& c : s)
+      c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+  };
+  const std::string a = lower(name);
+  std::string best;
+  std::size_t best_distance = std::string::npos;
+  for (const std::string& candidate : candidates) {
+    const std::string b = lower(candidate);
+    // Levenshtein distance, one row at a time.
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j)
+      row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+      std::size_t diagonal = row[0];
+      row[0] = i;
+      for (std::size_t j = 1; j <= b.size(); ++j) {
+        const std::size_t above = row[j];
+        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+        diagonal = above;
+      }
+    }
+    if (row[b.size()] < best_distance) {
+      best_distance = row[b.size()];
+      best = candidate;
+    }
+  }
+  const std::size_t allowed = std::max<std::size_t>(1, name.size() / 3);
+  return best_distance <= allowed ? best : std::string();
+}
+
+nlohmann::json parse_json_text(const std::string& text, const std::string& file) {
+  TrackingSax sax(text, file);
+  nlohmann::json::sax_parse(text, &sax);
+  return sax.take();
+}
+
+nlohmann::json read_json_file(const std::string& path) {
+  if (!is_valid_utf8(path))
+    throw InputError(printable(path), "",
+                     "the file name is not valid UTF-8; rename the file (Saltus writes file "
+                     "names into its results, which are UTF-8 JSON)");
+  // O_NONBLOCK: opening a named pipe must not wait for a writer; fstat then refuses it.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY | O_NONBLOCK);
+  if (fd < 0) {
+    const int error = errno;
+    throw InputError(path, "", "cannot open file for reading: " + system_error_text(error));
+  }
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  struct stat info {};
+  if (::fstat(fd, &info) != 0) {
+    const int error = errno;
+    throw InputError(path, "", "cannot read the file: " + system_error_text(error));
+  }
+  if (S_ISDIR(info.st_mode)) throw InputError(path, "", "is a folder, not a file");
+  if (!S_ISREG(info.st_mode))
+    throw InputError(path, "",
+                     "is not a regular file (a device, pipe or socket); Saltus reads model and "
+                     "motion files only");
+  if (static_cast<std::uintmax_t>(info.st_size) > kMaxJsonFileBytes)
+    throw InputError(path, "",
+                     "the file is " +
+                         message_number(static_cast<double>(info.st_size) / 1048576.0) +
+                         " MiB; Saltus reads files of at most " +
+                         std::to_string(kMaxJsonFileBytes / 1048576) + " MiB");
+  std::string text;
+  text.reserve(static_cast<std::size_t>(info.st_size));
+  char buffer[65536];
+  for (;;) {
+    const ssize_t n = ::read(fd, buffer, sizeof buffer);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      const int error = errno;
+      throw InputError(path, "", "cannot read the file: " + system_error_text(error));
+    }
+    if (n == 0) break;
+    text.append(buffer, static_cast<std::size_t>(n));
+    if (text.size() > kMaxJsonFileBytes)  // it grew while being read
+      throw InputError(path, "",
+                       "the file is larger than " + std::to_string(kMaxJsonFileBytes / 1048576) +
+                           " MiB, the most Saltus reads");
+  }
+  return parse_json_text(text, path);
 }
 
 std::string json_pointer_escape(const std::string& key) {
@@ -91,6 +378,20 @@ void JsonNode::require_array() const {
   if (!value_->is_array()) fail("expected an array, found " + type_name(*value_));
 }
 
+void JsonNode::require_keys_within(const std::vector<std::string>& allowed) const {
+  require_object();
+  for (const auto& [key, child] : members()) {
+    if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
+    std::string list;
+    for (const std::string& a : allowed)
+      list += (list.empty() ? "\"" : ", \"") + a + "\"";
+    const std::string suggestion = nearest_name(key, allowed);
+    child.fail("unknown field \"" + printable(key) + "\"" +
+               (suggestion.empty() ? std::string() : " (did you mean \"" + suggestion + "\"?)") +
+               "; allowed here: " + list);
+  }
+}
+
 double JsonNode::as_double() const {
   if (!value_->is_number()) fail("expected a number, found " + type_name(*value_));
   const double v = value_->get<double>();
@@ -98,9 +399,27 @@ double JsonNode::as_double() const {
   return v;
 }
 
+double JsonNode::as_double_within(double low, double high, const std::string& unit) const {
+  const double v = as_double();
+  if (!(v >= low && v <= high)) {
+    const std::string u = unit.empty() ? std::string() : " " + unit;
+    fail(message_number(v) + u + " is outside the plausible range [" + message_number(low) + ", " +
+         message_number(high) + "]" + u);
+  }
+  return v;
+}
+
 int JsonNode::as_int() const {
   if (!value_->is_number_integer()) fail("expected an integer, found " + type_name(*value_));
-  return value_->get<int>();
+  if (value_->is_number_unsigned()) {
+    const auto v = value_->get<nlohmann::json::number_unsigned_t>();
+    if (v > static_cast<nlohmann::json::number_unsigned_t>(INT_MAX))
+      fail("integer " + std::to_string(v) + " is too large");
+    return static_cast<int>(v);
+  }
+  const auto v = value_->get<nlohmann::json::number_integer_t>();
+  if (v < INT_MIN || v > INT_MAX) fail("integer " + std::to_string(v) + " is out of range");
+  return static_cast<int>(v);
 }
 
 std::string JsonNode::as_string() const {
@@ -127,6 +446,14 @@ std::vector<double> JsonNode::as_doubles(std::size_t n) const {
 Eigen::Vector3d JsonNode::as_vector3() const {
   const auto v = as_doubles(3);
   return Eigen::Vector3d(v[0], v[1], v[2]);
+}
+
+Eigen::Vector3d JsonNode::as_vector3_within(double limit, const std::string& unit) const {
+  as_doubles(3);  // shape and finiteness first
+  Eigen::Vector3d out;
+  for (std::size_t k = 0; k < 3; ++k)
+    out[static_cast<Eigen::Index>(k)] = at(k).as_double_within(-limit, limit, unit);
+  return out;
 }
 
 }  // namespace saltus

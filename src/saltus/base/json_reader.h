@@ -5,6 +5,7 @@
 /// as DESIGN §4 requires.
 
 #include <Eigen/Core>
+#include <cstddef>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -14,8 +15,34 @@
 
 namespace saltus {
 
-/// Parses a whole JSON file. Throws InputError naming the file (and line/column for syntax).
+/// The largest file read_json_file reads. A 500-keyframe motion is 0.5 MB and a model a few
+/// kB; anything beyond this is the wrong file (or a device such as /dev/zero), refused before
+/// it is read.
+inline constexpr std::size_t kMaxJsonFileBytes = 64u * 1024u * 1024u;
+/// The deepest nesting of arrays and objects accepted; Saltus's formats nest at most 5 deep.
+inline constexpr std::size_t kMaxJsonDepth = 64;
+
+/// Reads and parses a JSON file. Throws InputError naming the file (and the JSON pointer or
+/// line/column) when the file name is not valid UTF-8, the file cannot be opened, is not a
+/// regular file or is larger than kMaxJsonFileBytes, or its text is not JSON: syntax, ill-formed
+/// UTF-8, a number beyond double's range (1e400), an object with the same key twice, nesting
+/// deeper than kMaxJsonDepth.
 nlohmann::json read_json_file(const std::string& path);
+
+/// Parses JSON text with the checks of read_json_file; `file` names it in messages.
+nlohmann::json parse_json_text(const std::string& text, const std::string& file);
+
+/// True when `text` is well-formed UTF-8 (no overlong forms, surrogates or code points past
+/// U+10FFFF).
+bool is_valid_utf8(const std::string& text);
+
+/// `text` with every byte that is not part of well-formed UTF-8, and every control character,
+/// written as \xNN: safe to print and to store in a JSON string.
+std::string printable(const std::string& text);
+
+/// The candidate closest to `name` by edit distance (case-insensitive) if it is close enough to
+/// be a likely typo (at most a third of the name's length, at least 1, edits), else "".
+std::string nearest_name(const std::string& name, const std::vector<std::string>& candidates);
 
 /// A view of one JSON value plus where it sits (file label and JSON pointer).
 class JsonNode {
@@ -49,8 +76,14 @@ class JsonNode {
 
   void require_object() const;
   void require_array() const;
+  /// Requires an object whose keys are all in `allowed`. A typo such as "tolerence" would
+  /// otherwise be ignored silently and a default used; the message names the unknown key at its
+  /// own path and suggests the nearest allowed one.
+  void require_keys_within(const std::vector<std::string>& allowed) const;
   /// Finite number (rejects NaN/inf, strings, booleans).
   double as_double() const;
+  /// Finite number in [low, high]; the message gives the range with `unit` (e.g. "kg").
+  double as_double_within(double low, double high, const std::string& unit) const;
   int as_int() const;
   std::string as_string() const;
   /// Array of exactly `n` finite numbers.
@@ -58,6 +91,8 @@ class JsonNode {
   /// Array of any length of finite numbers.
   std::vector<double> as_double_array() const;
   Eigen::Vector3d as_vector3() const;
+  /// Three finite numbers, each in [-limit, limit].
+  Eigen::Vector3d as_vector3_within(double limit, const std::string& unit) const;
 
  private:
   const nlohmann::json* value_;

@@ -26,12 +26,14 @@ std::string resolve_model_path(const std::string& model_field, const std::string
   const fs::path relative = base / model_field;
   const bool looks_like_path =
       model_field.find('/') != std::string::npos || fs::path(model_field).extension() == ".json";
-  if (looks_like_path || fs::exists(relative)) {
-    return fs::exists(relative) && fs::is_regular_file(relative) ? relative.string() : "";
+  // error_code forms: a name too long for the file system is "not found", not an exception.
+  std::error_code ec;
+  if (looks_like_path || fs::exists(relative, ec)) {
+    return fs::is_regular_file(relative, ec) ? relative.string() : "";
   }
   for (const auto& dir : resource_directories()) {
     const fs::path candidate = fs::path(dir) / "models" / (model_field + ".json");
-    if (fs::exists(candidate)) return candidate.string();
+    if (fs::exists(candidate, ec)) return candidate.string();
   }
   return "";
 }

@@ -2,12 +2,14 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <unordered_map>
 
 #include "saltus/base/input_error.h"
 #include "saltus/base/json_reader.h"
 #include "saltus/base/text_format.h"
+#include "saltus/formats/plausible_ranges.h"
 
 namespace saltus {
 
@@ -31,10 +33,38 @@ std::vector<std::string> peek_segment_names(const nlohmann::json& segments) {
   return names;
 }
 
+/// Checks principal moments (ascending or not) of a segment of `mass` kg: each one's radius of
+/// gyration sqrt(I/m) plausible, and the triangle inequality Ia + Ib >= Ic that every rigid
+/// body's principal moments obey (Ix + Iy = Σ m(x² + y²) + ... >= Σ m(x² + y²) = Iz, equality for
+/// a flat body).
+void check_principal_moments(const JsonNode& node, const Eigen::Vector3d& moments, double mass) {
+  for (Eigen::Index k = 0; k < 3; ++k) {
+    const double gyration = std::sqrt(moments[k] / mass);
+    if (!(gyration >= plausible::kMinRadiusOfGyration &&
+          gyration <= plausible::kMaxRadiusOfGyration))
+      node.fail("principal moment " + message_number(moments[k]) + " kg·m² of a " +
+                message_number(mass) + " kg segment means a radius of gyration of " +
+                message_number(gyration) + " m, outside the plausible [" +
+                message_number(plausible::kMinRadiusOfGyration) + ", " +
+                message_number(plausible::kMaxRadiusOfGyration) + "] m");
+  }
+  for (Eigen::Index k = 0; k < 3; ++k) {
+    const double a = moments[(k + 1) % 3];
+    const double b = moments[(k + 2) % 3];
+    const double c = moments[k];
+    if (a + b < c * (1.0 - plausible::kInertiaTriangleSlack))
+      node.fail("principal moments " + message_number(moments[0]) + ", " +
+                message_number(moments[1]) + ", " + message_number(moments[2]) +
+                " kg·m² violate the triangle inequality (" + message_number(a) + " + " +
+                message_number(b) + " < " + message_number(c) +
+                "): no rigid body has them; each moment must be at most the sum of the other two");
+  }
+}
+
 /// Inertia about the CoM in segment axes. Three values are principal moments along the segment
 /// axes; six are the matrix entries [Ixx, Iyy, Izz, Ixy, Ixz, Iyz] (I(0,1) = Ixy, i.e. the
 /// tensor's off-diagonal entries themselves, not the negated products of inertia).
-Eigen::Matrix3d parse_inertia(const JsonNode& node) {
+Eigen::Matrix3d parse_inertia(const JsonNode& node, double mass) {
   node.require_array();
   const std::size_t n = node.size();
   if (n == 3) {
@@ -47,6 +77,7 @@ Eigen::Matrix3d parse_inertia(const JsonNode& node) {
                      message_number(moment));
       inertia(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k)) = moment;
     }
+    check_principal_moments(node, inertia.diagonal(), mass);
     return inertia;
   }
   if (n == 6) {
@@ -55,6 +86,13 @@ Eigen::Matrix3d parse_inertia(const JsonNode& node) {
     inertia << v[0], v[3], v[4],  //
         v[3], v[1], v[5],         //
         v[4], v[5], v[2];
+    // Scale first: entries of 1e308 would overflow inside the eigensolver.
+    const double scale = inertia.cwiseAbs().maxCoeff();
+    if (!(scale > 0.0)) node.fail("inertia is zero");
+    if (!(std::sqrt(scale / mass) <= plausible::kMaxRadiusOfGyration))
+      node.fail("inertia entry " + message_number(scale) + " kg·m² of a " + message_number(mass) +
+                " kg segment is implausibly large (radius of gyration " +
+                message_number(std::sqrt(scale / mass)) + " m)");
     // LLT fails on indefinite and semi-definite matrices alike; the smallest eigenvalue tells
     // the user how far off the numbers are.
     const Eigen::LLT<Eigen::Matrix3d> llt(inertia);
@@ -63,6 +101,7 @@ Eigen::Matrix3d parse_inertia(const JsonNode& node) {
     if (llt.info() != Eigen::Success || !(smallest > 0.0))
       node.fail("inertia is not positive definite (smallest eigenvalue " +
                 message_number(smallest) + ")");
+    check_principal_moments(node, eigen.eigenvalues(), mass);
     return inertia;
   }
   node.fail("inertia must have 3 principal moments or 6 values [Ixx, Iyy, Izz, Ixy, Ixz, Iyz], " +
@@ -72,24 +111,32 @@ Eigen::Matrix3d parse_inertia(const JsonNode& node) {
 /// One entry of "parts": {"name", "type": "ellipsoid", "center", "radii"} or {"name", "type":
 /// "capsule", "center", "length", "radius"}.
 ShapePart parse_shape_part(const JsonNode& node) {
-  node.require_object();
+  const JsonNode type = node.at("type");
+  const std::string kind = type.as_string();
+  if (kind == "ellipsoid")
+    node.require_keys_within({"name", "type", "center", "radii"});
+  else if (kind == "capsule")
+    node.require_keys_within({"name", "type", "center", "length", "radius"});
   ShapePart part;
   if (const auto name = node.find("name")) part.name = name->as_string();
-  const JsonNode type = node.at("type");
-  part.type = type.as_string();
-  part.center = node.at("center").as_vector3();
+  part.type = kind;
+  part.center = node.at("center").as_vector3_within(plausible::kMaxSegmentLength, "m");
   if (part.type == "ellipsoid") {
     const JsonNode radii = node.at("radii");
     part.radii = radii.as_vector3();
     if (!(part.radii.minCoeff() > 0.0))
       radii.fail("ellipsoid radii must be positive, found " +
                  message_number(part.radii.minCoeff()));
+    radii.as_vector3_within(plausible::kMaxSegmentLength, "m");
   } else if (part.type == "capsule") {
-    part.length = node.at("length").as_double();
+    // Signed, as a segment shape's length.
+    part.length = node.at("length").as_double_within(-plausible::kMaxSegmentLength,
+                                                     plausible::kMaxSegmentLength, "m");
     const JsonNode radius = node.at("radius");
     part.radius = radius.as_double();
     if (!(part.radius > 0.0))
       radius.fail("capsule radius must be positive, found " + message_number(part.radius));
+    radius.as_double_within(0.0, plausible::kMaxSegmentLength, "m");
   } else {
     type.fail("part type must be \"ellipsoid\" or \"capsule\", found " + in_quotes(part.type));
   }
@@ -97,18 +144,21 @@ ShapePart parse_shape_part(const JsonNode& node) {
 }
 
 SegmentShape parse_shape(const JsonNode& node) {
-  node.require_object();
+  node.require_keys_within({"type", "length", "radius", "parts"});
   SegmentShape shape;
   const JsonNode type = node.at("type");
   shape.type = type.as_string();
   if (shape.type != "capsule" && shape.type != "ellipsoid" && shape.type != "box")
     type.fail("shape type must be \"capsule\", \"ellipsoid\" or \"box\", found " +
               in_quotes(shape.type));
-  shape.length = node.at("length").as_double();
+  // Signed: a negative length draws the shape along -y.
+  shape.length = node.at("length").as_double_within(-plausible::kMaxSegmentLength,
+                                                    plausible::kMaxSegmentLength, "m");
   const JsonNode radius = node.at("radius");
   shape.radius = radius.as_double();
   if (shape.radius < 0.0)
     radius.fail("shape radius must not be negative, found " + message_number(shape.radius));
+  radius.as_double_within(0.0, plausible::kMaxSegmentLength, "m");
   if (const auto parts = node.find("parts")) {
     parts->require_array();
     for (std::size_t i = 0; i < parts->size(); ++i)
@@ -155,6 +205,7 @@ BodyModel parse_body_model(const nlohmann::json& document, const std::string& fi
   if (format.as_string() != kModelFormat)
     format.fail("unsupported format " + in_quotes(format.as_string()) + ", expected " +
                 in_quotes(kModelFormat));
+  root.require_keys_within({"format", "name", "source", "segments"});
 
   BodyModel model;
   model.name = root.at("name").as_string();
@@ -170,7 +221,8 @@ BodyModel parse_body_model(const nlohmann::json& document, const std::string& fi
 
   for (std::size_t i = 0; i < segments.size(); ++i) {
     const JsonNode node = segments.at(i);
-    node.require_object();
+    node.require_keys_within(
+        {"name", "parent", "joint", "joint_position", "mass", "com", "inertia", "shape"});
     Segment segment;
 
     const JsonNode name = node.at("name");
@@ -199,18 +251,20 @@ BodyModel parse_body_model(const nlohmann::json& document, const std::string& fi
     // The root's placement is a motion variable, so its joint_position may be left out.
     if (i == 0) {
       if (const auto position = node.find("joint_position"))
-        segment.joint_position = position->as_vector3();
+        segment.joint_position = position->as_vector3_within(plausible::kMaxSegmentLength, "m");
     } else {
-      segment.joint_position = node.at("joint_position").as_vector3();
+      segment.joint_position =
+          node.at("joint_position").as_vector3_within(plausible::kMaxSegmentLength, "m");
     }
 
     const JsonNode mass = node.at("mass");
     segment.mass = mass.as_double();
     if (!(segment.mass > 0.0))
       mass.fail("mass must be positive, found " + message_number(segment.mass));
+    mass.as_double_within(plausible::kMinSegmentMass, plausible::kMaxSegmentMass, "kg");
 
-    segment.com = node.at("com").as_vector3();
-    segment.inertia = parse_inertia(node.at("inertia"));
+    segment.com = node.at("com").as_vector3_within(plausible::kMaxSegmentLength, "m");
+    segment.inertia = parse_inertia(node.at("inertia"), segment.mass);
     if (const auto shape = node.find("shape")) segment.shape = parse_shape(*shape);
 
     model.segments.push_back(std::move(segment));

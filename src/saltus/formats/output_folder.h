@@ -1,43 +1,100 @@
 #pragma once
 /// @file
-/// All-or-nothing output folders: files are written into a hidden temporary sibling folder and
-/// the folder is renamed into place only when every file is complete, so an error or a crash
-/// never leaves a half-written result behind.
+/// Output folders that cannot destroy anything (README "What Saltus promises"; docs/safety.md).
+///
+/// A result is written into a hidden temporary sibling `.DIR.tmp-<pid>-<n>` and swapped into
+/// place only when every file is complete, with one atomic renameat2(RENAME_EXCHANGE): at every
+/// instant DIR is either the old or the new complete folder. An existing DIR is replaced only
+/// when it is recognisably Saltus's own: its result.json has a Saltus format tag and it holds
+/// only the files Saltus writes for that kind of result (result_kinds()). One run at a time
+/// writes DIR (a lock on `.DIR.lock`, held from construction to commit); SIGINT, SIGTERM and
+/// SIGHUP remove the temporary folder before the process ends, and the temporaries of runs that
+/// died anyway (SIGKILL, power loss) are removed by the next run that writes DIR.
 
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace saltus {
 
+/// The output could not be written for a reason outside the input: another run is writing the
+/// same folder (busy()), or the system refused (disk full, no permission, read-only). Nothing was
+/// changed. The CLI exits with status 4.
+class OutputError : public std::runtime_error {
+ public:
+  OutputError(const std::string& message, bool busy) : std::runtime_error(message), busy_(busy) {}
+  bool busy() const { return busy_; }
+
+ private:
+  bool busy_;
+};
+
+/// One kind of result folder: how its result.json is recognised and what Saltus writes in it.
+struct ResultKind {
+  std::string name;    ///< "evaluate", "simulate", "optimize", "study mass", ...
+  std::string format;  ///< result.json "format"
+  /// A result.json field that tells kinds of one format apart and the values that mean this
+  /// kind; an empty value list matches any value (the kind is tried after the others).
+  std::string field;
+  std::vector<std::string> values;
+  std::vector<std::string> files;  ///< regular files Saltus writes there
+  /// Sub-folders that may hold only PNG images (the paper report's figures/).
+  std::vector<std::string> image_folders;
+  /// Any other sub-folder must itself be a Saltus result (the paper report's M1/, mass/, ...).
+  bool holds_results = false;
+};
+
+/// Every kind of result folder Saltus writes, in one place. A verb that writes a new file adds
+/// it here, or its next run refuses to replace the folder.
+const std::vector<ResultKind>& result_kinds();
+
+/// Why `folder` may not be replaced: "" when it is an empty folder or a Saltus result holding only
+/// files Saltus writes; otherwise what makes it someone else's (a sentence for a message).
+std::string foreign_content(const std::string& folder);
+
+/// Checks, without changing anything, that a result may be written to `final_path` (what the
+/// OutputFolder constructor checks): front ends call it before a long computation. Throws
+/// InputError saying why and how to proceed.
+void check_output_folder(const std::string& final_path);
+
 class OutputFolder {
  public:
-  /// Prepares a temporary folder next to `final_path`. Throws InputError if `final_path`
-  /// exists and is a file, or a non-empty folder that holds no Saltus result (no result.json):
-  /// we replace earlier results, never a user's other files.
+  /// Takes the lock of `final_path`, removes temporaries of dead runs, checks the folder may be
+  /// replaced and creates the temporary folder. Creates missing parent folders. Throws
+  /// InputError (bad --out: a file, a link, someone else's folder), OutputError (busy, or the
+  /// system refused).
   explicit OutputFolder(std::string final_path);
-  /// Removes the temporary folder unless commit() succeeded.
+  /// Removes the temporary folder unless commit() succeeded, and releases the lock.
   ~OutputFolder();
   OutputFolder(const OutputFolder&) = delete;
   OutputFolder& operator=(const OutputFolder&) = delete;
 
-  /// Path of a file inside the temporary folder.
+  /// Path of a file inside the temporary folder (for writers that open files themselves and for
+  /// nested OutputFolders).
   std::string file(const std::string& name) const;
-  /// Moves the temporary folder to the final path (replacing an earlier result there).
+  /// Writes `text` to `name` inside the temporary folder. Throws
+  /// OutputError naming DIR/name (not the temporary) and the system's reason.
+  void write(const std::string& name, const std::string& text) const;
+  /// Swaps the temporary folder into place (see the file comment), removes the old one, releases
+  /// the lock. Throws InputError if the folder became someone else's meanwhile, OutputError if
+  /// the system refused; either way DIR is unchanged.
   void commit();
 
   const std::string& final_path() const { return final_path_; }
 
  private:
+  void release();
+
   std::string final_path_;
   std::string temporary_path_;
+  std::string lock_path_;
+  int lock_fd_ = -1;
+  int slot_ = -1;  ///< interrupt-cleanup registration
   bool committed_ = false;
 };
 
-}  // namespace saltus
-
-namespace saltus {
-
-/// Writes `text` to `path` (inside an OutputFolder); throws std::runtime_error naming the file
-/// if it cannot be written completely.
+/// Writes `text` to `path`. Throws OutputError naming the file as it will
+/// be once its OutputFolder is committed (DIR/name, not the hidden temporary) and the reason.
 void write_text(const std::string& path, const std::string& text);
 
 }  // namespace saltus

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <variant>
 
@@ -10,6 +11,7 @@
 #include "saltus/base/input_error.h"
 #include "saltus/base/json_reader.h"
 #include "saltus/base/text_format.h"
+#include "saltus/formats/finite_check.h"
 #include "saltus/formats/model_file.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/formats/output_folder.h"
@@ -44,13 +46,13 @@ nlohmann::json option_json(const OptionValue& value) {
   return std::visit([](const auto& v) { return nlohmann::json(v); }, value);
 }
 
-void write_text_file(const std::string& path, const std::string& what,
+/// Composes the file in memory, then writes it (write_text: the message of a failed write names
+/// DIR/file and the system's reason, e.g. a full disk).
+void write_text_file(const std::string& path, const std::string& /*what*/,
                      const std::function<void(std::ostream&)>& body) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error(path + ": cannot open for writing " + what);
+  std::ostringstream out;
   body(out);
-  out.flush();
-  if (!out) throw std::runtime_error(path + ": writing " + what + " failed");
+  write_text(path, out.str());
 }
 
 void write_common_files(OutputFolder& folder, const MotionFile& file,
@@ -69,6 +71,8 @@ void write_csv(OutputFolder& folder, const std::string& name, const BodyModel& m
 
 nlohmann::json write_outputs(const std::string& out_dir, const MotionFile& file,
                              const std::vector<SampleRecord>& samples, nlohmann::json result) {
+  require_finite(result, file.path);
+  require_finite(samples, file.path, "trajectory.csv");
   OutputFolder folder(out_dir);
   write_csv(folder, "trajectory.csv", file.model, samples);
   write_common_files(folder, file, result);
@@ -481,6 +485,9 @@ nlohmann::json write_optimization_outputs(const std::string& out_dir, const Moti
                                           const OptimizationResult& result,
                                           const OptimizeOptions& options) {
   const nlohmann::json r = optimization_result_json(file, result, options);
+  require_finite(r, file.path);
+  require_finite(result.before.samples, file.path, "trajectory_before.csv");
+  require_finite(result.after.samples, file.path, "trajectory_after.csv");
   OutputFolder folder(out_dir);
   write_csv(folder, "trajectory_before.csv", file.model, result.before.samples);
   write_csv(folder, "trajectory_after.csv", file.model, result.after.samples);

@@ -1,12 +1,12 @@
 #include "saltus/math/quaternion_spline.h"
 
-#include <Eigen/Cholesky>
-#include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
 #include <string>
+
+#include "saltus/math/banded_ldlt.h"
 
 namespace saltus {
 
@@ -96,11 +96,53 @@ Eigen::VectorXd residuals(const FitProblem& p, const std::vector<Quat<double>>& 
   return r;
 }
 
+/// The Jacobian of the fit's residuals, row by row: each row's non-zero entries are the columns
+/// first[row] .. first[row] + width[row] − 1 (4 control points × 3 tangent coordinates for a
+/// keyframe row, 3 × 3 for a smoothness row), so a fit of m keyframes costs O(m) to linearise.
+struct SparseJacobian {
+  static constexpr int kMaxWidth = 12;
+  /// Sub-diagonals of JᵀJ: columns of one row are at most kMaxWidth − 1 apart.
+  static constexpr int kNormalBandwidth = kMaxWidth - 1;
+  Eigen::Matrix<double, Eigen::Dynamic, kMaxWidth, Eigen::RowMajor> values;
+  std::vector<int> first;
+  std::vector<int> width;
+
+  void resize(int rows) {
+    values.setZero(rows, kMaxWidth);
+    first.assign(static_cast<std::size_t>(rows), 0);
+    width.assign(static_cast<std::size_t>(rows), 0);
+  }
+  int rows() const { return static_cast<int>(first.size()); }
+  double row_dot(int row, const Eigen::VectorXd& x) const {
+    double sum = 0.0;
+    for (int k = 0; k < width[row]; ++k)
+      sum += values(row, k) * x[first[row] + k];
+    return sum;
+  }
+  /// Jᵀ·r over the first `rows` rows.
+  Eigen::VectorXd transpose_times(const Eigen::VectorXd& r, int rows, int cols) const {
+    Eigen::VectorXd out = Eigen::VectorXd::Zero(cols);
+    for (int row = 0; row < rows; ++row)
+      for (int k = 0; k < width[row]; ++k)
+        out[first[row] + k] += values(row, k) * r[row];
+    return out;
+  }
+  /// JᵀJ as a band matrix.
+  BandedLdlt normal(int cols) const {
+    BandedLdlt out(cols, kNormalBandwidth);
+    for (int row = 0; row < rows(); ++row)
+      for (int a = 0; a < width[row]; ++a)
+        for (int b = 0; b <= a; ++b)
+          out(first[row] + a, first[row] + b) += values(row, a) * values(row, b);
+    return out;
+  }
+};
+
 /// Residuals and their exact Jacobian with respect to the tangent coordinates δ (forward AD).
 void linearise(const FitProblem& p, const std::vector<Quat<double>>& q, Eigen::VectorXd& r,
-               Eigen::MatrixXd& jacobian) {
+               SparseJacobian& jacobian) {
   r.resize(p.rows());
-  jacobian.setZero(p.rows(), p.cols());
+  jacobian.resize(p.rows());
   for (std::size_t i = 0; i < p.targets.size(); ++i) {
     const int f = p.bases[i].first_control();
     const QuaternionSample<Ad> sample =
@@ -110,7 +152,9 @@ void linearise(const FitProblem& p, const std::vector<Quat<double>>& q, Eigen::V
     for (int k = 0; k < 3; ++k) {
       const int row = 3 * static_cast<int>(i) + k;
       r[row] = e[k].value();
-      jacobian.block<1, 12>(row, 3 * f) = e[k].derivatives().transpose();
+      jacobian.first[row] = 3 * f;
+      jacobian.width[row] = 12;
+      jacobian.values.row(row) = e[k].derivatives().transpose();
     }
   }
   for (int j = 1; j + 1 < p.controls; ++j) {
@@ -119,10 +163,43 @@ void linearise(const FitProblem& p, const std::vector<Quat<double>>& q, Eigen::V
     for (int k = 0; k < 3; ++k) {
       const int row = p.target_rows() + 3 * (j - 1) + k;
       r[row] = p.sqrt_weight * s[k].value();
-      jacobian.block<1, 9>(row, 3 * (j - 1)) =
-          p.sqrt_weight * s[k].derivatives().head<9>().transpose();
+      jacobian.first[row] = 3 * (j - 1);
+      jacobian.width[row] = 9;
+      jacobian.values.row(row).head<9>() = p.sqrt_weight * s[k].derivatives().head<9>().transpose();
     }
   }
+}
+
+/// The minimum-norm solution δ = J_rᵀ (J_r J_rᵀ)⁻¹ r of J_r δ = r, J_r the first `rows` rows
+/// (the keyframe rows, sorted by time, so J_r J_rᵀ is banded too: two keyframes interact when
+/// their spans share a control point). Returns an empty vector when J_r J_rᵀ is singular to
+/// working precision (the keyframes cannot all be met exactly).
+Eigen::VectorXd minimum_norm_step(const SparseJacobian& jacobian, const Eigen::VectorXd& r,
+                                  int rows, int cols) {
+  int bandwidth = 0;
+  for (int a = 0; a < rows; ++a)
+    for (int b = a + 1; b < rows && jacobian.first[b] < jacobian.first[a] + jacobian.width[a]; ++b)
+      bandwidth = std::max(bandwidth, b - a);
+  BandedLdlt gram(rows, bandwidth);
+  for (int a = 0; a < rows; ++a) {
+    for (int b = std::max(0, a - bandwidth); b <= a; ++b) {
+      const int begin = std::max(jacobian.first[a], jacobian.first[b]);
+      const int end =
+          std::min(jacobian.first[a] + jacobian.width[a], jacobian.first[b] + jacobian.width[b]);
+      double sum = 0.0;
+      for (int c = begin; c < end; ++c)
+        sum +=
+            jacobian.values(a, c - jacobian.first[a]) * jacobian.values(b, c - jacobian.first[b]);
+      gram(a, b) = sum;
+    }
+  }
+  // J_r J_rᵀ squares J_r's condition number: a pivot below 1e-12 of the largest means J_r's
+  // smallest singular value is below 1e-6 of its largest, where the dense complete orthogonal
+  // decomposition this replaces was already unreliable; the projection then stops.
+  if (!gram.factorize() || !(gram.pivots().minCoeff() > 1e-12 * gram.pivots().maxCoeff()))
+    return {};
+  const Eigen::VectorXd y = gram.solve(r.head(rows));
+  return jacobian.transpose_times(y, rows, cols);
 }
 
 /// q_j ← q_j·exp(δ_j), renormalised against rounding drift. Not sign-aligned: the sign of a
@@ -224,30 +301,37 @@ std::vector<Quat<double>> fit_quaternion_spline(const std::vector<double>& knots
 
   // Phase 1: Levenberg-Marquardt on ‖r‖² + λ Σ‖w_{j+1} − w_j‖² (damping update of Nielsen 1999,
   // as in Madsen, Nielsen & Tingleff, "Methods for non-linear least squares problems", §3.2).
+  // The normal matrix JᵀJ is a band (SparseJacobian::kNormalBandwidth): every step costs O(m).
   Eigen::VectorXd r;
-  Eigen::MatrixXd jacobian;
+  SparseJacobian jacobian;
   linearise(p, q, r, jacobian);
   double cost = r.squaredNorm();
-  Eigen::MatrixXd normal = jacobian.transpose() * jacobian;
-  Eigen::VectorXd gradient = jacobian.transpose() * r;
-  double mu = 1e-6 * std::max(normal.diagonal().maxCoeff(), 1e-12);
+  BandedLdlt normal = jacobian.normal(p.cols());
+  Eigen::VectorXd gradient = jacobian.transpose_times(r, p.rows(), p.cols());
+  double mu = 1e-6 * std::max(normal.max_diagonal(), 1e-12);
   double nu = 2.0;
   for (int iteration = 0; iteration < options.max_iterations; ++iteration) {
-    Eigen::MatrixXd damped = normal;
-    damped.diagonal().array() += mu;
-    const Eigen::VectorXd step = damped.ldlt().solve(-gradient);
+    BandedLdlt damped = normal;
+    damped.add_to_diagonal(mu);
+    if (!damped.factorize()) break;
+    const Eigen::VectorXd step = damped.solve(-gradient);
     if (!step.allFinite()) break;
     if (step.norm() < options.tolerance) break;
     const std::vector<Quat<double>> candidate = retract(q, step);
     const double candidate_cost = residuals(p, candidate).squaredNorm();
-    const double predicted = cost - (r + jacobian * step).squaredNorm();
+    double linearised_cost = 0.0;
+    for (int row = 0; row < p.rows(); ++row) {
+      const double value = r[row] + jacobian.row_dot(row, step);
+      linearised_cost += value * value;
+    }
+    const double predicted = cost - linearised_cost;
     const double rho = predicted > 0.0 ? (cost - candidate_cost) / predicted : -1.0;
     if (rho > 0.0 && std::isfinite(candidate_cost)) {
       q = candidate;
       linearise(p, q, r, jacobian);
       cost = r.squaredNorm();
-      normal = jacobian.transpose() * jacobian;
-      gradient = jacobian.transpose() * r;
+      normal = jacobian.normal(p.cols());
+      gradient = jacobian.transpose_times(r, p.rows(), p.cols());
       mu *= std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * rho - 1.0, 3));
       nu = 2.0;
     } else {
@@ -267,10 +351,8 @@ std::vector<Quat<double>> fit_quaternion_spline(const std::vector<double>& knots
       const Eigen::VectorXd r_target = r.head(rows);
       const double error = r_target.norm();
       if (error < 1e-15) break;
-      const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(jacobian.topRows(rows));
-      if (cod.rank() < rows) break;
-      const Eigen::VectorXd step = -cod.solve(r_target);
-      if (!step.allFinite()) break;
+      const Eigen::VectorXd step = -minimum_norm_step(jacobian, r_target, rows, p.cols());
+      if (step.size() == 0 || !step.allFinite()) break;
       const std::vector<Quat<double>> candidate = retract(q, step);
       if (!(residuals(p, candidate).head(rows).norm() < error)) break;
       q = candidate;

@@ -1,8 +1,14 @@
 // Free-flight simulation is the ground truth of the project: its root wrench must vanish when
 // measured by an independent path (finite differences of the simulated root pose fed to inverse
 // dynamics), its angular momentum must be conserved and its CoM must follow the parabola.
+//
+// A gap between output times of more RK4 steps than an int holds was a double-to-int cast past
+// its range, undefined behaviour (issue 16: a flight of 2.2e8 s); it is refused with a message
+// instead. The sanitizer build (float-cast-overflow) catches the cast.
 
 #include <gtest/gtest.h>
+
+#include <stdexcept>
 
 #include "saltus/base/constants.h"
 #include "saltus/dynamics/free_flight.h"
@@ -130,6 +136,40 @@ INSTANTIATE_TEST_SUITE_P(
     [](const ::testing::TestParamInfo<Case>& param_info) {
       return std::string(param_info.param.name);
     });
+
+// Hardening (issue 16).
+namespace hardening {
+
+BodyModel one_segment() {
+  BodyModel model;
+  Segment s;
+  s.name = "abdomen";
+  s.joint = "root";
+  s.mass = 10;
+  s.inertia = Eigen::Vector3d(0.1, 0.2, 0.25).asDiagonal();
+  model.segments.push_back(s);
+  return model;
+}
+
+TEST(FreeFlight, TooManyStepsAreRefusedNotCast) {
+  const BodyModel model = one_segment();
+  const JointMotion still = [](double, BodyState<double>& state) {
+    for (auto& joint : state.joints) {
+      joint.omega.setZero();
+      joint.alpha.setZero();
+    }
+  };
+  FreeFlightInitialState initial;
+  initial.com_position = Eigen::Vector3d(0, 1, 0);
+  initial.com_velocity = Eigen::Vector3d(0, 5, 0);
+  initial.angular_momentum = Eigen::Vector3d(1, 0, 0);
+  EXPECT_THROW(simulate_free_flight(model, still, initial, {0.0, 2.2e8}, {}),
+               std::invalid_argument);
+  // Where it fits, the flight is simulated.
+  EXPECT_EQ(simulate_free_flight(model, still, initial, {0.0, 0.01, 0.02}, {}).size(), 3u);
+}
+
+}  // namespace hardening
 
 }  // namespace
 }  // namespace saltus

@@ -57,7 +57,7 @@ nlohmann::json good_document() {
     "format": "saltus-motion/1",
     "name": "test tuck",
     "model": "tiny-4",
-    "comment": "unknown top-level keys are allowed",
+    "description": "free text, the one top-level key that is not read",
     "takeoff": { "com_position": [0, 1, 0], "com_velocity": [0.15, 10.0, 0.15],
                  "angular_momentum": [-40, 0, 0] },
     "tolerances": { "translation_m": 0.2, "quaternion": 0.04 },

@@ -1,6 +1,9 @@
 // All-or-nothing output folders (formats/output_folder.h): nothing appears until commit, nothing
 // is left when there is no commit, an earlier Saltus result is replaced whole, and a folder or
-// file that Saltus did not write is never touched.
+// file that Saltus did not write is never touched. Which folders are Saltus's own (every kind of
+// result, one table), the lock that lets one run at a time write a folder, the clean-up of what
+// dead runs left, and the messages of failed writes (issue 16 items 1-3, 6). The CLI-level fault
+// tests are in tests/cli/output_folder_test.cpp.
 
 #include "saltus/formats/output_folder.h"
 
@@ -8,6 +11,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <stdexcept>
 
@@ -52,8 +56,10 @@ TEST(OutputFolder, LeavesNothingWithoutACommit) {
 TEST(OutputFolder, ReplacesAnEarlierResultWhole) {
   test::TempDir dir;
   fs::create_directories(dir.path() / "out");
-  test::write_text(dir / "out/result.json", "{\"old\": true}\n");
-  test::write_text(dir / "out/stale.csv", "old\n");
+  // An earlier `saltus evaluate` result (issue 16: only Saltus's own results are replaced).
+  test::write_text(dir / "out/result.json",
+                   "{\"format\": \"saltus-result/1\", \"status\": \"evaluated\"}\n");
+  test::write_text(dir / "out/trajectory.csv", "old\n");
   OutputFolder folder(dir / "out");
   write_text(folder.file("result.json"), "{\"new\": true}\n");
   folder.commit();
@@ -91,6 +97,185 @@ TEST(WriteText, WritesTheBytesOrNamesTheFile) {
     EXPECT_NE(std::string(e.what()).find(dir / "missing/a.txt"), std::string::npos) << e.what();
   }
 }
+
+// Hardening (issue 16).
+namespace hardening {
+
+namespace fs = std::filesystem;
+
+std::set<std::string> names_in(const fs::path& folder) {
+  std::set<std::string> found;
+  for (const auto& entry : fs::directory_iterator(folder))
+    found.insert(entry.path().filename().string());
+  return found;
+}
+
+/// A folder holding what Saltus writes for `kind`, with a result.json that identifies it.
+void make_result(const fs::path& folder, const ResultKind& kind) {
+  fs::create_directories(folder);
+  nlohmann::json result = {{"format", kind.format}};
+  if (!kind.field.empty())
+    result[kind.field] = kind.values.empty() ? std::string("solved") : kind.values.front();
+  for (const std::string& name : kind.files)
+    test::write_text((folder / name).string(), name == "result.json" ? result.dump() : "x");
+  for (const std::string& images : kind.image_folders) {
+    fs::create_directories(folder / images);
+    test::write_text((folder / images / "M1_root_force.png").string(), "png");
+  }
+}
+
+TEST(OutputFolder, EveryKindOfResultIsRecognisedAndAnyOtherFileMakesItForeign) {
+  ASSERT_GE(result_kinds().size(), 7u);
+  std::set<std::string> names;
+  for (const ResultKind& kind : result_kinds())
+    names.insert(kind.name);
+  for (const char* expected :
+       {"evaluate", "simulate", "optimize", "study convergence", "study mass", "paper", "import"})
+    EXPECT_EQ(names.count(expected), 1u) << expected;
+
+  for (const ResultKind& kind : result_kinds()) {
+    test::TempDir dir;
+    const fs::path folder = dir.path() / "r";
+    make_result(folder, kind);
+    if (kind.holds_results) make_result(folder / "M1", result_kinds().front());
+    EXPECT_EQ(foreign_content(folder.string()), "") << kind.name;
+    test::write_text((folder / "thesis.tex").string(), "mine");
+    EXPECT_NE(foreign_content(folder.string()).find("thesis.tex"), std::string::npos) << kind.name;
+    fs::remove(folder / "thesis.tex");
+    fs::create_directories(folder / "src");
+    EXPECT_NE(foreign_content(folder.string()), "") << kind.name << ": a sub-folder of the user's";
+    fs::remove(folder / "src");
+    fs::create_symlink("/etc/passwd", folder / "link");
+    EXPECT_NE(foreign_content(folder.string()), "") << kind.name << ": a link";
+  }
+}
+
+TEST(OutputFolder, WhatIsNotASaltusResult) {
+  test::TempDir dir;
+  const fs::path folder = dir.path() / "f";
+  fs::create_directories(folder);
+  EXPECT_EQ(foreign_content(folder.string()), "") << "an empty folder holds nothing to lose";
+  test::write_text((folder / "result.json").string(), R"({"format": "other-tool/2"})");
+  EXPECT_NE(foreign_content(folder.string()).find("not a Saltus result"), std::string::npos);
+  test::write_text((folder / "result.json").string(), "not json");
+  EXPECT_NE(foreign_content(folder.string()).find("not a Saltus result"), std::string::npos);
+  fs::remove(folder / "result.json");
+  test::write_text((folder / "notes.txt").string(), "x");
+  EXPECT_NE(foreign_content(folder.string()).find("no Saltus result.json"), std::string::npos);
+  // The paper report's figures hold images only; its runs must themselves be results.
+  const ResultKind* paper = nullptr;
+  for (const ResultKind& kind : result_kinds())
+    if (kind.name == "paper") paper = &kind;
+  ASSERT_NE(paper, nullptr);
+  const fs::path report = dir.path() / "report";
+  make_result(report, *paper);
+  test::write_text((report / "figures/notes.txt").string(), "x");
+  EXPECT_NE(foreign_content(report.string()).find("figures/"), std::string::npos);
+  fs::remove(report / "figures/notes.txt");
+  fs::create_directories(report / "M1");
+  test::write_text((report / "M1/thesis.tex").string(), "x");
+  EXPECT_NE(foreign_content(report.string()).find("M1/"), std::string::npos);
+}
+
+TEST(OutputFolder, CommitsAllOrNothingAndReplacesOnlyItsOwn) {
+  test::TempDir dir;
+  const std::string out = dir / "out";
+  {
+    OutputFolder folder(out);
+    folder.write("result.json", R"({"format": "saltus-result/1", "status": "evaluated"})");
+    folder.write("trajectory.csv", "t\n0\n");
+    EXPECT_FALSE(fs::exists(out)) << "nothing at DIR before commit";
+    // Not committed: nothing remains.
+  }
+  EXPECT_EQ(names_in(dir.path()), std::set<std::string>{});
+  {
+    OutputFolder folder(out);
+    folder.write("result.json", R"({"format": "saltus-result/1", "status": "evaluated"})");
+    folder.commit();
+  }
+  EXPECT_EQ(names_in(out), std::set<std::string>{"result.json"});
+  {
+    OutputFolder folder(out);
+    folder.write("result.json", R"({"format": "saltus-result/1", "status": "simulated"})");
+    folder.write("model.json", "{}");
+    folder.commit();
+  }
+  EXPECT_EQ(names_in(out), (std::set<std::string>{"result.json", "model.json"}));
+  EXPECT_EQ(names_in(dir.path()), std::set<std::string>{"out"});
+  test::write_text(out + "/thesis.tex", "mine");
+  EXPECT_THROW(OutputFolder{out}, InputError);
+  EXPECT_THROW(check_output_folder(out), InputError);
+  EXPECT_EQ(names_in(dir.path()), std::set<std::string>{"out"});
+  EXPECT_THROW(OutputFolder{out + "/thesis.tex"}, InputError) << "a file";
+  EXPECT_THROW(OutputFolder{"/"}, InputError);
+}
+
+TEST(OutputFolder, OneWriterAtATime) {
+  test::TempDir dir;
+  const std::string out = dir / "out";
+  OutputFolder first(out);
+  try {
+    OutputFolder second(out);
+    ADD_FAILURE() << "two writers of one folder";
+  } catch (const OutputError& e) {
+    EXPECT_TRUE(e.busy());
+    EXPECT_NE(std::string(e.what()).find("another saltus run (pid " + std::to_string(getpid())),
+              std::string::npos)
+        << e.what();
+  }
+  first.write("result.json", R"({"format": "saltus-result/1", "status": "evaluated"})");
+  first.commit();
+  OutputFolder third(out);  // free again once committed
+}
+
+TEST(OutputFolder, RemovesWhatDeadRunsLeftAndRestoresAMovedAwayFolder) {
+  test::TempDir dir;
+  const fs::path out = dir.path() / "out";
+  // A run killed while writing, and one killed while removing the old folder after the swap.
+  fs::create_directories(dir.path() / ".out.tmp-4242-0/M1");
+  test::write_text((dir.path() / ".out.tmp-4242-0/M1/trajectory.csv").string(), "partial");
+  fs::create_directories(dir.path() / ".out.tmp-77-3");
+  // Not Saltus's: other names that merely look alike are left alone.
+  fs::create_directories(dir.path() / ".out.tmp-backup");
+  fs::create_directories(dir.path() / ".outer.tmp-1-1");
+  // The rename fallback killed between its renames: DIR missing, the old folder moved away.
+  fs::create_directories(dir.path() / ".out.old-4242-1");
+  test::write_text((dir.path() / ".out.old-4242-1/result.json").string(),
+                   R"({"format": "saltus-result/1", "status": "evaluated"})");
+  { OutputFolder folder(out.string()); }  // not committed
+  EXPECT_EQ(names_in(dir.path()),
+            (std::set<std::string>{"out", ".out.tmp-backup", ".outer.tmp-1-1"}));
+  EXPECT_TRUE(fs::exists(out / "result.json")) << "the old folder is back";
+}
+
+TEST(OutputFolder, FailedWritesNameTheFinalPathAndTheReason) {
+  test::TempDir dir;
+  const std::string out = dir / "out";
+  OutputFolder folder(out);
+  try {
+    folder.write("missing-sub-folder/result.json", "{}");
+    ADD_FAILURE() << "no error";
+  } catch (const OutputError& e) {
+    const std::string message = e.what();
+    EXPECT_FALSE(e.busy());
+    EXPECT_NE(message.find("cannot write " + out +
+                           "/missing-sub-folder/result.json: No such "
+                           "file or directory"),
+              std::string::npos)
+        << message;
+    EXPECT_EQ(message.find(".tmp-"), std::string::npos) << message;
+  }
+  // A nested folder (the paper report's runs) maps through both temporaries.
+  OutputFolder inner(folder.file("M1"));
+  try {
+    write_text(inner.file("x/y.csv"), "");
+    ADD_FAILURE() << "no error";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find(out + "/M1/x/y.csv"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace hardening
 
 }  // namespace
 }  // namespace saltus

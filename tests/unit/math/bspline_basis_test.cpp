@@ -144,11 +144,12 @@ TEST(BsplineBasis, DerivativeWithRespectToKeyframeTimeMatchesFiniteDifferences) 
   // does: the interior keyframe times are the AD variables.
   for (int refine : {1, 3}) {
     for (int which = 1; which <= 3; ++which) {
+      // Every value carries a derivative vector of size 1: Eigen's AutoDiffScalar reads past an
+      // empty one when it meets a sized one inside an expression (UBSan saw it).
       std::vector<AdDynamic> times;
-      for (std::size_t i = 0; i < kNonUniformTimes.size(); ++i) {
-        times.emplace_back(kNonUniformTimes[i]);
-        if (static_cast<int>(i) == which) times.back() = AdDynamic(kNonUniformTimes[i], 1, 0);
-      }
+      for (std::size_t i = 0; i < kNonUniformTimes.size(); ++i)
+        times.emplace_back(kNonUniformTimes[i],
+                           Eigen::VectorXd::Constant(1, static_cast<int>(i) == which ? 1.0 : 0.0));
       const std::vector<AdDynamic> k = clamped_cubic_knots(refine_breakpoints(times, refine));
       const double h = 1e-6;
       std::vector<double> plus_times = kNonUniformTimes, minus_times = kNonUniformTimes;
@@ -157,7 +158,7 @@ TEST(BsplineBasis, DerivativeWithRespectToKeyframeTimeMatchesFiniteDifferences) 
       const std::vector<double> kp = knots_for(plus_times, refine);
       const std::vector<double> km = knots_for(minus_times, refine);
       for (double t : {0.1, 0.35, 0.8, 1.05, 1.5, 1.99}) {
-        const SpanBasis<AdDynamic> b = cubic_basis(k, AdDynamic(t));
+        const SpanBasis<AdDynamic> b = cubic_basis(k, AdDynamic(t, Eigen::VectorXd::Zero(1)));
         const SpanBasis<double> bp = cubic_basis_on_span(kp, b.span, t);
         const SpanBasis<double> bm = cubic_basis_on_span(km, b.span, t);
         for (int d = 0; d < 3; ++d) {

@@ -1,0 +1,56 @@
+#pragma once
+/// @file
+/// What the model and motion readers accept as physically plausible for a human in flight, in
+/// one place. Each bound is an order of magnitude or more beyond what people do, so that no real
+/// motion is refused, while numbers that are typos, garbage or attacks (1e308, 1e-320) are
+/// refused with a message naming the field instead of turning into NaN downstream.
+
+namespace saltus::plausible {
+
+// Body model (DESIGN §3).
+/// kg per segment. A hand is 0.4 kg; a heavy athlete's thorax 35 kg.
+inline constexpr double kMinSegmentMass = 1e-3;
+inline constexpr double kMaxSegmentMass = 1e3;
+/// m: |joint_position|, |com| and shape sizes per coordinate. Human segments are under 1 m.
+inline constexpr double kMaxSegmentLength = 10.0;
+/// m: radius of gyration sqrt(I/m) of each principal moment. A thigh's is about 0.06-0.15 m.
+inline constexpr double kMinRadiusOfGyration = 1e-4;
+inline constexpr double kMaxRadiusOfGyration = 10.0;
+/// Relative slack of the triangle inequality of principal moments (Ia + Ib >= Ic; equality
+/// for a flat body) that rounding of printed numbers may need.
+inline constexpr double kInertiaTriangleSlack = 1e-6;
+
+// Motion (DESIGN §4).
+/// s: the flight time T. Trampoline and diving flights last 1-3 s, a 27 m cliff dive 3 s.
+inline constexpr double kMaxFlightTime = 60.0;
+/// s: the shortest gap between keyframes (a 1 kHz capture). Closer keyframes make the spline's
+/// second derivative, and so the inverse dynamics, blow up (a keyframe at t = 1e-9 gave NaN).
+inline constexpr double kMinKeyframeGap = 1e-3;
+/// s: the shortest gap between interior knots of a stored spline (K = 50 sub-intervals of the
+/// shortest keyframe gap).
+inline constexpr double kMinKnotGap = kMinKeyframeGap / 50;
+/// m: |take-off CoM|, |keyframe root position| per coordinate.
+inline constexpr double kMaxPosition = 1e4;
+/// m: |root translation control point| per coordinate (a 60 s fall is 18 km).
+inline constexpr double kMaxTrajectoryPosition = 1e5;
+/// m/s: the take-off speed. A ski jumper leaves the table at 27 m/s.
+inline constexpr double kMaxTakeoffSpeed = 100.0;
+/// kg·m²/s per component of the take-off angular momentum, before the finer check below. A
+/// straight double somersault needs about 90.
+inline constexpr double kMaxAngularMomentum = 1e5;
+/// rad/s: the whole-body angular velocity the take-off angular momentum implies at the first
+/// keyframe's pose, |I_G⁻¹ L|. Elite twisting reaches 25 rad/s (4 revolutions per second).
+inline constexpr double kMaxBodyAngularVelocity = 200.0;
+/// Keyframe tolerances: ε1 (m) and ε2 (quaternion distance, at most 2 between unit
+/// quaternions).
+inline constexpr double kMaxTranslationTolerance = 100.0;
+inline constexpr double kMaxQuaternionTolerance = 2.0;
+/// deg: |Euler angle| of a keyframe rotation (ten turns).
+inline constexpr double kMaxEulerAngleDeg = 3600.0;
+/// rad: the largest turn between consecutive control quaternions of a stored spline. The
+/// optimiser starts from curves turning at most 1.75π (kMaxControlTurn) and its joint-turn limit
+/// keeps them there; near 2π the log map that defines the turn reaches its branch point and a
+/// sign-flipped control (q → −q, the same rotation) puts it there.
+inline constexpr double kMaxStoredControlTurn = 1.9 * 3.14159265358979323846;
+
+}  // namespace saltus::plausible
