@@ -25,6 +25,7 @@
 #include "app/scene_widget.h"
 #include "app/view_controller.h"
 #include "saltus/base/input_error.h"
+#include "saltus/base/resources.h"
 #include "saltus/evaluation/residual_measures.h"
 #include "saltus/formats/capture_files.h"
 #include "saltus/formats/model_file.h"
@@ -323,19 +324,17 @@ bool FileController::save_motion(const QString& path, QString* error) {
   Workspace& ws = context_.workspace();
   if (!ws.loaded()) return context_.fail(tr("Nothing to save"), tr("Open a motion first."), error);
   const Document& d = ws.document();
+  QString outside_model;  // the model's path when it lies outside the motion's folder
   try {
     Motion motion = d.file().motion;
-    // A model chosen with "Open model" is named by its full path, so the file loads as shown.
-    if (!d.model_override().empty()) {
-      motion.model = d.model_override();
-    } else if (QFileInfo(qstr(motion.model)).isRelative() &&
-               qstr(motion.model).endsWith(".json", Qt::CaseInsensitive)) {
-      // A model file named relative to the original motion: keep pointing at the same file
-      // wherever the edited motion is saved.
-      motion.model = QFileInfo(QFileInfo(qstr(d.file().path)).absoluteDir(), qstr(motion.model))
-                         .absoluteFilePath()
-                         .toStdString();
-    }
+    // The model the document shows, named so that the saved file finds it again: a bundled
+    // name, or a path relative to where the motion is saved.
+    const std::string model_file = !d.model_override().empty()
+                                       ? d.model_override()
+                                       : resolve_model_path(motion.model, d.file().path);
+    ModelReference reference{motion.model, true};
+    if (!model_file.empty()) reference = model_reference_for(model_file, path.toStdString());
+    motion.model = reference.field;
     const nlohmann::json json = motion_to_json(motion, d.file().model);
     {
       std::ofstream out(path.toStdString());
@@ -343,7 +342,8 @@ bool FileController::save_motion(const QString& path, QString* error) {
       if (!out) throw std::runtime_error("cannot write the file");
     }
     // Read back through the library: what was written must load as this motion.
-    load_motion_file(path.toStdString());
+    load_motion_file(path.toStdString(), reference.loads_by_itself ? "" : model_file);
+    if (!reference.loads_by_itself) outside_model = qstr(reference.field);
   } catch (const InputError& e) {
     return context_.fail(tr("Cannot save motion"), qstr(e.what()), error);
   } catch (const std::exception& e) {
@@ -351,7 +351,14 @@ bool FileController::save_motion(const QString& path, QString* error) {
   }
   ws.mark_motion_saved();
   context_.set_last_dir_from(path);
-  context_.status(tr("Saved %1").arg(path));
+  if (outside_model.isEmpty()) {
+    context_.status(tr("Saved %1").arg(path));
+  } else {
+    // Motion files may only name models beside them (docs/safety.md): say what reopening needs.
+    context_.status(tr("Saved %1. Its model %2 lies outside the motion's folder: reopen it with "
+                       "File > Open model, or keep the model beside the motion")
+                        .arg(path, outside_model));
+  }
   return true;
 }
 

@@ -42,19 +42,6 @@ std::vector<double> values_of(const std::vector<RotationSample>& samples, Get ge
   return out;
 }
 
-void fill_magnitudes(WrenchSeries& series) {
-  const std::size_t n = series.time.size();
-  series.force_magnitude.resize(n);
-  series.moment_magnitude.resize(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    Vector6d w;
-    for (int i = 0; i < 6; ++i)
-      w[i] = series.component[static_cast<std::size_t>(i)][k];
-    series.force_magnitude[k] = force_magnitude(w);
-    series.moment_magnitude[k] = moment_magnitude(w);
-  }
-}
-
 }  // namespace
 
 int plot_samples_for(double duration) {

@@ -8,8 +8,12 @@
 #include <QDir>
 #include <QListWidget>
 #include <QSlider>
+#include <QStatusBar>
 #include <QTableWidget>
 #include <QTest>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "app/chart_widget.h"
 #include "app/compare_controller.h"
@@ -26,7 +30,9 @@
 #include "gui_core/test_motion.h"
 #include "support/cli_runner.h"
 
+#include "saltus/base/input_error.h"
 #include "saltus/formats/model_file.h"
+#include "saltus/formats/motion_file.h"
 
 namespace saltus::gui {
 namespace {
@@ -134,6 +140,36 @@ TEST_F(KeyframeEditTest, EditedMotionSavesAndLoadsBack) {
       loaded.keyframes[1].rotations[hip].isApprox(edited.keyframes[1].rotations[hip], 1e-9));
   EXPECT_NEAR(second.document().evaluation(Stage::kBefore).metrics.avg_root_force,
               window_->document().evaluation(Stage::kBefore).metrics.avg_root_force, 1e-6);
+}
+
+TEST_F(KeyframeEditTest, AMotionSavedWithAnOpenedModelNamesItSoThatItLoadsBack) {
+  // A model opened from a file (File > Open model) is named relative to where the motion is
+  // saved; motion files may only name models in their own folder tree, so a motion saved
+  // elsewhere is still written, loads with the model given, and the status bar says so.
+  saltus::test::TempDir dir;
+  const std::string model = dir / "my-model.json";
+  std::filesystem::copy_file(
+      std::string(SALTUS_EXAMPLES_DIR) + "/../resources/models/zatsiorsky-66kg.json", model);
+  QString error;
+  ASSERT_TRUE(window_->files().open_model(QString::fromStdString(model), &error))
+      << error.toStdString();
+
+  const std::string beside = dir / "beside.motion.json";
+  ASSERT_TRUE(window_->files().save_motion(QString::fromStdString(beside), &error))
+      << error.toStdString();
+  EXPECT_EQ(read_motion_model_field(nlohmann::json::parse(std::ifstream(beside)), beside),
+            "my-model.json");
+  EXPECT_EQ(load_motion_file(beside).model.total_mass(),
+            window_->document().file().model.total_mass());
+
+  std::filesystem::create_directories(dir / "elsewhere");
+  const std::string away = dir / "elsewhere/away.motion.json";
+  ASSERT_TRUE(window_->files().save_motion(QString::fromStdString(away), &error))
+      << error.toStdString();
+  EXPECT_TRUE(window_->statusBar()->currentMessage().contains("File > Open model"))
+      << window_->statusBar()->currentMessage().toStdString();
+  EXPECT_THROW(load_motion_file(away), InputError);
+  EXPECT_EQ(load_motion_file(away, model).motion.keyframes.size(), motion().keyframes.size());
 }
 
 TEST_F(KeyframeEditTest, MassTableScalesASegmentAndRejectsBadFactors) {

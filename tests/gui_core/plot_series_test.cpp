@@ -31,7 +31,9 @@ TEST(PlotSamples, NeverCoarserThanTheDenseResidualCheck) {
     const int n = plot_samples_for(duration);
     EXPECT_GE(n, kPlotSamples) << duration;
     EXPECT_LE(duration / (n - 1), kCheckMaxSpacing * (1 + 1e-12)) << duration;
-    if (n > kPlotSamples) EXPECT_GT(duration / (n - 2), kCheckMaxSpacing) << duration;
+    if (n > kPlotSamples) {
+      EXPECT_GT(duration / (n - 2), kCheckMaxSpacing) << duration;
+    }
   }
 }
 

@@ -456,6 +456,23 @@ std::string model_file_from_field(const JsonNode& field, const std::string& moti
 
 }  // namespace
 
+ModelReference model_reference_for(const std::string& model_file, const std::string& motion_file) {
+  std::error_code ec;
+  const fs::path model = fs::weakly_canonical(model_file, ec);
+  for (const auto& dir : resource_directories()) {
+    const fs::path bundled = fs::weakly_canonical(fs::path(dir) / "models", ec);
+    if (!ec && model.parent_path() == bundled && model.extension() == ".json")
+      return {model.stem().string(), true};
+  }
+  const fs::path parent = fs::path(motion_file).parent_path();
+  const fs::path folder = fs::weakly_canonical(parent.empty() ? fs::path(".") : parent, ec);
+  ModelReference reference;
+  reference.field = model.lexically_relative(folder).string();
+  if (reference.field.empty()) reference.field = model.string();
+  reference.loads_by_itself = is_within(folder, model);
+  return reference;
+}
+
 Motion parse_motion(const nlohmann::json& document, const std::string& file,
                     const BodyModel& model) {
   const JsonNode root(document, file);

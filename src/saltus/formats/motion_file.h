@@ -23,6 +23,17 @@ Motion parse_motion(const nlohmann::json& document, const std::string& file,
 /// `model_override` is not empty it is used instead of the file's "model" field.
 MotionFile load_motion_file(const std::string& path, const std::string& model_override = "");
 
+/// What the "model" field of a motion file saved at `motion_file` should say to name the model
+/// file `model_file` so that reading it back finds that file: a bundled model's name (a file
+/// directly under resources/models/), else the path relative to the motion file's folder.
+/// `loads_by_itself` is false when that path leaves the folder: the reader refuses such
+/// references, so the saved file then loads only with the model given (--model, Open model).
+struct ModelReference {
+  std::string field;
+  bool loads_by_itself = true;
+};
+ModelReference model_reference_for(const std::string& model_file, const std::string& motion_file);
+
 /// Serialises to "saltus-motion/1" (rotations as [w, x, y, z]; "spline" included when present).
 nlohmann::json motion_to_json(const Motion& motion, const BodyModel& model);
 

@@ -15,6 +15,7 @@
 #include <string>
 
 #include "saltus/base/input_error.h"
+#include "saltus/base/resources.h"
 #include "saltus/body/body_model.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/motion/motion.h"
@@ -326,6 +327,54 @@ TEST(Motion, LoadMotionFileResolvesRelativeModel) {
       file.motion.keyframes[1].rotations[file.model.joint_index("knee_l")];
   EXPECT_TRUE(same_rotation(
       knee, Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX())), 1e-12));
+}
+
+TEST(Motion, ModelReferenceForASavedMotionFindsTheSameModel) {
+  // The app saves edited motions anywhere; the field it writes must load the model it showed,
+  // within the reader's rule (a bundled name or a file in the motion's folder tree).
+  std::random_device rd;
+  const fs::path root = fs::path(::testing::TempDir()) / ("model-ref-" + std::to_string(rd()));
+  fs::create_directories(root / "models");
+  fs::create_directories(root / "sub");
+  const std::string data = std::string(SALTUS_TEST_DATA_DIR) + "/motion/";
+  fs::copy_file(data + "tiny-model.json", root / "models" / "mine.json");
+  nlohmann::json motion = nlohmann::json::parse(std::ifstream(data + "tiny.motion.json"));
+  const auto save = [&](const fs::path& at, const std::string& field) {
+    motion["model"] = field;
+    std::ofstream(at) << motion.dump(2);
+  };
+
+  const ModelReference inside = model_reference_for((root / "models" / "mine.json").string(),
+                                                    (root / "a.motion.json").string());
+  EXPECT_EQ(inside.field, "models/mine.json");
+  EXPECT_TRUE(inside.loads_by_itself);
+  save(root / "a.motion.json", inside.field);
+  EXPECT_EQ(load_motion_file((root / "a.motion.json").string()).model.name, "tiny-4");
+
+  const ModelReference outside = model_reference_for((root / "models" / "mine.json").string(),
+                                                     (root / "sub" / "b.motion.json").string());
+  EXPECT_EQ(outside.field, "../models/mine.json");
+  EXPECT_FALSE(outside.loads_by_itself);
+  save(root / "sub" / "b.motion.json", outside.field);
+  expect_input_error([&] { load_motion_file((root / "sub" / "b.motion.json").string()); },
+                     (root / "sub" / "b.motion.json").string(), "/model", "outside");
+  EXPECT_EQ(load_motion_file((root / "sub" / "b.motion.json").string(),
+                             (root / "models" / "mine.json").string())
+                .model.name,
+            "tiny-4");
+
+  bool bundled_seen = false;
+  for (const std::string& dir : resource_directories()) {
+    const fs::path bundled = fs::path(dir) / "models" / "zatsiorsky-66kg.json";
+    if (!fs::exists(bundled)) continue;
+    const ModelReference by_name =
+        model_reference_for(bundled.string(), (root / "sub" / "c.motion.json").string());
+    EXPECT_EQ(by_name.field, "zatsiorsky-66kg");
+    EXPECT_TRUE(by_name.loads_by_itself);
+    bundled_seen = true;
+  }
+  EXPECT_TRUE(bundled_seen) << "no bundled model among the resource directories";
+  fs::remove_all(root);
 }
 
 // ---------------------------------------------------------------------------------------------
