@@ -207,7 +207,8 @@ int run_optimize(const CommonArgs& args) {
     if (undetermined > 0)
       std::printf(
           "\n  (±s: %d time(s) the keyframes and their tolerances leave undetermined: each could "
-          "move so far with the average root force within %.1f N of its optimum)",
+          "move so far before the objective (root force and keyframe prior) rises by what %.1f N "
+          "more average root force costs)",
           undetermined, saltus::kTimeSpreadForceRise);
     std::printf(
         "\n  keyframes: max root translation error %.3g m (tolerance %.3g), max quaternion "

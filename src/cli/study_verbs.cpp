@@ -50,7 +50,7 @@ void add_study_common(CLI::App* cmd, StudyArgs& args) {
 OptimizeOptions study_optimize_options(const StudyArgs& args) {
   OptimizeOptions o = args.options.values().optimize_options();
   // The studies reproduce the paper's protocol at its resolution (knots at the keyframes).
-  o.automatic_resolution = false;
+  use_paper_protocol(o);
   return o;
 }
 

@@ -49,8 +49,8 @@ TEST(CliOptimize, ReducesTheResidualKeepsKeyframesAndReloads) {
   }
 
   // The reported figure is the motion's true residual: the trapezoidal rule over the written
-  // trajectory (61 samples) comes near it, and over a trajectory re-evaluated on 4001 samples
-  // (a dense grid the optimiser never saw) agrees with it closely.
+  // trajectory (61 samples) comes within 10 % of it, and over a trajectory re-evaluated on 4001
+  // samples (a dense grid the optimiser never saw) agrees with it closely.
   auto trapezoid_force = [](const CsvTable& csv) {
     double sum = 0;
     const int f0 = csv.column("root_fx");
@@ -66,7 +66,7 @@ TEST(CliOptimize, ReducesTheResidualKeepsKeyframesAndReloads) {
   };
   const CsvTable after_csv = read_csv_table(out + "/trajectory_after.csv");
   ASSERT_EQ(after_csv.rows.size(), 61u);
-  EXPECT_NEAR(trapezoid_force(after_csv), after, 0.05 * after);
+  EXPECT_NEAR(trapezoid_force(after_csv), after, 0.1 * after);
   const auto dense = test::run_cli("evaluate " + out + "/optimized.motion.json --out " +
                                    (dir / "dense") + " --samples 4001 --quiet");
   ASSERT_EQ(dense.status, 0) << dense.output;

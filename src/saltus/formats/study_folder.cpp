@@ -412,7 +412,7 @@ constexpr std::size_t member_count() {
 // runs with different settings would merge silently. A new option changes these counts: add it
 // to optimize_options_json below (unless, like verbose and derivative_test_file, it only
 // decides what is logged), then update the count.
-static_assert(member_count<MotionNlpOptions>() == 17, "new MotionNlpOptions member: add it below");
+static_assert(member_count<MotionNlpOptions>() == 18, "new MotionNlpOptions member: add it below");
 static_assert(member_count<DampingRule>() == 7, "new DampingRule member: add it below");
 static_assert(member_count<SolverOptions>() == 11, "new SolverOptions member: add it below");
 static_assert(member_count<OptimizeOptions>() == 4, "new OptimizeOptions member: add it below");
@@ -444,6 +444,7 @@ nlohmann::json optimize_options_json(const OptimizeOptions& o) {
               {"poor_ratio", n.damping.poor_ratio}}},
             {"adapt_damping", n.adapt_damping},
             {"regularization", n.regularization},
+            {"keyframe_weight", n.keyframe_weight},
             {"joint_turn_limit", n.joint_turn_limit},
             {"joint_turn_weight", n.joint_turn_weight},
             {"threads", n.threads}}},

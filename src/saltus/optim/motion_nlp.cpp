@@ -80,6 +80,12 @@ MotionNlp::MotionNlp(const Motion& motion, const BodyModel& model,
   root_wrench_ = root_wrench.get();
   if (relaxed) {
     add_term(std::move(root_wrench));
+    if (options.keyframe_weight > 0) {
+      const double e1 = std::max(motion.tolerances.translation_m, 1e-9);
+      const double e2 = std::max(motion.tolerances.quaternion, 1e-9);
+      add_term(std::make_unique<KeyframeDistanceTerm>(
+          *targets_, options.keyframe_weight / (e1 * e1), options.keyframe_weight / (e2 * e2)));
+    }
   } else {
     owned_terms_.push_back(std::move(root_wrench));  // reported, not minimised
     add_term(std::make_unique<KeyframeDistanceTerm>(*targets_));

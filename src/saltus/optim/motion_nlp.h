@@ -94,6 +94,14 @@ struct MotionNlpOptions {
   /// starting J, so that a bad start (wrong timing) is not held near its own interpolation.
   /// Reported objectives are J alone. 0 disables it.
   double regularization = 1.0;
+  /// Weight w (N²) of the keyframe prior added to the relaxed objective:
+  /// w·Σ_i (‖B(t_i) − B̄_i‖²/ε1² + Σ_k ‖Q_k(t_i) − Q̄_k‖²/ε2²), the strict model's keyframe
+  /// distance in units of the tolerances. The tolerances let a motion meet its keyframes at
+  /// many sets of times with nearly the same root force; of those, the prior prefers the one
+  /// that passes closest to the keyframes, which for a physically exact flight is the one at
+  /// its true times (measurements in docs/optimizer.md). optimize_motion uses it with
+  /// automatic resolution only. 0 = none.
+  double keyframe_weight = 10.0;
   /// Soft limit (rad) on the turn of each non-root joint between two consecutive control points
   /// (JointTurnPenalty: the floor of L; the interpolation's own larger turns stay allowed), with
   /// weight joint_turn_weight (N²/rad², in J's units: 0.1 rad past the limit costs 10 N²). Half a

@@ -197,6 +197,10 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
           : start_evaluation;
 
   MotionNlpOptions nlp_options = options.nlp;
+  // The keyframe prior is a tie-break among near-physical motions, which only knots fine
+  // enough to reach near zero give: on a resolution the user fixed (the paper's K = 1 above
+  // all) the motion must use its tolerances to cut the force, and the prior would fight it.
+  if (!automatic) nlp_options.keyframe_weight = 0.0;
   SolverOptions solver = options.solver;
   for (const Keyframe& k : motion.keyframes)
     nlp_options.given_keyframe_times.push_back(k.time);

@@ -48,6 +48,13 @@ struct AutomaticResolution {
   double coarse_objective_change = 1e-2;
 };
 
+/// The paper's protocol, which the studies and `saltus paper` keep so that their tables compare
+/// with the paper's: knots at the keyframes (no automatic resolution) and no keyframe prior.
+inline void use_paper_protocol(OptimizeOptions& options) {
+  options.automatic_resolution = false;
+  options.nlp.keyframe_weight = 0.0;
+}
+
 /// See OptimizationResult::keyframe_time_spreads.
 inline constexpr double kTimeSpreadForceRise = 0.1;    ///< N
 inline constexpr double kDeterminedTimeSpread = 0.02;  ///< s
@@ -92,9 +99,10 @@ struct OptimizationResult {
   /// is fine enough for the knots.
   double optimizer_objective_before = 0.0, optimizer_objective_after = 0.0;
   /// Per keyframe, how far its optimised time could move (s), the rest of the motion following,
-  /// before the average root force rises by kTimeSpreadForceRise (MotionNlp::
-  /// keyframe_time_spreads); 0 for the fixed first and last. Above kDeterminedTimeSpread the
-  /// keyframes and their tolerances leave the time undetermined.
+  /// before the objective (root force and keyframe prior) rises by what kTimeSpreadForceRise
+  /// more average root force costs (MotionNlp::keyframe_time_spreads); 0 for the fixed first
+  /// and last. Above kDeterminedTimeSpread the keyframes and their tolerances leave the time
+  /// undetermined.
   std::vector<double> keyframe_time_spreads;
   /// The input motion with the optimised keyframe times and the optimised spline stored, so that
   /// loading it reproduces `after` exactly; its take-off state is the optimised motion's own

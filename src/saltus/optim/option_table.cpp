@@ -162,6 +162,19 @@ std::vector<OptionSpec> make_table() {
   bind(o, nlp, &MotionNlpOptions::regularization);
   t.push_back(o);
 
+  o = entry("keyframe_weight", "--keyframe-weight", "Keyframe prior", "N²",
+            "weight of the prior that prefers, among motions of nearly the same root force, the "
+            "one closest to the keyframes (their distance in units of the tolerances): it is "
+            "what brings keyframe times back; with --knots-per-interval auto only (a fixed "
+            "resolution keeps the paper's objective); 0 = none");
+  range(o, OptionKind::kReal, 0.0, kUnbounded);
+  record(o, "keyframe_weight", ResultRecord::kOptimization);
+  bind(o, nlp, &MotionNlpOptions::keyframe_weight);
+  o.applies = [](const OptimizeOptions& x) {
+    return x.nlp.formulation == Formulation::kRelaxed && x.automatic_resolution;
+  };
+  t.push_back(o);
+
   o = entry("max_joint_turn", "--max-joint-turn", "Max joint turn", "°",
             "soft limit on how far a joint turns relative to its parent between two spline "
             "control points (where the interpolation itself turns further, that is the limit); "

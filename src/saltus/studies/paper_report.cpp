@@ -35,14 +35,14 @@ PaperPlan paper_report_plan(const std::vector<LabelledMotion>& skills,
     plan.cases.push_back({PaperCaseKind::kDive, dive.label, {}});
   // Mass study on the hardest skill (§6.1, Fig. 8).
   plan.mass.optimize = options.optimize;
-  plan.mass.optimize.automatic_resolution = false;  // the paper's resolution: knots at keyframes
+  use_paper_protocol(plan.mass.optimize);  // knots at the keyframes, no keyframe prior
   for (const LabelledMotion& skill : skills)
     if (skill.label == "M7") plan.cases.push_back({PaperCaseKind::kMass, skill.label, {}});
 
   // Convergence study (§3.4's claim).
   ConvergenceStudyOptions& convergence = plan.convergence;
   convergence.optimize = options.optimize;
-  convergence.optimize.automatic_resolution = false;  // the paper's protocol: its resolution
+  use_paper_protocol(convergence.optimize);
   convergence.strict_checkpoints = options.strict_checkpoints;
   plan.convergence_motions = skills;
   // The paper's mass-parameter errors hit every segment alike; a single segment's error (the
@@ -63,7 +63,7 @@ PaperPlan paper_report_plan(const std::vector<LabelledMotion>& skills,
 
 OptimizeOptions paper_run_options(const PaperCase& paper_case, const PaperReportOptions& options) {
   OptimizeOptions o = options.optimize;
-  o.automatic_resolution = false;  // the paper's resolution: knots at the keyframes (or K = 3)
+  use_paper_protocol(o);  // knots at the keyframes (or K = 3), no keyframe prior
   o.nlp.knots_per_interval = paper_case.kind == PaperCaseKind::kRefinedSkill ? 3 : 1;
   return o;
 }

@@ -481,8 +481,9 @@ TEST(MotionNlp, AssemblesEachFormulationFromItsTermsAndBlocks) {
     return out;
   };
   test::RandomPoint relaxed(Formulation::kRelaxed), strict(Formulation::kStrict);
-  EXPECT_EQ(names(relaxed.nlp->objective_terms()),
-            (std::vector<std::string>{"root wrench", "proximity", "joint turn"}));
+  EXPECT_EQ(
+      names(relaxed.nlp->objective_terms()),
+      (std::vector<std::string>{"root wrench", "keyframe distance", "proximity", "joint turn"}));
   EXPECT_EQ(names(strict.nlp->objective_terms()),
             (std::vector<std::string>{"keyframe distance", "proximity", "joint turn"}));
   EXPECT_EQ(names(relaxed.nlp->constraint_blocks()),

@@ -299,6 +299,9 @@ std::map<std::string, OptionValue> recorded_before_the_table(const OptimizeOptio
   r["knots_per_interval_requested"] = o.nlp.knots_per_interval;
   r["formulation"] = std::string(o.nlp.formulation == Formulation::kRelaxed ? "relaxed" : "strict");
   if (o.nlp.formulation == Formulation::kStrict) r["epsilon"] = o.nlp.epsilon;
+  // Added with the keyframe prior (issue 13): what brought the times back is on record.
+  if (o.nlp.formulation == Formulation::kRelaxed && o.automatic_resolution)
+    r["keyframe_weight"] = o.nlp.keyframe_weight;
   r["timing_optimized"] = o.nlp.optimize_timing;
   r["joint_turn_limit_deg"] =
       o.nlp.limits_joint_turns() ? o.nlp.joint_turn_limit * 180.0 / M_PI : 0.0;

@@ -24,7 +24,7 @@ MassStudyOptions quick() {
   MassStudyOptions options;
   options.optimize.nlp.samples = 21;
   options.optimize.solver.max_iterations = 2;
-  options.optimize.automatic_resolution = false;  // as `saltus mass` and the paper report run it
+  use_paper_protocol(options.optimize);  // as `saltus mass` and the paper report run it
   return options;
 }
 

@@ -11,7 +11,14 @@ namespace saltus {
 
 class KeyframeDistanceTerm : public ObjectiveTerm {
  public:
-  explicit KeyframeDistanceTerm(const KeyframeTargets& targets) : targets_(targets) {}
+  /// The translation part is multiplied by `translation_weight`, the rotation part by
+  /// `rotation_weight` (1 and 1 in the strict model; the relaxed model's keyframe prior uses
+  /// w/ε1² and w/ε2², a distance in units of the tolerances).
+  explicit KeyframeDistanceTerm(const KeyframeTargets& targets, double translation_weight = 1.0,
+                                double rotation_weight = 1.0)
+      : targets_(targets),
+        translation_weight_(translation_weight),
+        rotation_weight_(rotation_weight) {}
 
   std::string name() const override { return "keyframe distance"; }
   double value(NlpEvaluations& at) override;
@@ -24,6 +31,8 @@ class KeyframeDistanceTerm : public ObjectiveTerm {
   /// Jacobian of B(t_i) − B̄(t_i): the target moves along the parabola with the keyframe's time.
   LocalJacobian<3> translation_residual_jacobian(NlpEvaluations& at, int keyframe) const;
   const KeyframeTargets& targets_;
+  double translation_weight_;
+  double rotation_weight_;
 };
 
 }  // namespace saltus
