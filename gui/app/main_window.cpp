@@ -27,6 +27,7 @@
 #include "app/plots_panel.h"
 #include "app/run_controller.h"
 #include "app/scene_widget.h"
+#include "app/study_controller.h"
 #include "app/timeline_widget.h"
 #include "app/video_exporter.h"
 #include "app/view_controller.h"
@@ -59,6 +60,7 @@ MainWindow::MainWindow(bool interactive, QWidget* parent) : QMainWindow(parent) 
   edits_ = new EditController(*context_, *runs_, this);
   files_ = new FileController(*context_, *view_, *playback_, *plots_, this);
   compare_ = new CompareController(*context_, *view_, this);
+  studies_ = new StudyController(*context_, this);
   video_ = new VideoExporter(*context_, *view_, this);
   remembered_ = {files_, view_, playback_, runs_, plots_};
 
@@ -122,6 +124,7 @@ void MainWindow::build_menus() {
 
   QMenu* optimise = menuBar()->addMenu(tr("&Optimise"));
   runs_->fill_menu(optimise);
+  studies_->fill_menu(optimise);
 
   QMenu* compare = menuBar()->addMenu(tr("&Compare"));
   compare_->fill_menu(compare);

@@ -4,9 +4,9 @@
 /// builds the menus and the toolbar, and hands each job to its part (one class each): files
 /// (FileController), edits with the undo stack (EditController), optimisation runs and the
 /// result list (RunController), the 3D view (ViewController), playback (PlaybackController), the
-/// plots (PlotsPanel), compare (CompareController). All of them share the workspace through the
-/// AppContext; settings are remembered by every part that has any. Qt types only in this header:
-/// tests and batch mode include it.
+/// plots (PlotsPanel), compare (CompareController), studies (StudyController). All of them
+/// share the workspace through the AppContext; settings are remembered by every part that has
+/// any. Qt types only in this header: tests and batch mode include it.
 
 #include <QImage>
 #include <QMainWindow>
@@ -20,6 +20,7 @@
 namespace saltus::gui {
 
 class CompareController;
+class StudyController;
 class EditController;
 class FileController;
 class PlaybackController;
@@ -52,6 +53,7 @@ class MainWindow : public QMainWindow {
   PlaybackController& playback() { return *playback_; }
   PlotsPanel& plots() { return *plots_; }
   CompareController& compare() { return *compare_; }
+  StudyController& studies() { return *studies_; }
   VideoExporter& video() { return *video_; }
 
   // Shortcuts to what batch mode and tests use most.
@@ -98,6 +100,7 @@ class MainWindow : public QMainWindow {
   EditController* edits_ = nullptr;
   FileController* files_ = nullptr;
   CompareController* compare_ = nullptr;
+  StudyController* studies_ = nullptr;
   VideoExporter* video_ = nullptr;
   /// Parts that remember settings, in the order they are loaded.
   std::vector<RemembersSettings*> remembered_;

@@ -20,6 +20,7 @@
 #include "saltus/formats/paper_report_files.h"
 #include "saltus/formats/slurm_script.h"
 #include "saltus/formats/study_folder.h"
+#include "saltus/formats/study_progress.h"
 #include "saltus/studies/mass_study.h"
 
 namespace saltus::cli {
@@ -96,42 +97,9 @@ void add_run_options(CLI::App* cmd, RunArgs& args) {
                     checkpoints + " stops as stopped_infeasible)");
 }
 
-std::string clock_text(double seconds) {
-  const long s = static_cast<long>(seconds + 0.5);
-  char text[32];
-  if (s >= 3600)
-    std::snprintf(text, sizeof text, "%ld:%02ld:%02ld", s / 3600, s / 60 % 60, s % 60);
-  else
-    std::snprintf(text, sizeof text, "%ld:%02ld", s / 60, s % 60);
-  return text;
-}
-
-/// What the case just recorded came to, in a few words.
-std::string case_result(const CaseRecord& r) {
-  if (!r.finished()) return r.failure;
-  char text[96];
-  switch (r.kind) {
-    case CaseKind::kConvergence:
-      std::snprintf(text, sizeof text, "%s, %d it., %.3g N", r.convergence.status.c_str(),
-                    r.convergence.iterations, r.convergence.avg_force_after);
-      return text;
-    case CaseKind::kOptimization:
-      std::snprintf(text, sizeof text, "%s, %d it., %.3g N", r.run.status.c_str(), r.run.iterations,
-                    r.run.avg_force_after);
-      return text;
-    case CaseKind::kMassStudy:
-      return "done";
-  }
-  return "";
-}
-
-/// One line per finished case on stderr: cases done, failures, unsolved, elapsed and ETA.
+/// One line per finished case on stderr (formats/study_progress.h: the app reads it back).
 void print_progress(const StudyProgress& p) {
-  const int width = static_cast<int>(std::to_string(p.total).size());
-  std::fprintf(stderr, "  [%*d/%d] %d failed, %d not solved, %s elapsed, ETA %s  %s: %s\n", width,
-               p.done, p.total, p.failed, p.unsolved, clock_text(p.elapsed_s).c_str(),
-               p.eta_s < 0 ? "?" : clock_text(p.eta_s).c_str(), p.last->name.c_str(),
-               case_result(*p.last).c_str());
+  std::fprintf(stderr, "%s\n", study_progress_line(p).c_str());
 }
 
 /// The command line again without the options that say how and where it runs, for a Slurm
