@@ -71,7 +71,7 @@ struct MotionNlpOptions {
   int samples = kDefaultSamples;  ///< strict model: the times of its force bounds on [0, T]
   /// The relaxed objective's integral (RootWrenchTerm): Gauss–Lobatto nodes on every knot
   /// span (its ends included), at least quadrature_nodes and at most quadrature_spacing apart.
-  int quadrature_nodes = 6;
+  int quadrature_nodes = 8;
   double quadrature_spacing = 0.02;
   double min_time_gap = 0.05;    ///< s, eq. (4)'s gap (capped at half the shortest interval)
   double max_time_shift = 0.25;  ///< s, how far a keyframe time may move from the given one

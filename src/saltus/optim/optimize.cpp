@@ -217,8 +217,10 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
     // A level that will most likely be refined (the automatic resolution's first, from an
     // interpolation far above the target) only has to show where its residual lives.
     SolverOptions level_solver = solver;
-    if (automatic && level == 0 && level < rules.max_refinements &&
-        start_evaluation.metrics.avg_root_force > 10.0 * rules.target_force)
+    const bool coarse =
+        automatic && level < rules.max_refinements &&
+        (level > 0 || start_evaluation.metrics.avg_root_force > 10.0 * rules.target_force);
+    if (coarse)
       level_solver.objective_change_tolerance =
           std::max(solver.objective_change_tolerance, rules.coarse_objective_change);
     Solved solved = solve_level(motion, at_start, model, start_trajectory, nlp_options,
@@ -226,8 +228,28 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
     iterations += solved.solve.iterations;
     restarts += solved.solve.restarts;
     seconds += solved.solve.seconds;
-    const DenseCheck check = dense_check(model, solved.trajectory, options.nlp.samples);
-    const double force = check.metrics.avg_root_force;
+    DenseCheck check = dense_check(model, solved.trajectory, options.nlp.samples);
+    double force = check.metrics.avg_root_force;
+    if (coarse && solved.solve.solved && force <= rules.target_force &&
+        !(cancel && cancel->load())) {
+      // Near the target already: this level is the last, so finish it at the full tolerance,
+      // warm-started from where the coarse stop left it.
+      SolverOptions finish = solver;
+      finish.warm_start = true;
+      Solved finished = solve_level(motion, solved.optimized, model, solved.trajectory, nlp_options,
+                                    finish, progress, cancel);
+      iterations += finished.solve.iterations;
+      restarts += finished.solve.restarts;
+      seconds += finished.solve.seconds;
+      const DenseCheck finished_check =
+          dense_check(model, finished.trajectory, options.nlp.samples);
+      if (finished.solve.solved && finished_check.metrics.avg_root_force <= force) {
+        finished.solve.iterations += solved.solve.iterations;
+        solved = std::move(finished);
+        check = finished_check;
+        force = check.metrics.avg_root_force;
+      }
+    }
     result.levels.push_back({subdivisions, force, solved.solve.iterations, solved.solve.status});
     if (level == 0) result.optimizer_objective_before = solved.objective_before;
     const bool better = !have_best || (solved.solve.solved && !best.solve.solved) ||
