@@ -214,8 +214,9 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
   double seconds = 0.0;
   for (int level = 0;; ++level) {
     nlp_options.subdivisions = subdivisions;
-    // A level that will most likely be refined (the automatic resolution's first, from an
-    // interpolation far above the target) only has to show where its residual lives.
+    // A level that may still be refined only has to show where its residual lives, so it stops
+    // at the coarse objective change; one that then turns out to be the last (near the target)
+    // is finished below. The first level stops so only when it starts far above the target.
     SolverOptions level_solver = solver;
     const bool coarse =
         automatic && level < rules.max_refinements &&

@@ -43,8 +43,9 @@ struct AutomaticResolution {
   /// halving the spans cut it 4-8 times; a shortfall costs one more refinement).
   int max_spans_per_interval = 8;
   int max_refinements = 2;
-  /// A level that will be refined only needs to say where its residual lives: it stops at this
-  /// relative objective change instead of the final one.
+  /// A level that may be refined only needs to say where its residual lives: it stops at this
+  /// relative objective change instead of the final one (and, if it then meets target_force,
+  /// is finished at the final one, warm-started).
   double coarse_objective_change = 1e-2;
 };
 
