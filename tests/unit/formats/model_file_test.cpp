@@ -433,7 +433,8 @@ TEST(BodyModelJson, FilesWithoutShapePartsStillReadAndWriteAsBefore) {
   for (const Segment& s : model.segments)
     EXPECT_TRUE(s.shape.parts.empty()) << s.name;
   // Written back, no "parts" key appears.
-  for (const auto& segment : body_model_to_json(model)["segments"])
+  const nlohmann::json written = body_model_to_json(model);
+  for (const auto& segment : written["segments"])
     EXPECT_FALSE(segment["shape"].contains("parts"));
 }
 

@@ -47,7 +47,12 @@ StudyJob synthetic_job(int cases, const std::string& log, std::set<int> crash = 
     job.case_names.push_back(study_case_label(c) + " #" + std::to_string(&c - list.data()));
   job.run_case = [list, log, crash, interrupt_at](int i, const std::string&) {
     test::write_text(log + "/ran-" + std::to_string(i) + "-" + std::to_string(getpid()), "");
-    if (crash.count(i)) raise(SIGSEGV);
+    if (crash.count(i)) {
+      // Die by the signal as a real crash does: AddressSanitizer's own SIGSEGV handler would
+      // report it and exit with a status instead.
+      signal(SIGSEGV, SIG_DFL);
+      raise(SIGSEGV);
+    }
     if (i == interrupt_at) {
       kill(getppid(), SIGINT);  // the study is interrupted and this case dies with it
       raise(SIGINT);
