@@ -19,8 +19,11 @@ namespace saltus {
 namespace {
 
 namespace fs = std::filesystem;
+using test::read_json;
+using test::read_text;
 using test::run_cli;
 using test::TempDir;
+using test::write_text;
 
 std::string shared_capture(const std::string& name) {
   const std::string path = std::string(SALTUS_SHARED_MOCAP_DIR) + "/" + name;
@@ -32,22 +35,6 @@ std::string shared_capture(const std::string& name) {
 
 std::string m1_path() {
   return std::string(SALTUS_EXAMPLES_DIR) + "/motions/M1-straight-back-somersault.motion.json";
-}
-
-nlohmann::json read_json(const std::string& path) {
-  std::ifstream in(path);
-  return nlohmann::json::parse(in);
-}
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-void write_text(const std::string& path, const std::string& text) {
-  std::ofstream(path) << text;
 }
 
 std::set<std::string> folder_contents(const fs::path& folder) {

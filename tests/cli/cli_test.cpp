@@ -13,13 +13,9 @@ namespace saltus {
 namespace {
 
 namespace fs = std::filesystem;
+using test::read_json;
 using test::run_cli;
 using test::TempDir;
-
-nlohmann::json read_json(const std::string& path) {
-  std::ifstream in(path);
-  return nlohmann::json::parse(in);
-}
 
 nlohmann::json m1_json() {
   return read_json(test::m1_path());

@@ -24,6 +24,7 @@ namespace saltus {
 namespace {
 
 namespace fs = std::filesystem;
+using test::names_in;
 using json = nlohmann::json;
 
 json read_json(const std::string& path) {
@@ -251,13 +252,6 @@ class Mutator {
 
   std::mt19937_64 rng_;
 };
-
-std::set<std::string> names_in(const fs::path& folder) {
-  std::set<std::string> found;
-  for (const auto& entry : fs::directory_iterator(folder))
-    found.insert(entry.path().filename().string());
-  return found;
-}
 
 /// Every number in result.json finite (NaN is written as null: only the fields documented as
 /// null for this verb may be) and no nan/inf in the CSV's rows.

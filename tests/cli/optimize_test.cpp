@@ -15,11 +15,7 @@
 namespace saltus {
 namespace {
 
-nlohmann::json read_json(const std::string& path) {
-  std::ifstream in(path);
-  return nlohmann::json::parse(in);
-}
-
+using test::read_json;
 TEST(CliOptimize, ReducesTheResidualKeepsKeyframesAndReloads) {
   test::TempDir dir;
   const std::string out = dir / "opt";

@@ -23,21 +23,11 @@ namespace saltus {
 namespace {
 
 namespace fs = std::filesystem;
+using test::names_in;
+using test::read_json;
 using test::run_cli;
 using test::run_command;
 using test::TempDir;
-
-nlohmann::json read_json(const std::string& path) {
-  std::ifstream in(path);
-  return nlohmann::json::parse(in);
-}
-
-std::set<std::string> names_in(const fs::path& folder) {
-  std::set<std::string> found;
-  for (const auto& entry : fs::directory_iterator(folder))
-    found.insert(entry.path().filename().string());
-  return found;
-}
 
 /// Hidden entries Saltus uses while writing DIR (temporaries, the lock).
 std::set<std::string> hidden_in(const fs::path& folder) {

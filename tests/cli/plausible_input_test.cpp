@@ -18,20 +18,10 @@ namespace saltus {
 namespace {
 
 namespace fs = std::filesystem;
+using test::names_in;
+using test::read_json;
 using test::run_cli;
 using test::TempDir;
-
-nlohmann::json read_json(const std::string& path) {
-  std::ifstream in(path);
-  return nlohmann::json::parse(in);
-}
-
-std::set<std::string> names_in(const fs::path& folder) {
-  std::set<std::string> found;
-  for (const auto& entry : fs::directory_iterator(folder))
-    found.insert(entry.path().filename().string());
-  return found;
-}
 
 /// How to spoil M1 (and the model beside it), and what the message must name.
 struct Absurd {

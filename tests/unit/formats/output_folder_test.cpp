@@ -22,13 +22,7 @@ namespace saltus {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::set<std::string> names_in(const fs::path& folder) {
-  std::set<std::string> names;
-  for (const auto& entry : fs::directory_iterator(folder))
-    names.insert(entry.path().filename().string());
-  return names;
-}
+using test::names_in;
 
 TEST(OutputFolder, PublishesEveryFileAtOnceOnCommit) {
   test::TempDir dir;
@@ -102,13 +96,6 @@ TEST(WriteText, WritesTheBytesOrNamesTheFile) {
 namespace hardening {
 
 namespace fs = std::filesystem;
-
-std::set<std::string> names_in(const fs::path& folder) {
-  std::set<std::string> found;
-  for (const auto& entry : fs::directory_iterator(folder))
-    found.insert(entry.path().filename().string());
-  return found;
-}
 
 /// A folder holding what Saltus writes for `kind`, with a result.json that identifies it.
 void make_result(const fs::path& folder, const ResultKind& kind) {

@@ -24,11 +24,7 @@
 namespace saltus {
 namespace {
 
-nlohmann::json read_json(const std::string& path) {
-  std::ifstream in(path);
-  return nlohmann::json::parse(in);
-}
-
+using test::read_json;
 nlohmann::json model_json() {
   return read_json(std::string(SALTUS_RESOURCES_DIR) + "/models/zatsiorsky-66kg.json");
 }
