@@ -9,6 +9,10 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <mutex>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #include "saltus/base/text_format.h"
 
@@ -27,6 +31,22 @@ struct BestIterate {
   double smallest_violation = std::numeric_limits<double>::infinity();
   bool found() const { return !x.empty(); }
 };
+
+/// MUMPS allocates its frontal matrices (tens of MB) afresh for every factorization. With
+/// glibc's defaults those blocks are mmap'ed and returned to the kernel on free, so every
+/// iteration page-faulted them in again: 8 % of M7's run time was in the kernel. Serving them
+/// from the heap and keeping the heap's top makes the next factorization reuse the same pages
+/// (M7: 1.66 -> 1.47 s). Process-wide, set once; memory peaks stay mapped, which for a
+/// process that optimises again is what is wanted.
+void keep_solver_memory_mapped() {
+#if defined(__GLIBC__)
+  static std::once_flag once;
+  std::call_once(once, [] {
+    mallopt(M_MMAP_THRESHOLD, 1 << 30);
+    mallopt(M_TRIM_THRESHOLD, 1 << 30);
+  });
+#endif
+}
 
 /// One Ipopt run. Iterations are numbered on from `first_iteration` (earlier runs of the same
 /// solve) in progress reports.
@@ -230,6 +250,7 @@ SolveReport solve_with_ipopt(Nlp& nlp, const SolverOptions& options,
                              const ProgressCallback& progress, const std::atomic<bool>* cancel) {
   SolveReport report;
   report.status = "error";
+  keep_solver_memory_mapped();
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
   app->Options()->SetIntegerValue("print_level", options.verbose ? 5 : 0);
   app->Options()->SetStringValue("sb", "yes");  // no banner
