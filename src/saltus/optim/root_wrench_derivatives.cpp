@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "saltus/dynamics/root_wrench_state_jacobian.h"
+#include "saltus/math/quaternion_span_derivatives.h"
 #include "saltus/math/quaternion_spline.h"
 #include "saltus/math/vector_spline.h"
 
@@ -31,13 +32,11 @@ Eigen::Quaterniond quaternion_value(const Quat<SplineAD>& q) {
   return Eigen::Quaterniond(q.w().value(), q.x().value(), q.y().value(), q.z().value());
 }
 
-/// A joint curve's span with its 4 active control tangents as AD directions 0..11, in the form
-/// detail::evaluate_span_from_logs consumes: the first control and the relative logs
-/// w_j = log(c_{j−1}⁻¹ c_j). They do not depend on t, so every sample on the span shares them.
-struct JointSpanLogs {
-  Quat<SplineAD> first;
-  Vec3<SplineAD> logs[3];
-};
+/// A joint curve's span in the form quaternion_span_derivatives consumes: the first control and
+/// the relative logs w_j = log(c_{j−1}⁻¹ c_j) with their derivatives along the 4 active control
+/// tangents (directions 0..11; the time directions are zero). They do not depend on t, so every
+/// sample on the span shares them.
+using JointSpanLogs = QuaternionSpanControls<kSplineDirections>;
 
 }  // namespace
 
@@ -149,16 +148,38 @@ QuaternionSample<SplineAD> seeded_joint_span(const std::vector<Eigen::Vector3d>&
 }
 
 /// The t-independent part of seeded_joint_span, with the same operations as
-/// evaluate_quaternion_span; detail::evaluate_span_from_logs then does the rest, so the results
-/// agree to the last bit while the logs' AD (4 exps, 3 logs per curve) runs once per span.
+/// evaluate_quaternion_span (so the values agree to the last bit); the logs' AD (4 exps, 3 logs
+/// per curve) runs once per span, quaternion_span_derivatives does the rest per sample.
 void seeded_joint_logs(const std::vector<Eigen::Vector3d>& delta,
                        const std::vector<Eigen::Quaterniond>& reference, int c0,
                        JointSpanLogs& out) {
   Quat<SplineAD> c[4];
   seeded_joint_controls(delta, reference, c0, c);
-  out.first = c[0];
-  for (int j = 0; j < 3; ++j)
-    out.logs[j] = quat_log(Quat<SplineAD>(c[j].conjugate() * c[j + 1]));
+  out.first = quaternion_value(c[0]);
+  for (int dir = 0; dir < kSplineDirections; ++dir) {
+    const Eigen::Quaterniond dq(c[0].w().derivatives()[dir], c[0].x().derivatives()[dir],
+                                c[0].y().derivatives()[dir], c[0].z().derivatives()[dir]);
+    // c₀(ε) = c₀·exp(θ₀) ⇒ dθ₀ = vec(c₀⁻¹ dc₀).
+    out.first_tangent.col(dir) = (out.first.conjugate() * dq).vec();
+  }
+  for (int j = 0; j < 3; ++j) {
+    const Vec3<SplineAD> log = quat_log(Quat<SplineAD>(c[j].conjugate() * c[j + 1]));
+    for (int i = 0; i < 3; ++i) {
+      out.logs[j][i] = log[i].value();
+      out.log_derivative[j].row(i) = log[i].derivatives().transpose();
+    }
+  }
+}
+
+/// The cumulative basis values the span evaluation uses and their time derivatives.
+CumulativeBasisDerivatives<kSplineDirections> cumulative_basis(const SpanBasis<SplineAD>& basis) {
+  CumulativeBasisDerivatives<kSplineDirections> out;
+  for (int d = 0; d < 3; ++d)
+    for (int j = 0; j < 3; ++j) {
+      out.value[d][j] = basis.cumulative[d][j + 1].value();
+      out.derivative[d][j] = basis.cumulative[d][j + 1].derivatives().transpose();
+    }
+  return out;
 }
 
 /// The root translation's span with its 4 active control points as AD directions 0..11.
@@ -254,26 +275,12 @@ void RootWrenchDerivatives::wrench_jacobian_seeded(int span, const Time& t, Loca
     w.logs_span = span;
   }
   BodyState<double>& state = w.state;
+  const CumulativeBasisDerivatives<kSplineDirections> cumulative = cumulative_basis(basis);
   for (int k = 0; k < n; ++k) {
-    const JointSpanLogs& logs = w.span_logs[k];
-    const QuaternionSample<SplineAD> s =
-        detail::evaluate_span_from_logs(logs.first, logs.logs, basis);
-    const Eigen::Quaterniond q = quaternion_value(s.q);
-    auto& jac = w.joint_state_jacobian[k];
-    for (int dir = 0; dir < kSplineDirections; ++dir) {
-      const Eigen::Quaterniond dq(s.q.w().derivatives()[dir], s.q.x().derivatives()[dir],
-                                  s.q.y().derivatives()[dir], s.q.z().derivatives()[dir]);
-      // q(ε) = q·exp(η(ε)) ⇒ dη = vec(q⁻¹ dq) (the real part vanishes for unit q).
-      jac.block<3, 1>(0, dir) = (q.conjugate() * dq).vec();
-    }
-    JointState<double>& joint = state.joints[k];
-    joint.q = q;
-    for (int i = 0; i < 3; ++i) {
-      joint.omega[i] = s.omega[i].value();
-      joint.alpha[i] = s.alpha[i].value();
-      jac.row(3 + i) = s.omega[i].derivatives().transpose();
-      jac.row(6 + i) = s.alpha[i].derivatives().transpose();
-    }
+    const QuaternionSpanDerivatives<kSplineDirections> s =
+        quaternion_span_derivatives(w.span_logs[k], cumulative);
+    w.joint_state_jacobian[k] = s.jacobian;
+    state.joints[k] = {s.sample.q, s.sample.omega, s.sample.alpha};
   }
   const VectorSample<SplineAD> b = seeded_root_span(root_control_, c0, basis);
   for (int i = 0; i < 3; ++i) {

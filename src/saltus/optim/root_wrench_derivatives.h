@@ -4,9 +4,10 @@
 /// optimiser's variables, in two stages:
 ///
 ///  1. spline stage — each curve's state at t (rotation tangent η, ω, α for a joint; ṗ, p̈ for the
-///     root translation) differentiated by forward-mode AD with respect to the curve's 4 active
-///     control points (12 directions) and the keyframe times that move the span's knots
-///     (<= 8 directions);
+///     root translation) differentiated with respect to the curve's 4 active control points (12
+///     directions) and the keyframe times that move the span's knots (<= 8 directions): the
+///     span's relative logs and the basis by forward-mode AD, once per span and per sample, the
+///     joint's span evaluation from them in closed form (math/quaternion_span_derivatives.h);
 ///  2. dynamics stage — F differentiated with respect to every joint's state tangent (9 per
 ///     segment) and the root's ṗ, p̈ in closed form, from one double inverse dynamics pass
 ///     (dynamics/root_wrench_state_jacobian.h). This replaced AD through the whole inverse
