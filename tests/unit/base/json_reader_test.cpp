@@ -20,6 +20,7 @@
 #include <string>
 
 #include "support/cli_runner.h"
+#include "support/input_errors.h"
 #include "support/temp_path.h"
 
 namespace saltus {
@@ -118,16 +119,7 @@ namespace hardening {
 
 namespace fs = std::filesystem;
 
-/// The message of the InputError `f` throws ("" if it throws none).
-template <typename F>
-std::string input_error(F f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::input_error;
 
 TEST(JsonReader, DuplicateKeysAreRefusedAtTheirPointer) {
   EXPECT_EQ(input_error([] { parse_json_text(R"({"a": 1, "a": 2})", "f.json"); }),

@@ -9,19 +9,12 @@
 #include <limits>
 
 #include "saltus/base/input_error.h"
+#include "support/input_errors.h"
 
 namespace saltus {
 namespace {
 
-template <typename F>
-std::string input_error(F f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::input_error;
 
 TEST(FiniteCheck, NamesTheFirstNonFiniteNumberOfAResult) {
   nlohmann::json result = {{"status", "evaluated"},
