@@ -215,21 +215,6 @@ TEST_F(OptimizedMotion, ReadsTheOutputFolderBack) {
   EXPECT_EQ(f.after->samples[10].root_wrench[0], result_->after.samples[10].root_wrench[0]);
 }
 
-TEST_F(OptimizedMotion, PaperFiguresAreNamedPerFolderWithASummary) {
-  const ResultFolder f = read_optimization_folder(folder_);
-  const std::vector<Figure> figures = paper_figures({f, f});
-  ASSERT_EQ(figures.size(), 7u);
-  EXPECT_EQ(figures[0].file_name, "saltus_gui_optimize_settings_M_root_force.png");
-  EXPECT_EQ(figures[1].file_name, "saltus_gui_optimize_settings_M_root_moment.png");
-  EXPECT_EQ(figures[2].file_name, "saltus_gui_optimize_settings_M_keyframe_times.png");
-  EXPECT_EQ(figures[3].file_name, "saltus_gui_optimize_settings_M-2_root_force.png");
-  EXPECT_EQ(figures[6].file_name, "average_root_force.png");
-  EXPECT_EQ(figures[0].chart.lines.size(), 6u);  // F1..F3 before and after
-  EXPECT_EQ(figures[2].chart.x_labels.size(), file_->motion.keyframes.size());
-  ASSERT_EQ(figures[6].chart.lines.size(), 2u);
-  EXPECT_EQ(figures[6].chart.lines[0].kind, LineKind::kBars);
-}
-
 TEST(ResultFolder, RejectsFoldersThatAreNotOptimisationResults) {
   EXPECT_THROW(read_optimization_folder("/nonexistent/folder"), InputError);
   const fs::path eval = saltus::test::temp_path("saltus_gui_not_optimized");
