@@ -29,11 +29,7 @@ namespace {
 /// Runs `f`, which must throw InputError; returns it.
 template <typename F>
 InputError input_error(F f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e;
-  }
+  if (const std::optional<InputError> e = test::thrown_input_error(f)) return *e;
   ADD_FAILURE() << "no InputError";
   return InputError("", "", "");
 }

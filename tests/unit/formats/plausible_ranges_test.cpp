@@ -20,6 +20,7 @@
 #include "saltus/formats/model_file.h"
 #include "saltus/formats/motion_file.h"
 #include "support/cli_runner.h"
+#include "support/input_errors.h"
 
 namespace saltus {
 namespace {
@@ -36,12 +37,8 @@ nlohmann::json m1_json() {
 /// The JSON pointer of the InputError `f` throws ("none" if it throws none).
 template <typename F>
 std::string error_path(F f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.json_path();
-  }
-  return "none";
+  const std::optional<InputError> e = test::thrown_input_error(f);
+  return e ? e->json_path() : "none";
 }
 
 TEST(PlausibleRanges, SeededFamiliesOfPlausibleModelsAreAccepted) {
