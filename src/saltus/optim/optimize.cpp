@@ -142,16 +142,18 @@ std::vector<double> keyframe_times_of(const Motion& motion) {
   return times;
 }
 
-/// Splits interval i's spans by ⌈(m_i / (6·target²))^(1/6)⌉, m_i its mean squared wrench: the
-/// factor that brings its own average root force to the target if the force falls like h³.
-/// False when nothing can be refined further.
+/// Splits interval i's spans by ⌈(m_i / (6·target²))^(1/(2p))⌉, m_i its mean squared wrench and
+/// p rules.convergence_order: the factor that brings its own average root force to the target
+/// if the force falls like h^p. False when nothing can be refined further.
 bool refine(std::vector<int>& subdivisions, const std::vector<double>& residual,
             const std::vector<double>& keyframe_times, const AutomaticResolution& rules) {
   bool changed = false;
   for (std::size_t i = 0; i < subdivisions.size(); ++i) {
     const double mean_square = residual[i] / (keyframe_times[i + 1] - keyframe_times[i]);
-    const double factor = std::ceil(
-        std::pow(mean_square / (6.0 * rules.target_force * rules.target_force), 1.0 / 6.0) - 1e-9);
+    const double factor =
+        std::ceil(std::pow(mean_square / (6.0 * rules.target_force * rules.target_force),
+                           0.5 / rules.convergence_order) -
+                  1e-9);
     const int spans = std::min(rules.max_spans_per_interval,
                                static_cast<int>(std::max(1.0, factor)) * subdivisions[i]);
     if (spans > subdivisions[i]) changed = true;

@@ -30,8 +30,11 @@ struct OptimizeOptions {
 /// The rules of the automatic resolution, deterministic: the same input, the same knots.
 struct AutomaticResolution {
   /// First guess: each keyframe interval split so that no segment's orientation in the world
-  /// turns by more than this between two knots (rad), ...
-  double turn_per_span = 1.05;  // 60°
+  /// turns by more than this between two knots (rad), ... Fine enough that the first level
+  /// usually ends within ~10× of target_force, where one refinement reaches it: from 60° the
+  /// twisting doubles started at K = 1, ended it at 6-13 N and needed two refinements
+  /// (docs/performance.md).
+  double turn_per_span = 0.2;  // 11.5°
   /// ... and no span is longer than this (s).
   double max_span = 0.26;
   /// Stop once the true average root force (the dense check) is at most this (N)...
@@ -39,8 +42,10 @@ struct AutomaticResolution {
   /// ... or a refinement cut it by less than this fraction (more knots stop paying).
   double min_gain = 0.3;
   /// A refinement splits each interval's spans by the factor its own mean squared wrench asks
-  /// for, assuming the force falls like the span length cubed (measured on the bundled motions:
-  /// halving the spans cut it 4-8 times; a shortfall costs one more refinement).
+  /// for, assuming the average root force falls like the span length to this power (measured
+  /// on the bundled motions: doubling the knots cut it 4-7 times, 2^2.5 ≈ 5.7; the cubic law
+  /// that was here landed just above the target and cost one more refinement).
+  double convergence_order = 2.5;
   int max_spans_per_interval = 8;
   int max_refinements = 2;
   /// A level that may be refined only needs to say where its residual lives: it stops at this
