@@ -89,8 +89,8 @@ Solved solve_level(const Motion& motion, const Motion& motion_at_start, const Bo
 }
 
 /// The first guess of the automatic resolution: interval i split into enough spans that no
-/// segment turns by more than rules.turn_per_span (world orientations at its keyframes) and no
-/// span is longer than rules.max_span.
+/// segment, turning at its fastest rate on the interval, would turn by more than
+/// rules.turn_per_span in one span, and no span is longer than rules.max_span.
 std::vector<int> first_subdivisions(const Motion& motion, const BodyModel& model,
                                     const AutomaticResolution& rules) {
   std::vector<int> out;
@@ -98,7 +98,7 @@ std::vector<int> first_subdivisions(const Motion& motion, const BodyModel& model
   for (std::size_t i = 0; i + 1 < motion.keyframes.size(); ++i) {
     const double a = motion.keyframes[i].time, b = motion.keyframes[i + 1].time;
     // The world orientation of every segment, sampled on the interval (a fast turn between two
-    // keyframes shows only inside it).
+    // keyframes shows only inside it); `turn` is the fastest sampled rate times the interval.
     double turn = 0.0;
     const int samples = 8;
     BodyState<double> previous(model.size()), current(model.size());
@@ -114,7 +114,7 @@ std::vector<int> first_subdivisions(const Motion& motion, const BodyModel& model
               Eigen::AngleAxisd(last[k].transpose() * data.world_rotation[k]).angle() * samples);
       last = data.world_rotation;
     }
-    const int by_turn = static_cast<int>(std::ceil(turn / samples / rules.turn_per_span - 1e-9));
+    const int by_turn = static_cast<int>(std::ceil(turn / rules.turn_per_span - 1e-9));
     const int by_length = static_cast<int>(std::ceil((b - a) / rules.max_span - 1e-9));
     out.push_back(std::clamp(std::max(by_turn, by_length), 1, rules.max_spans_per_interval));
   }

@@ -29,12 +29,12 @@ struct OptimizeOptions {
 
 /// The rules of the automatic resolution, deterministic: the same input, the same knots.
 struct AutomaticResolution {
-  /// First guess: each keyframe interval split so that no segment's orientation in the world
-  /// turns by more than this between two knots (rad), ... Fine enough that the first level
-  /// usually ends within ~10× of target_force, where one refinement reaches it: from 60° the
-  /// twisting doubles started at K = 1, ended it at 6-13 N and needed two refinements
-  /// (docs/performance.md).
-  double turn_per_span = 0.2;  // 11.5°
+  /// First guess: each keyframe interval split so that no segment, turning at its fastest rate
+  /// on the interval, would turn in the world by more than this in one span (rad), ... Fine
+  /// enough that the first level usually ends within ~10× of target_force, where one
+  /// refinement reaches it; with none, the twisting doubles ended the paper's knots at 6-13 N
+  /// and needed two refinements (docs/performance.md).
+  double turn_per_span = 1.6;  // 92°
   /// ... and no span is longer than this (s).
   double max_span = 0.26;
   /// Stop once the true average root force (the dense check) is at most this (N)...
