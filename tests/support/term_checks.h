@@ -128,8 +128,7 @@ inline void check_term(RandomPoint& p, ObjectiveTerm& term, const std::vector<do
   Eigen::VectorXd v(n);
   for (int i = 0; i < n; ++i)
     v[i] = g(rng);
-  const std::vector<double> hv = band.product(values, v.data());
-  const double actual = v.dot(Eigen::Map<const Eigen::VectorXd>(hv.data(), n));
+  const double actual = band.quadratic_form(values, v.data());
   const std::vector<double> rp = residuals_at(along(x, v, h)), rm = residuals_at(along(x, v, -h));
   double expected = damping * value * v.squaredNorm();
   for (std::size_t r = 0; r < rp.size(); ++r)

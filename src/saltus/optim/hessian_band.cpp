@@ -62,19 +62,18 @@ void HessianBand::add_gauss_newton(const LocalJacobian<Rows>& jac, double weight
 template void HessianBand::add_gauss_newton<3>(const LocalJacobian<3>&, double, double*) const;
 template void HessianBand::add_gauss_newton<4>(const LocalJacobian<4>&, double, double*) const;
 
-std::vector<double> HessianBand::product(const std::vector<double>& values, const double* s) const {
+double HessianBand::quadratic_form(const std::vector<double>& values, const double* s) const {
   const int n = size();
-  std::vector<double> y(n, 0.0);
+  double sum = 0.0;
   for (int r = 0; r < n; ++r) {
-    const long start = row_start_[r];
+    const double* row = values.data() + row_start_[r];
     const int first = first_column_[r];
-    for (int c = first; c < r; ++c) {
-      y[r] += values[start + (c - first)] * s[c];
-      y[c] += values[start + (c - first)] * s[r];
-    }
-    y[r] += values[start + (r - first)] * s[r];
+    double below_diagonal = 0.0;
+    for (int c = first; c < r; ++c)
+      below_diagonal += row[c - first] * s[c];
+    sum += s[r] * (2.0 * below_diagonal + row[r - first] * s[r]);
   }
-  return y;
+  return sum;
 }
 
 }  // namespace saltus

@@ -34,8 +34,9 @@ class HessianBand {
   template <int Rows>
   void add_gauss_newton(const LocalJacobian<Rows>& jac, double weight, double* values) const;
 
-  /// y = H·s for a Hessian stored as this band's values.
-  std::vector<double> product(const std::vector<double>& values, const double* s) const;
+  /// sᵀ·H·s for a Hessian stored as this band's values (the damping's model of a step): a dot
+  /// product per stored row, which vectorises, instead of the scatter a full H·s needs.
+  double quadratic_form(const std::vector<double>& values, const double* s) const;
 
  private:
   std::vector<int> first_column_;  ///< per row: the first column inside the band

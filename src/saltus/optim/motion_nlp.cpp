@@ -326,12 +326,10 @@ void MotionNlp::judge_last_step(const double* x) {
     length += step[v] * step[v];
   }
   if (length == 0.0) return;  // the same point again: nothing to judge
-  const std::vector<double> curvature = band_.product(last_model_.hessian, step.data());
-  double slope = 0.0, quadratic = 0.0;
-  for (int v = 0; v < n; ++v) {
+  const double quadratic = band_.quadratic_form(last_model_.hessian, step.data());
+  double slope = 0.0;
+  for (int v = 0; v < n; ++v)
     slope += last_model_.gradient[v] * step[v];
-    quadratic += step[v] * curvature[v];
-  }
   const double predicted = -(slope + 0.5 * quadratic);
   const double actual = last_model_.objective - objective(x);
   // A step the model says goes uphill was taken for feasibility (Ipopt trades objective for
