@@ -32,8 +32,8 @@ struct AutomaticResolution {
   /// First guess: each keyframe interval split so that no segment, turning at its fastest rate
   /// on the interval, would turn in the world by more than this in one span (rad), ... Fine
   /// enough that the first level usually ends within ~10× of target_force, where one
-  /// refinement reaches it; with none, the twisting doubles ended the paper's knots at 6-13 N
-  /// and needed two refinements (docs/performance.md).
+  /// refinement reaches it; started at the paper's knots, the twisting doubles ended their
+  /// first level at 6-13 N and needed two refinements (docs/performance.md).
   double turn_per_span = 1.6;  // 92°
   /// ... and no span is longer than this (s).
   double max_span = 0.26;
