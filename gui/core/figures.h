@@ -13,6 +13,7 @@
 
 #include "core/chart_spec.h"
 #include "core/result_folder.h"
+#include "saltus/formats/mass_files.h"
 
 namespace saltus::gui {
 

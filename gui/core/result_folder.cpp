@@ -1,7 +1,9 @@
 #include "core/result_folder.h"
 
+#include <algorithm>
 #include <filesystem>
 
+#include "core/plot_series.h"
 #include "saltus/base/input_error.h"
 
 namespace saltus::gui {

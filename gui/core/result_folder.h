@@ -8,8 +8,6 @@
 #include <vector>
 
 #include "core/chart_spec.h"
-#include "core/plot_series.h"
-#include "saltus/formats/mass_files.h"
 #include "saltus/formats/result_json.h"
 
 namespace saltus::gui {

@@ -95,15 +95,15 @@ std::vector<int> first_subdivisions(const Motion& motion, const BodyModel& model
                                     const AutomaticResolution& rules) {
   std::vector<int> out;
   const Trajectory<double> straight = interpolate_keyframes(motion, model, {});
+  const int samples = 8;
+  BodyState<double> current(model.size());
+  DynamicsData<double> data(model);
+  std::vector<Eigen::Matrix3d> last;
   for (std::size_t i = 0; i + 1 < motion.keyframes.size(); ++i) {
     const double a = motion.keyframes[i].time, b = motion.keyframes[i + 1].time;
     // The world orientation of every segment, sampled on the interval (a fast turn between two
     // keyframes shows only inside it); `turn` is the fastest sampled rate times the interval.
     double turn = 0.0;
-    const int samples = 8;
-    BodyState<double> previous(model.size()), current(model.size());
-    DynamicsData<double> data(model);
-    std::vector<Eigen::Matrix3d> last;
     for (int s = 0; s <= samples; ++s) {
       straight.sample(a + (b - a) * s / samples, current);
       inverse_dynamics(model, data, current);
