@@ -25,12 +25,8 @@ using test::run_cli;
 using test::TempDir;
 using test::write_text;
 
-std::string shared_capture(const std::string& name) {
-  const std::string path = std::string(SALTUS_SHARED_MOCAP_DIR) + "/" + name;
-  if (!fs::is_regular_file(path))
-    throw std::runtime_error("the shared capture " + path +
-                             " is missing (configure with -DSALTUS_SHARED_MOCAP_DIR=<folder>)");
-  return path;
+std::string bundled_capture(const std::string& name) {
+  return std::string(SALTUS_CAPTURES_DIR) + "/" + name;
 }
 
 std::string m1_path() {
@@ -58,7 +54,7 @@ double rotation_difference(const Motion& a, const Motion& b, int first_joint = 0
 TEST(CaptureCli, ImportWritesTheDocumentedOutputs) {
   const TempDir dir;
   const auto run =
-      run_cli("import " + shared_capture("deepmimic-backflip.bvh") + " --out " + (dir / "out"));
+      run_cli("import " + bundled_capture("deepmimic-backflip.bvh") + " --out " + (dir / "out"));
   ASSERT_EQ(run.status, 0) << run.output;
   EXPECT_NE(run.output.find("flight (feet): frames 11-18"), std::string::npos) << run.output;
   EXPECT_EQ(folder_contents(dir.path()), std::set<std::string>{"out"});
@@ -100,7 +96,7 @@ TEST(CaptureCli, ImportWritesTheDocumentedOutputs) {
 
 TEST(CaptureCli, BadInputExitsWithTwoNamesTheProblemAndWritesNothing) {
   const TempDir dir;
-  const std::string good = read_text(shared_capture("deepmimic-backflip.bvh"));
+  const std::string good = read_text(bundled_capture("deepmimic-backflip.bvh"));
   std::string broken = good;
   broken.replace(broken.find("Zrotation Xrotation Yrotation"), 9, "Wrotation");
   write_text(dir / "broken.bvh", broken);
@@ -179,7 +175,7 @@ TEST(CaptureCli, AMappingFileMapsNamesNoConventionKnows) {
 TEST(CaptureCli, ExportedImportsGiveBackTheSameJointRotations) {
   const TempDir dir;
   ASSERT_EQ(
-      run_cli("import " + shared_capture("deepmimic-backflip.bvh") + " --out " + (dir / "first"))
+      run_cli("import " + bundled_capture("deepmimic-backflip.bvh") + " --out " + (dir / "first"))
           .status,
       0);
   const auto exported =
@@ -202,11 +198,11 @@ TEST(CaptureCli, ExportedImportsGiveBackTheSameJointRotations) {
 
 TEST(CaptureCli, MotionVerbsReadACapture) {
   const TempDir dir;
-  const auto run = run_cli("evaluate " + shared_capture("deepmimic-backflip.bvh") + " --out " +
+  const auto run = run_cli("evaluate " + bundled_capture("deepmimic-backflip.bvh") + " --out " +
                            (dir / "evaluated"));
   ASSERT_EQ(run.status, 0) << run.output;
   const auto imported =
-      run_cli("import " + shared_capture("deepmimic-backflip.bvh") + " --out " + (dir / "i"));
+      run_cli("import " + bundled_capture("deepmimic-backflip.bvh") + " --out " + (dir / "i"));
   ASSERT_EQ(imported.status, 0);
   EXPECT_EQ(read_json(dir / "evaluated/result.json")["keyframes"],
             read_json(dir / "i/result.json")["keyframes"]["count"]);
@@ -214,7 +210,7 @@ TEST(CaptureCli, MotionVerbsReadACapture) {
 
 TEST(CaptureCli, OptimisingTheImportedDeepMimicKeyframesSolves) {
   const TempDir dir;
-  ASSERT_EQ(run_cli("import " + shared_capture("deepmimic-backflip.bvh") + " --out " + (dir / "i"))
+  ASSERT_EQ(run_cli("import " + bundled_capture("deepmimic-backflip.bvh") + " --out " + (dir / "i"))
                 .status,
             0);
   // Default settings, then knots refined once; each checked by a dense evaluation of the

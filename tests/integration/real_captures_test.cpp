@@ -1,7 +1,6 @@
-// The shared real captures (../shared/mocap/README.md, read by path, never copied): the facts
-// that README states, measured independently of Saltus, and a hand conversion of the DeepMimic
-// clip made with another tool. These tests fail, naming the folder, when the captures are
-// missing.
+// The bundled real captures (examples/captures/README.md): the facts that README states,
+// measured independently of Saltus, and a hand conversion of the DeepMimic clip made with
+// another tool.
 
 #include <gtest/gtest.h>
 
@@ -15,17 +14,12 @@
 namespace saltus {
 namespace {
 
-std::string shared_capture(const std::string& name) {
-  const std::string path = std::string(SALTUS_SHARED_MOCAP_DIR) + "/" + name;
-  if (!std::filesystem::is_regular_file(path))
-    throw std::runtime_error("the shared capture " + path +
-                             " is missing (configure with -DSALTUS_SHARED_MOCAP_DIR=<folder of "
-                             "the shared mocap files>)");
-  return path;
+std::string bundled_capture(const std::string& name) {
+  return std::string(SALTUS_CAPTURES_DIR) + "/" + name;
 }
 
 CaptureFile import(const std::string& name, const CaptureFileOptions& options = {}) {
-  return import_capture_file(shared_capture(name), options);
+  return import_capture_file(bundled_capture(name), options);
 }
 
 TEST(RealCaptures, TheTwoDeepMimicFilesImportToTheSameMotion) {
@@ -77,7 +71,7 @@ TEST(RealCaptures, DeepMimicMatchesAnIndependentHandConversion) {
   // deepmimic-backflip.motion.json was converted with another tool (chest split half on lumbar
   // and thoracic, neck dropped, the foot's rest as neutral), 6 of the airborne frames.
   const CaptureFile c = import("deepmimic-backflip.bvh");
-  const MotionFile hand = load_motion_file(shared_capture("deepmimic-backflip.motion.json"));
+  const MotionFile hand = load_motion_file(bundled_capture("deepmimic-backflip.motion.json"));
   const Motion& captured = c.import.captured;
   double worst = 0.0;
   for (const Keyframe& k : hand.motion.keyframes) {
