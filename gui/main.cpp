@@ -82,7 +82,8 @@ int main(int argc, char** argv) {
     return kExitNoDisplay;
   }
   qInstallMessageHandler(on_qt_message);
-  // VTK's OpenGL needs its surface format set before the QApplication exists (DESIGN §8).
+  // VTK's OpenGL needs its surface format set before the QApplication exists
+  // (docs/dependencies.md).
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
   QApplication app(argc, argv);
   QApplication::setOrganizationName("Saltus");

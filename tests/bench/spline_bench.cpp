@@ -1,4 +1,4 @@
-/// Spline benchmarks. Budget (DESIGN §5, optimiser inner loop): all 13 joints' quaternion
+/// Spline benchmarks. Budget (docs/method.md, optimiser inner loop): all 13 joints' quaternion
 /// splines with ω and α in <= 2 µs per time sample (double, Release).
 
 #include <benchmark/benchmark.h>

@@ -1,5 +1,5 @@
-// The command-line contract (DESIGN §6, issue "physics core"): outputs on success; on bad input
-// exit status 2, one message naming the file and the field, and nothing left behind.
+// The command-line contract (docs/formats.md, issue "physics core"): outputs on success; on bad
+// input exit status 2, one message naming the file and the field, and nothing left behind.
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// `saltus optimize` end to end: outputs as DESIGN §6, the residual reduced, the keyframe
+// `saltus optimize` end to end: outputs as docs/formats.md, the residual reduced, the keyframe
 // constraints held in the written trajectory (not only on the solver's word), and the optimised
 // motion reloading to the same numbers through `saltus evaluate`.
 

@@ -1,5 +1,5 @@
 // The whole import on captures whose truth is known: an exact free flight (a tucked back
-// somersault simulated in free flight, DESIGN §5) exported as BVH on the model's skeleton and
+// somersault simulated in free flight, docs/method.md) exported as BVH on the model's skeleton and
 // imported back, and the same performance rewritten in other capture conventions. Checked by
 // paths independent of the importer: the simulator's own states, its take-off state and
 // conserved angular momentum, and optimisation of the picked keyframes.

@@ -1,4 +1,4 @@
-// The test of truth (DESIGN §7): flights made by the free-flight simulator, whose true root
+// The test of truth (docs/testing.md): flights made by the free-flight simulator, whose true root
 // wrench is zero, keyframed at times a user would type. Nobody tuned Saltus for them: default
 // `optimize_motion` must bring each one's true residual (the dense check) near zero, the files it
 // writes must agree with the motion (simulating the optimised motion lands where it lands), the

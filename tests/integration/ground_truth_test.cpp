@@ -1,4 +1,4 @@
-// DESIGN §7: keyframes sampled from a simulated free flight, with their times disturbed, must
+// docs/testing.md: keyframes sampled from a simulated free flight, with their times disturbed, must
 // optimise back to a near-zero residual, and timing optimisation must move the times back
 // towards the truth.
 

@@ -1,6 +1,6 @@
-// DESIGN §7: the residual that inverse dynamics reports (res_* columns) must equal dP/dt − m·g and
-// dL_G/dt computed from the exported segment poses alone, by finite differences: a code path that
-// shares nothing with the recursive Newton-Euler algorithm.
+// docs/testing.md: the residual that inverse dynamics reports (res_* columns) must equal
+// dP/dt − m·g and dL_G/dt computed from the exported segment poses alone, by finite differences:
+// a code path that shares nothing with the recursive Newton-Euler algorithm.
 
 #include <gtest/gtest.h>
 

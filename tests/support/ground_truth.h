@@ -1,8 +1,8 @@
 #pragma once
-// Ground truth for the optimiser (DESIGN §7): a tucked back somersault simulated in free flight,
-// keyframed at evenly spaced times, the interior times then disturbed. The poses really occur at
-// `true_times`; a physically exact motion through them exists, so the residual must fall to
-// (nearly) zero and timing optimisation must move the times back. Shared by the ground-truth
+// Ground truth for the optimiser (docs/testing.md): a tucked back somersault simulated in free
+// flight, keyframed at evenly spaced times, the interior times then disturbed. The poses really
+// occur at `true_times`; a physically exact motion through them exists, so the residual must fall
+// to (nearly) zero and timing optimisation must move the times back. Shared by the ground-truth
 // test and the scaling benchmark.
 
 #include <cmath>

@@ -1,6 +1,7 @@
 #pragma once
 /// @file
-/// Physical and angular constants shared by every layer (DESIGN §2: SI units, y up).
+/// Physical and angular constants shared by every layer (docs/method.md, "Conventions": SI
+/// units, y up).
 
 #include <Eigen/Core>
 

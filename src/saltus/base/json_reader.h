@@ -2,7 +2,7 @@
 /// @file
 /// Typed, path-tracking access to a parsed JSON document. Every loader (models, motions) reads
 /// through JsonNode so that every error names the file and the JSON pointer of the bad value,
-/// as DESIGN §4 requires.
+/// as docs/formats.md requires.
 
 #include <Eigen/Core>
 #include <cstddef>

@@ -45,7 +45,8 @@ std::string format_factor(double factor) {
 }  // namespace
 
 std::string segment_label(const std::string& segment) {
-  // The bundled model's thorax carries the head and neck, its forearm the hand (DESIGN §3).
+  // The bundled model's thorax carries the head and neck, its forearm the hand
+  // (docs/formats.md, "Body model").
   static const std::map<std::string, std::string> kWords = {
       {"thorax", "upper trunk and head"},
       {"shank", "lower leg"},

@@ -183,7 +183,7 @@ Retargeting plan_retargeting(const MocapClip& clip, const BodyModel& model,
   for (const std::string& name : retargeted_segments())
     if (model.segment_index(name) < 0)
       throw std::invalid_argument("model \"" + model.name + "\" has no segment \"" + name +
-                                  "\" (a capture maps onto the 13 segments of DESIGN §3)");
+                                  "\" (a capture maps onto the 13 segments of docs/formats.md)");
   Retargeting plan;
   plan.mapping = mapping;
   const MocapPose rest = mocap_rest_pose(clip);

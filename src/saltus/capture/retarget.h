@@ -78,11 +78,12 @@ struct Retargeting {
   std::vector<std::pair<std::string, std::string>> unused_joints;
 };
 
-/// The model segments a capture can drive; the model must have all of them (DESIGN §3).
+/// The model segments a capture can drive; the model must have all of them (docs/formats.md,
+/// "Body model").
 const std::vector<std::string>& retargeted_segments();
 
 /// Plans the retargeting. Throws std::invalid_argument when the mapping names joints the clip
-/// lacks, the model lacks a segment of DESIGN §3, or the rest skeleton is degenerate (hips at
+/// lacks, the model lacks a segment of docs/formats.md, or the rest skeleton is degenerate (hips at
 /// one point).
 Retargeting plan_retargeting(const MocapClip& clip, const BodyModel& model,
                              const SkeletonMapping& mapping);

@@ -1,7 +1,8 @@
 #pragma once
 /// @file
-/// Which source joints drive which segment of the body model (DESIGN §3's 13 segments), found by
-/// name for the common naming conventions or given explicitly (formats/capture_mapping_file.h).
+/// Which source joints drive which segment of the body model (the 13 segments of docs/formats.md,
+/// "Body model"), found by name for the common naming conventions or given explicitly
+/// (formats/capture_mapping_file.h).
 ///
 /// A mapping names, per model segment, the source joint whose world orientation the segment
 /// takes, or several joints whose world orientations are averaged (spine joints the model lacks

@@ -50,7 +50,7 @@ Vec6<Scalar> root_wrench_force_first(const DynamicsData<Scalar>& data) {
 }
 
 /// The same wrench in the world frame about the whole-body CoM, force then moment: equal to
-/// dP/dt − m·g and dL_G/dt (DESIGN §6 "res_*").
+/// dP/dt − m·g and dL_G/dt (docs/formats.md, "res_*").
 template <typename Scalar>
 Vec6<Scalar> residual_world_about_com(const DynamicsData<Scalar>& data);
 

@@ -47,9 +47,10 @@ double ballistic_flight_time(const Takeoff& takeoff, double landing_height);
 
 /// +1 when a positive somersault count about world x (RotationSample::somersaults) is a forward
 /// somersault of this athlete, −1 when it is a backward one. Forward carries the head towards
-/// the side the body faces; at identity the body faces +z with its left along +x (DESIGN §2), so
-/// forward is positive about the body's left axis, which is the root segment's x axis at
-/// take-off. Judges name the direction by the take-off, whatever twists follow.
+/// the side the body faces; at identity the body faces +z with its left along +x
+/// (docs/method.md, "Conventions"), so forward is positive about the body's left axis, which is
+/// the root segment's x axis at take-off. Judges name the direction by the take-off, whatever
+/// twists follow.
 /// @param takeoff  the first sample of the flight
 double forward_somersault_sign(const SampleRecord& takeoff);
 

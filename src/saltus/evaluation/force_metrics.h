@@ -24,7 +24,7 @@ struct ForceMetrics {
 /// Figures over samples on a grid, by the trapezoidal rule in time (max over the samples).
 ForceMetrics force_metrics(const std::vector<SampleRecord>& samples);
 
-/// The dense check behind every figure Saltus reports (DESIGN §6: the motion's true residual,
+/// The dense check behind every figure Saltus reports (docs/formats.md: the motion's true residual,
 /// whatever resolution the optimiser worked at): the root wrench on every knot span at
 /// equally spaced points, at least kCheckPointsPerSpan intervals per span, at most
 /// kCheckMaxSpacing apart and at least `min_points` over the flight, integrated span by span by

@@ -27,7 +27,8 @@ struct RotationSample {
   /// same inertia and angular momentum (the whole body's "average" angular velocity; equal to
   /// the body's angular velocity when it does not change shape).
   Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();
-  /// ω_x, rad/s: somersault rate about the world x axis (negative = backward, DESIGN §2).
+  /// ω_x, rad/s: somersault rate about the world x axis (negative = backward,
+  /// docs/method.md, "Conventions").
   double somersault_rate = 0.0;
   /// ω projected on the root segment's long axis (its y axis in the world), rad/s.
   double twist_rate = 0.0;

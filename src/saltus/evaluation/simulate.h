@@ -1,7 +1,7 @@
 #pragma once
 /// @file
-/// `simulate_motion`: the free flight the motion's joint movements would really produce (DESIGN
-/// §5), the one call behind `saltus simulate`.
+/// `simulate_motion`: the free flight the motion's joint movements would really produce
+/// (docs/method.md), the one call behind `saltus simulate`.
 
 #include <map>
 #include <string>
@@ -12,7 +12,7 @@
 
 namespace saltus {
 
-/// A free flight with the motion's joint movements (DESIGN §5).
+/// A free flight with the motion's joint movements (docs/method.md).
 struct SimulationResult {
   std::vector<SampleRecord> samples;
   ForceMetrics metrics;  ///< of the simulated flight: ≈ 0 up to integration error

@@ -1,6 +1,7 @@
 #pragma once
 /// @file
-/// Body model files, "saltus-model/1" (DESIGN §3): read, validated and written here only.
+/// Body model files, "saltus-model/1" (docs/formats.md, "Body model"): read, validated and written
+/// here only.
 
 #include <nlohmann/json_fwd.hpp>
 #include <string>

@@ -23,7 +23,8 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kMotionFormat = kMotionFormatTag;
-/// DESIGN §2: files may be off unit norm by rounding; worse than this is a mistake, not noise.
+/// docs/method.md, "Conventions": files may be off unit norm by rounding; worse than this is a
+/// mistake, not noise.
 constexpr double kQuaternionNormTolerance = 1e-3;
 /// The first keyframe time must be 0; allow only printing noise so "0.0" and "1e-15" both work.
 constexpr double kFirstTimeTolerance = 1e-12;

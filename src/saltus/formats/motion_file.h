@@ -1,6 +1,7 @@
 #pragma once
 /// @file
-/// Motion files, "saltus-motion/1" (DESIGN §4): read, validated and written here only.
+/// Motion files, "saltus-motion/1" (docs/formats.md, "Motion"): read, validated and written here
+/// only.
 
 #include <nlohmann/json_fwd.hpp>
 #include <string>

@@ -7,7 +7,7 @@
 
 namespace saltus::plausible {
 
-// Body model (DESIGN §3).
+// Body model (docs/formats.md, "Body model").
 /// kg per segment. A hand is 0.4 kg; a heavy athlete's thorax 35 kg.
 inline constexpr double kMinSegmentMass = 1e-3;
 inline constexpr double kMaxSegmentMass = 1e3;
@@ -20,7 +20,7 @@ inline constexpr double kMaxRadiusOfGyration = 10.0;
 /// for a flat body) that rounding of printed numbers may need.
 inline constexpr double kInertiaTriangleSlack = 1e-6;
 
-// Motion (DESIGN §4).
+// Motion (docs/formats.md, "Motion").
 /// s: the flight time T. Trampoline and diving flights last 1-3 s, a 27 m cliff dive 3 s.
 inline constexpr double kMaxFlightTime = 60.0;
 /// s: the shortest gap between keyframes (a 1 kHz capture). Closer keyframes make the spline's

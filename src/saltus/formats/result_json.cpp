@@ -21,7 +21,7 @@ namespace saltus {
 
 namespace {
 
-/// The keys of a before/after block (DESIGN §6) and the figures they hold.
+/// The keys of a before/after block (docs/formats.md) and the figures they hold.
 const std::pair<const char*, double ForceMetrics::*> kForceMetricKeys[6] = {
     {"objective", &ForceMetrics::objective},     {"avg_root_force", &ForceMetrics::avg_root_force},
     {"rms_force_N", &ForceMetrics::rms_force_N}, {"rms_moment_Nm", &ForceMetrics::rms_moment_Nm},
@@ -103,7 +103,7 @@ ResultJson common_result(const MotionFile& file, ResultJson::Kind kind, const st
   return r;
 }
 
-/// How the reported residual figures were computed (DESIGN §6).
+/// How the reported residual figures were computed (docs/formats.md).
 ResultJson::ResidualCheck residual_check(const DenseCheck& check) {
   ResultJson::ResidualCheck c;
   c.rule = "Simpson's rule on every knot span, " + std::to_string(kCheckPointsPerSpan) +
@@ -253,7 +253,7 @@ nlohmann::json result_to_json(const ResultJson& r) {
       j["landing"]["root_vs_motion_deg"] = *s->landing_root_vs_motion_deg;
     if (s->angular_momentum_spread) j["angular_momentum_spread"] = *s->angular_momentum_spread;
   }
-  // Evaluations and simulations keep the optimiser's DESIGN §6 fields, as null.
+  // Evaluations and simulations keep the optimiser's fields (docs/formats.md), as null.
   j["iterations"] = o ? nlohmann::json(o->iterations) : nullptr;
   j["solve_seconds"] = o ? nlohmann::json(o->solve_seconds) : nullptr;
   j["variables"] = o ? nlohmann::json(o->variables) : nullptr;

@@ -1,9 +1,9 @@
 #pragma once
 /// @file
-/// The result folders of `saltus evaluate`, `saltus simulate` and `saltus optimize` (DESIGN §6):
-/// result.json, the trajectory CSVs, model.json and optimized.motion.json, written all or
-/// nothing (OutputFolder) and read back here. result.json records the options of the option
-/// table (optim/option_table.h) under their result keys.
+/// The result folders of `saltus evaluate`, `saltus simulate` and `saltus optimize`
+/// (docs/formats.md): result.json, the trajectory CSVs, model.json and optimized.motion.json,
+/// written all or nothing (OutputFolder) and read back here. result.json records the options of the
+/// option table (optim/option_table.h) under their result keys.
 
 #include <Eigen/Core>
 #include <map>

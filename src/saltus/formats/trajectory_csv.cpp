@@ -10,7 +10,7 @@ namespace saltus {
 
 namespace {
 
-/// The columns after the segments' (DESIGN §6): CoM, root wrench F1..F6, residual.
+/// The columns after the segments' (docs/formats.md): CoM, root wrench F1..F6, residual.
 const char* const kTrailingColumns[15] = {"com_x",   "com_y",   "com_z",   "root_fx", "root_fy",
                                           "root_fz", "root_mx", "root_my", "root_mz", "res_fx",
                                           "res_fy",  "res_fz",  "res_mx",  "res_my",  "res_mz"};
@@ -20,7 +20,7 @@ const char* const kSegmentColumns[7] = {".x", ".y", ".z", ".qw", ".qx", ".qy", "
                              const std::string& expected) {
   throw InputError(file, "line 1",
                    "column " + std::to_string(index + 1) + " is \"" + found + "\", expected " +
-                       expected + " (DESIGN §6 trajectory columns)");
+                       expected + " (trajectory columns, docs/formats.md)");
 }
 
 }  // namespace

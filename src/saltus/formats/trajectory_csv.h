@@ -1,7 +1,7 @@
 #pragma once
 /// @file
-/// The trajectory CSV of DESIGN §6: one row per sample; columns t; per segment S (model order)
-/// S.x,S.y,S.z,S.qw,S.qx,S.qy,S.qz; com_x..z; root_fx..root_mz (F1..F6); res_fx..res_mz.
+/// The trajectory CSV of docs/formats.md: one row per sample; columns t; per segment S (model
+/// order) S.x,S.y,S.z,S.qw,S.qx,S.qy,S.qz; com_x..z; root_fx..root_mz (F1..F6); res_fx..res_mz.
 
 #include <istream>
 #include <ostream>
@@ -31,7 +31,7 @@ struct TrajectoryCsv {
 };
 
 /// Reads a trajectory CSV. Throws InputError naming the file and the line, or the column that
-/// is not where DESIGN §6 puts it.
+/// is not where docs/formats.md puts it.
 TrajectoryCsv read_trajectory_csv(const std::string& path);
 /// The same from a stream; `file` names it in errors.
 TrajectoryCsv parse_trajectory_csv(std::istream& in, const std::string& file);

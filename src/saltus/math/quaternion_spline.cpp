@@ -51,7 +51,7 @@ SpanBasis<Ad> to_ad(const SpanBasis<double>& b) {
 }
 
 /// q·exp(δ) with δ = 0 seeded as derivative directions 3·slot .. 3·slot + 2: the local tangent
-/// coordinates of DESIGN §5.
+/// coordinates of docs/method.md.
 Quat<Ad> seeded(const Quat<double>& q, int slot) {
   Vec3<Ad> delta;
   for (int k = 0; k < 3; ++k)

@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// Unit-quaternion cubic B-spline curves in Kim-Kim-Shin cumulative form, evaluated locally
-/// (DESIGN §5): on span s only control quaternions q_{s-3}..q_s act,
+/// (docs/method.md): on span s only control quaternions q_{s-3}..q_s act,
 ///   q(t) = q_{s-3} · Π_{j=s-2..s} exp(ω_j B̃_j(t)),   ω_j = log(q_{j-1}⁻¹ q_j).
 /// The curve has unit norm by construction and is C² wherever the knots are simple.
 /// Angular velocity and acceleration are in the curve's own (child) frame:

@@ -1,6 +1,7 @@
 #pragma once
 /// @file
-/// Keyframed motions (DESIGN §4). Their files are read and written in formats/motion_file.h.
+/// Keyframed motions (docs/formats.md, "Motion"). Their files are read and written in
+/// formats/motion_file.h.
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>

@@ -1,8 +1,8 @@
 #pragma once
 /// @file
 /// A continuous motion: root translation B(t) as a cubic B-spline and one quaternion B-spline per
-/// segment, all on one shared clamped knot vector (DESIGN §5). Templated so that the optimiser can
-/// evaluate it with automatic-differentiation scalars.
+/// segment, all on one shared clamped knot vector (docs/method.md). Templated so that the optimiser
+/// can evaluate it with automatic-differentiation scalars.
 
 #include <vector>
 

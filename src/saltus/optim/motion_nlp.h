@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// The optimisation models of DESIGN §5 over a keyframed motion.
+/// The optimisation models of docs/method.md over a keyframed motion.
 ///
 /// Relaxed (the paper's eqs. 1-4): minimise J = (1/T) ∫ Σ F_i² dt (trapezoidal rule on a fixed
 /// grid of `samples` times), plus a small proximity term (see `regularization`) and a soft limit

@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// How the optimiser's variable vector x maps onto a trajectory (DESIGN §5).
+/// How the optimiser's variable vector x maps onto a trajectory (docs/method.md).
 ///
 /// Curves: 0 = root translation B(t) (3 coordinates of each control point, m), 1 + k = segment
 /// k's quaternion spline (3 local tangent coordinates δ of each control point, q_j = q̄_j·exp(δ_j),

@@ -1,5 +1,5 @@
 // main() of the GUI tests: VTK's surface format must be set before the QApplication exists
-// (DESIGN §8), and there is one QApplication for all tests of a process.
+// (docs/dependencies.md), and there is one QApplication for all tests of a process.
 
 #include <QVTKOpenGLNativeWidget.h>
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // The shared constants (base/constants.h) against their definitions: π from the C library,
-// gravity pointing down the y axis (DESIGN §2: SI units, y up).
+// gravity pointing down the y axis (docs/method.md: SI units, y up).
 
 #include "saltus/base/constants.h"
 

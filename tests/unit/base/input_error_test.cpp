@@ -1,5 +1,5 @@
 // InputError (base/input_error.h): the message every front end prints for bad input reads
-// "<file>: <json path>: <problem>" (DESIGN §4), and the parts stay available on their own.
+// "<file>: <json path>: <problem>" (docs/formats.md), and the parts stay available on their own.
 
 #include "saltus/base/input_error.h"
 

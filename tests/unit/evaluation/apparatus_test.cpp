@@ -50,7 +50,7 @@ TEST(Apparatus, TheTrampolineSkillLandsWhereItTookOff) {
   EXPECT_EQ(a.kind, ApparatusKind::kTrampoline);
   EXPECT_DOUBLE_EQ(a.landing_height, a.takeoff_height);
   EXPECT_NEAR(a.takeoff_height, lowest_body_point(model, e.samples.front()), 1e-12);
-  // The bed lies along the way the athlete faces at take-off (+z at identity, DESIGN §2), not
+  // The bed lies along the way the athlete faces at take-off (+z at identity, docs/method.md), not
   // along the small drift of the take-off velocity (0.15, 10, 0.15).
   const Eigen::Vector3d facing =
       e.samples.front().segment_rotation.front() * Eigen::Vector3d::UnitZ();

@@ -1,6 +1,6 @@
 // Flight sanity checks against independent answers: a free-flight simulation (the ground truth,
-// DESIGN §7) keeps its CoM on the take-off parabola and its angular momentum; a keyframed motion
-// whose root is moved off does not; the ballistic flight time matches stepping the parabola.
+// docs/testing.md) keeps its CoM on the take-off parabola and its angular momentum; a keyframed
+// motion whose root is moved off does not; the ballistic flight time matches stepping the parabola.
 
 #include <gtest/gtest.h>
 

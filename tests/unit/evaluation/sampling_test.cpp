@@ -1,6 +1,6 @@
 // Sampling a motion through inverse dynamics (evaluation/sampling.h): the time grid, and the
 // recorded CoM velocity, momentum and residual against finite differences over the samples
-// themselves (the residual is dP/dt − m·g and dL_G/dt, DESIGN §6).
+// themselves (the residual is dP/dt − m·g and dL_G/dt, docs/formats.md).
 
 #include "saltus/evaluation/sampling.h"
 

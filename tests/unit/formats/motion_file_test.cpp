@@ -1,7 +1,7 @@
-/// Tests for motion files ("saltus-motion/1", DESIGN §4): parsing, defaults, normalisation, the
-/// JSON round trip, and one test per kind of bad input. Every bad-input test starts from the good
-/// document (which the GoodDocumentParses test proves valid), changes one thing, and checks that
-/// the message names the file, the exact JSON pointer and the problem.
+/// Tests for motion files ("saltus-motion/1", docs/formats.md): parsing, defaults, normalisation,
+/// the JSON round trip, and one test per kind of bad input. Every bad-input test starts from the
+/// good document (which the GoodDocumentParses test proves valid), changes one thing, and checks
+/// that the message names the file, the exact JSON pointer and the problem.
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // result.json (formats/result_json.h): every kind written and read back field for field (seeded),
-// the keys of DESIGN §6, older files without later keys, bad documents naming the field; real
+// the keys of docs/formats.md, older files without later keys, bad documents naming the field; real
 // result folders read back; and the figures agree with the trajectory.csv written beside them —
 // J, RMS and peak root force recomputed here from the CSV's root wrench columns by the
 // trapezoidal rule — and the simulation's result names its momentum and landing.

@@ -1,4 +1,4 @@
-// The trajectory CSV (DESIGN §6): its header, seeded samples and awkward numbers written and
+// The trajectory CSV (docs/formats.md): its header, seeded samples and awkward numbers written and
 // read back exactly, and files whose columns are not where the format puts them refused naming
 // the file, line and column.
 

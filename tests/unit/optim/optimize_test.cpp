@@ -68,7 +68,7 @@ TEST(OptimizeMotion, BuildsTheLayoutsProblemAndReloadsToItsAfter) {
       EXPECT_EQ(r.subdivisions, std::vector<int>(intervals, r.knots_per_interval));
     }
     // Variables: 3 per control point of the root curve and of each joint's curve, plus the
-    // interior keyframe times (DESIGN §5).
+    // interior keyframe times (docs/method.md).
     const int controls = std::accumulate(r.subdivisions.begin(), r.subdivisions.end(), 0) + 3;
     EXPECT_EQ(r.variables, controls * 3 * (model.size() + 1) + 3);
     // "before" is the interpolation: on the same knots with a uniform K, on the paper's knots at
