@@ -11,7 +11,7 @@ case "$mode" in demo|test) ;; *) echo "usage: bash tools/bootstrap.sh demo|test"
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
 
-# Debian packages the build and the tests need (see README "Dependencies").
+# Debian packages the build and the tests need (see docs/dependencies.md).
 packages=(build-essential cmake pkg-config clang-format
           libeigen3-dev coinor-libipopt-dev libopenblas0-serial nlohmann-json3-dev libcli11-dev
           libgtest-dev libbenchmark-dev
