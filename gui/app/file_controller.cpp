@@ -27,10 +27,10 @@
 #include "saltus/base/input_error.h"
 #include "saltus/base/resources.h"
 #include "saltus/evaluation/residual_measures.h"
-#include "saltus/formats/capture_files.h"
 #include "saltus/formats/model_file.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/formats/readable_formats.h"
+#include "saltus/use_cases/captures.h"
 
 namespace saltus::gui {
 

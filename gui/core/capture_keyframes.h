@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "saltus/capture/keyframe_picking.h"
-#include "saltus/formats/capture_files.h"
 #include "saltus/motion/motion.h"
+#include "saltus/use_cases/captures.h"
 
 namespace saltus::gui {
 

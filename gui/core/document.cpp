@@ -6,6 +6,7 @@
 
 #include "saltus/formats/motion_file.h"
 #include "saltus/formats/result_json.h"
+#include "saltus/use_cases/result_folders.h"
 
 namespace saltus::gui {
 

@@ -16,8 +16,8 @@
 #include "saltus/evaluation/evaluate.h"
 #include "saltus/evaluation/flight_checks.h"
 #include "saltus/evaluation/rotation_metrics.h"
-#include "saltus/formats/capture_files.h"
 #include "saltus/optim/optimize.h"
+#include "saltus/use_cases/captures.h"
 
 namespace saltus::gui {
 

@@ -49,12 +49,10 @@ std::string first_changed_option(const OptimizeSettings& before, const OptimizeS
 }
 
 std::string option_tooltip(const OptionSpec& spec) {
-  std::string out = spec.help;
+  std::string out = option_description(spec);
   if (!out.empty()) out[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(out[0])));
-  if (spec.kind == OptionKind::kInteger || spec.kind == OptionKind::kReal)
-    out += " (" + (spec.unit.empty() ? std::string() : spec.unit + "; ") + option_range_text(spec) +
-           ")";
-  return out + ".\n" + spec.flag + " in saltus optimize and saltus-gui";
+  if (out.back() != '.') out += ".";
+  return out + "\n" + spec.flag + " in saltus optimize and saltus-gui";
 }
 
 namespace {
@@ -134,7 +132,7 @@ std::vector<ResultRow> result_table(const OptimizationResult& r, const OptimizeO
   // K before is the one asked for ("auto": the automatic resolution, relaxed model); after, the
   // spans per interval used (optimize_motion refines the knots when the interpolation cannot
   // pass through the keyframes, and the automatic resolution where the residual lives).
-  const bool automatic = options.automatic_resolution && !strict;
+  const bool automatic = options.resolution_is_automatic();
   rows.push_back({"knots per keyframe interval K",
                   automatic ? "auto" : std::to_string(options.nlp.knots_per_interval),
                   spans_text(r)});

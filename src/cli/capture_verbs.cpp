@@ -6,7 +6,7 @@
 #include <filesystem>
 
 #include "saltus/base/input_error.h"
-#include "saltus/formats/capture_files.h"
+#include "saltus/use_cases/captures.h"
 
 namespace saltus_cli {
 

@@ -20,12 +20,13 @@
 #include "saltus/evaluation/evaluate.h"
 #include "saltus/evaluation/force_metrics.h"
 #include "saltus/evaluation/simulate.h"
-#include "saltus/formats/capture_files.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/formats/output_folder.h"
 #include "saltus/formats/result_json.h"
 #include "saltus/motion/motion.h"
 #include "saltus/optim/optimize.h"
+#include "saltus/use_cases/captures.h"
+#include "saltus/use_cases/result_folders.h"
 #include "study_verbs.h"
 
 namespace {

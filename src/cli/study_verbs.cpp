@@ -13,7 +13,6 @@
 #include "flags/option_flags.h"
 #include "saltus/base/input_error.h"
 #include "saltus/base/text_format.h"
-#include "saltus/formats/capture_files.h"
 #include "saltus/formats/convergence_files.h"
 #include "saltus/formats/mass_files.h"
 #include "saltus/formats/motion_file.h"
@@ -22,6 +21,11 @@
 #include "saltus/formats/study_folder.h"
 #include "saltus/formats/study_progress.h"
 #include "saltus/studies/mass_study.h"
+#include "saltus/use_cases/captures.h"
+#include "saltus/use_cases/convergence_run.h"
+#include "saltus/use_cases/paper_report_run.h"
+#include "saltus/use_cases/result_folders.h"
+#include "saltus/use_cases/study_runner.h"
 
 namespace saltus::cli {
 

@@ -1,7 +1,7 @@
 #pragma once
 // The study verbs of `saltus`: `study convergence`, `study mass`, `study merge` and `paper`.
 // Argument parsing and printing only; the studies, their folders and the per-case processes are
-// the library's (formats/study_folder.h).
+// the library's (use_cases/study_runner.h).
 
 #include <CLI/CLI.hpp>
 #include <memory>

@@ -69,7 +69,7 @@ TEST(CliStudy, ConvergenceWritesOneRowPerCaseAndTheRelaxedModelSolves) {
   // The paper's protocol: knots at the keyframes (M1: 5 keyframes, 7 control points of 42
   // coordinates + 3 times), not `saltus optimize`'s automatic resolution.
   const auto study = nlohmann::json::parse(test::read_text(dir / "c/study.json"));
-  EXPECT_EQ(study["definition"]["optimize"]["automatic_resolution"], false);
+  EXPECT_EQ(study["definition"]["optimize"]["knots_per_interval"], 1);
   std::istringstream lines(csv);
   std::string line;
   std::getline(lines, line);

@@ -12,6 +12,7 @@
 #include "saltus/formats/finite_check.h"
 #include "saltus/formats/model_file.h"
 #include "saltus/formats/motion_file.h"
+#include "saltus/use_cases/result_folders.h"
 
 namespace {
 

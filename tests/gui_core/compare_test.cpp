@@ -12,6 +12,7 @@
 #include "saltus/base/input_error.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/formats/result_json.h"
+#include "saltus/use_cases/result_folders.h"
 #include "support/temp_path.h"
 
 namespace saltus::gui {

@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <regex>
 
-#include "saltus/formats/capture_files.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/math/quaternion.h"
+#include "saltus/use_cases/captures.h"
 
 namespace saltus {
 namespace {

@@ -12,6 +12,7 @@
 #include "saltus/formats/mass_files.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/studies/mass_study.h"
+#include "saltus/use_cases/result_folders.h"
 #include "support/temp_path.h"
 
 namespace saltus::test {

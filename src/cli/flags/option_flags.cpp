@@ -4,14 +4,6 @@ namespace saltus::cli {
 
 namespace {
 
-std::string description(const OptionSpec& spec, OptionUse runs) {
-  std::string out = spec.help;
-  if (spec.kind == OptionKind::kSwitch || spec.kind == OptionKind::kChoice) return out;
-  out += " (";
-  if (!spec.unit.empty()) out += spec.unit + "; ";
-  return out + option_range_text(spec, runs) + ")";
-}
-
 std::string type_name(const OptionSpec& spec, OptionUse runs) {
   switch (spec.kind) {
     case OptionKind::kChoice:
@@ -55,7 +47,7 @@ void OptionFlags::add(CLI::App* command, const std::vector<std::string>& names, 
             values_.set(name, flagged);
             given_.emplace_back(name, flagged);
           },
-          description(spec, runs));
+          option_description(spec, runs));
       continue;
     }
     CLI::Validator check(
@@ -77,7 +69,7 @@ void OptionFlags::add(CLI::App* command, const std::vector<std::string>& names, 
               given_.emplace_back(spec.name, value);
               return true;
             },
-            description(spec, runs))
+            option_description(spec, runs))
         ->type_name(type_name(spec, runs))
         ->default_str(option_value_text(values_.get(name)))
         ->check(check);

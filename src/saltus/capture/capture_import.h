@@ -3,7 +3,7 @@
 /// Importing a motion capture onto the body model (the library call behind `saltus import` and
 /// the GUI's File > Import): retargeting, the flight phase, the take-off state, the angular
 /// momentum over the flight, the capture's own residual and keyframes picked for optimisation.
-/// In memory only; formats/capture_files.h reads the files and writes the outputs.
+/// In memory only; use_cases/captures.h reads the files and writes the outputs.
 
 #include <optional>
 #include <string>

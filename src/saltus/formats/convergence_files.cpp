@@ -13,6 +13,7 @@
 #include "saltus/base/json_reader.h"
 #include "saltus/base/text_format.h"
 #include "saltus/formats/output_folder.h"
+#include "saltus/optim/option_table.h"
 
 namespace saltus {
 
@@ -94,7 +95,8 @@ bool finished(const StudyOutcome& o) {
 /// The convergence part of a study definition (see convergence_definition).
 struct DefinitionSettings {
   unsigned seed = 1;
-  int samples = 0, knots_per_interval = 1, max_iterations = 0;
+  int samples = 0, max_iterations = 0;
+  nlohmann::json knots_per_interval;  ///< a number, or "auto"
 };
 
 DefinitionSettings read_settings(const nlohmann::json& definition) {
@@ -102,9 +104,9 @@ DefinitionSettings read_settings(const nlohmann::json& definition) {
   DefinitionSettings s;
   s.seed = static_cast<unsigned>(root.at("seed").as_int());
   const JsonNode optimize = root.at("optimize");
-  s.samples = optimize.at("nlp").at("samples").as_int();
-  s.knots_per_interval = optimize.at("nlp").at("knots_per_interval").as_int();
-  s.max_iterations = optimize.at("solver").at("max_iterations").as_int();
+  s.samples = optimize.at("samples").as_int();
+  s.knots_per_interval = optimize.at("knots_per_interval").value();
+  s.max_iterations = optimize.at("max_iterations").as_int();
   return s;
 }
 
@@ -227,48 +229,7 @@ nlohmann::json convergence_definition(const std::vector<LabelledMotion>& motions
           {"timing_errors", options.timing_errors},
           {"seed", options.seed},
           {"strict_checkpoints", checkpoints_json(options.strict_checkpoints)},
-          {"optimize", optimize_options_json(options.optimize)}};
-}
-
-CaseRecord convergence_case_record(int index, const StudyOutcome& outcome,
-                                   const std::string& failure) {
-  CaseRecord r;
-  r.index = index;
-  r.name = study_case_label(outcome.study_case);
-  r.kind = CaseKind::kConvergence;
-  r.role = "convergence";
-  r.motion = outcome.study_case.motion;
-  r.failure = failure;
-  r.convergence = outcome;
-  return r;
-}
-
-StudyOutcome unfinished_study_outcome(const StudyCase& study_case, const WorkerExit& exit) {
-  return unfinished_outcome(
-      study_case, exit.kind == WorkerExit::Kind::kTimedOut ? "timed_out" : "crashed", exit.seconds);
-}
-
-StudyJob convergence_study_job(const std::vector<LabelledMotion>& motions,
-                               const ConvergenceStudyOptions& options) {
-  auto shared_motions = std::make_shared<const std::vector<LabelledMotion>>(motions);
-  auto cases =
-      std::make_shared<const std::vector<StudyCase>>(convergence_study_cases(motions, options));
-  StudyJob job;
-  job.study = "convergence";
-  job.definition = convergence_definition(motions, options);
-  for (const StudyCase& c : *cases)
-    job.case_names.push_back(study_case_label(c));
-  job.run_case = [shared_motions, cases, options](int index, const std::string&) {
-    const StudyCase& c = (*cases)[index];
-    const auto motion = std::find_if(shared_motions->begin(), shared_motions->end(),
-                                     [&](const LabelledMotion& m) { return m.label == c.motion; });
-    return convergence_case_record(index, run_study_case(*motion, c, options), "");
-  };
-  job.unfinished_case = [cases](int index, const WorkerExit& exit) {
-    return convergence_case_record(index, unfinished_study_outcome((*cases)[index], exit),
-                                   exit.describe());
-  };
-  return job;
+          {"optimize", result_deciding_settings(options.optimize)}};
 }
 
 nlohmann::json write_convergence_files(const std::string& dir,
@@ -299,18 +260,6 @@ nlohmann::json write_convergence_files(const std::string& dir,
              "# Convergence study\n\n" + convergence_markdown(outcomes));
   write_text((folder / "result.json").string(), result.dump(2) + "\n");
   return result;
-}
-
-nlohmann::json write_convergence_study_outputs(const OutputFolder& folder,
-                                               const nlohmann::json& definition,
-                                               const std::vector<CaseRecord>& records) {
-  std::vector<StudyOutcome> outcomes;
-  for (const CaseRecord& r : records) {
-    if (r.kind != CaseKind::kConvergence)
-      throw InputError(case_record_name(r.index), "/kind", "not a case of a convergence study");
-    outcomes.push_back(r.convergence);
-  }
-  return write_convergence_files(folder.file(""), outcomes, definition);
 }
 
 }  // namespace saltus

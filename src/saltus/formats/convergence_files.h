@@ -1,13 +1,12 @@
 #pragma once
 /// @file
 /// The convergence study's files: DIR/{result.json, convergence.csv, convergence.md} (with
-/// study.json and cases/, formats/study_folder.h), and the study as a StudyJob for the runner.
+/// study.json and cases/, study_folder.h). Running the study: use_cases/convergence_run.h.
 
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
-#include "saltus/formats/output_folder.h"
 #include "saltus/formats/study_folder.h"
 #include "saltus/studies/convergence_study.h"
 
@@ -25,23 +24,10 @@ std::string convergence_csv(const std::vector<StudyOutcome>& outcomes);
 nlohmann::json convergence_definition(const std::vector<LabelledMotion>& motions,
                                       const ConvergenceStudyOptions& options);
 
-/// The study for formats/study_folder.h's runner: one case per convergence_study_cases entry.
-StudyJob convergence_study_job(const std::vector<LabelledMotion>& motions,
-                               const ConvergenceStudyOptions& options);
-
-/// The case record of one outcome; `failure` says why its process did not finish ("" if it did).
-CaseRecord convergence_case_record(int index, const StudyOutcome& outcome,
-                                   const std::string& failure);
-
 /// DIR/{result.json, convergence.csv, convergence.md} from the outcomes in case order and the
 /// study's definition (convergence_definition). Returns result.json.
 nlohmann::json write_convergence_files(const std::string& dir,
                                        const std::vector<StudyOutcome>& outcomes,
                                        const nlohmann::json& definition);
-
-/// A whole convergence study's outputs from its records, in case order.
-nlohmann::json write_convergence_study_outputs(const OutputFolder& folder,
-                                               const nlohmann::json& definition,
-                                               const std::vector<CaseRecord>& records);
 
 }  // namespace saltus

@@ -92,9 +92,8 @@ std::string mass_study_markdown(const MassStudyResult& study) {
   return out.str();
 }
 
-nlohmann::json write_mass_outputs(const std::string& out_dir, const MotionFile& file,
-                                  const MassStudyResult& study, const MassStudyOptions& options) {
-  OutputFolder folder(out_dir);
+nlohmann::json mass_result_json(const MotionFile& file, const MassStudyResult& study,
+                                const MassStudyOptions& options) {
   nlohmann::json result;
   result["format"] = "saltus-study/1";
   result["study"] = "mass";
@@ -112,14 +111,6 @@ nlohmann::json write_mass_outputs(const std::string& out_dir, const MotionFile& 
                               {"iterations", run.result.solve.iterations},
                               {"avg_force_before_N", run.result.before.metrics.avg_root_force},
                               {"avg_force_after_N", run.result.after.metrics.avg_root_force}});
-  write_text(folder.file("mass.csv"), mass_study_csv(study));
-  write_text(folder.file("mass.md"),
-             "# Mass study: " + file.motion.name + "\n\n" + mass_study_markdown(study));
-  write_text(folder.file("model.json"), body_model_to_json(study.runs[0].model).dump(2) + "\n");
-  write_text(folder.file("model_scaled.json"),
-             body_model_to_json(study.runs[1].model).dump(2) + "\n");
-  write_text(folder.file("result.json"), result.dump(2) + "\n");
-  folder.commit();
   return result;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 /// @file
-/// The mass study's files: DIR/{result.json, mass.csv, mass.md, model.json, model_scaled.json},
-/// written all or nothing (OutputFolder), and result.json and mass.csv read back.
+/// The mass study's files: DIR/{result.json, mass.csv, mass.md, model.json, model_scaled.json}
+/// (written by use_cases/result_folders.h), and result.json and mass.csv read back.
 
 #include <array>
 #include <nlohmann/json.hpp>
@@ -43,9 +43,9 @@ MassCsv parse_mass_csv(const CsvTable& table, const std::string& file);
 /// scaled/given.
 std::string mass_study_markdown(const MassStudyResult& study);
 
-/// DIR/{result.json, mass.csv, mass.md, model.json (given), model_scaled.json}.
-nlohmann::json write_mass_outputs(const std::string& out_dir, const MotionFile& file,
-                                  const MassStudyResult& study, const MassStudyOptions& options);
+/// The mass study's result.json: the motion, the scaling, and per run its solve summary.
+nlohmann::json mass_result_json(const MotionFile& file, const MassStudyResult& study,
+                                const MassStudyOptions& options);
 
 /// A `saltus study mass` folder read back: result.json's summary and mass.csv.
 struct MassStudyFolder {

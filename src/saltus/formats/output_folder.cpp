@@ -64,7 +64,7 @@ const std::vector<ResultKind>& result_kinds() {
       // saltus paper: report.md, one result folder per run (M1/, mass/, convergence/, ...) and
       // the app's figures (saltus-gui --export-figures DIR/figures ...).
       {"paper", "saltus-report/1", "", {}, {"result.json", "report.md"}, {"figures"}, true},
-      // saltus import (formats/capture_files).
+      // saltus import (use_cases/captures).
       {"import",
        "saltus-result/1",
        "status",

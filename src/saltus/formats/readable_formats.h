@@ -15,7 +15,7 @@ namespace saltus {
 enum class ReadableKind {
   kModel,            ///< body model, "saltus-model/1" (formats/model_file.h)
   kMotion,           ///< keyframed motion, "saltus-motion/1" (formats/motion_file.h)
-  kCapture,          ///< BVH motion capture (formats/capture_files.h: load_motion_or_capture)
+  kCapture,          ///< BVH motion capture (use_cases/captures.h: load_motion_or_capture)
   kMassStudyFolder,  ///< `saltus study mass` output folder (formats/mass_files.h)
   kResultFolder,     ///< `saltus evaluate`/`simulate`/`optimize` output folder (result_json.h)
 };

@@ -42,44 +42,6 @@ nlohmann::json vector_json(const Eigen::Vector3d& v) {
   return {v.x(), v.y(), v.z()};
 }
 
-nlohmann::json option_json(const OptionValue& value) {
-  return std::visit([](const auto& v) { return nlohmann::json(v); }, value);
-}
-
-/// Composes the file in memory, then writes it (write_text: the message of a failed write names
-/// DIR/file and the system's reason, e.g. a full disk).
-void write_text_file(const std::string& path, const std::string& /*what*/,
-                     const std::function<void(std::ostream&)>& body) {
-  std::ostringstream out;
-  body(out);
-  write_text(path, out.str());
-}
-
-void write_common_files(OutputFolder& folder, const MotionFile& file,
-                        const nlohmann::json& result) {
-  write_text_file(folder.file("model.json"), "the model",
-                  [&](std::ostream& o) { o << body_model_to_json(file.model).dump(2) << '\n'; });
-  write_text_file(folder.file("result.json"), "the result",
-                  [&](std::ostream& o) { o << result.dump(2) << '\n'; });
-}
-
-void write_csv(OutputFolder& folder, const std::string& name, const BodyModel& model,
-               const std::vector<SampleRecord>& samples) {
-  write_text_file(folder.file(name), "the trajectory",
-                  [&](std::ostream& o) { write_trajectory_csv(o, model, samples); });
-}
-
-nlohmann::json write_outputs(const std::string& out_dir, const MotionFile& file,
-                             const std::vector<SampleRecord>& samples, nlohmann::json result) {
-  require_finite(result, file.path);
-  require_finite(samples, file.path, "trajectory.csv");
-  OutputFolder folder(out_dir);
-  write_csv(folder, "trajectory.csv", file.model, samples);
-  write_common_files(folder, file, result);
-  folder.commit();
-  return result;
-}
-
 /// The fields every result shares.
 ResultJson common_result(const MotionFile& file, ResultJson::Kind kind, const std::string& status,
                          int knots_per_interval) {
@@ -227,7 +189,7 @@ nlohmann::json result_to_json(const ResultJson& r) {
   j["flight_time_s"] = r.flight_time_s;
   j["keyframes"] = r.keyframes;
   for (const auto& [key, value] : r.options)
-    j[key] = option_json(value);
+    j[key] = option_value_json(value);
   const auto& o = r.optimization;
   j["before"] = metrics_json(r.before, o ? o->optimizer_objective_before : std::nullopt);
   j["keyframe_times_before"] = r.keyframe_times_before;
@@ -438,8 +400,7 @@ ResultJson optimization_result(const MotionFile& file, const OptimizationResult&
   o.restarts = result.solve.restarts;
   o.tolerances = file.motion.tolerances;
   ResultJson::Optimization::Resolution resolution;
-  resolution.automatic =
-      options.automatic_resolution && options.nlp.formulation == Formulation::kRelaxed;
+  resolution.automatic = options.resolution_is_automatic();
   resolution.subdivisions = result.subdivisions;
   if (!result.after.trajectory.rotations.empty())
     resolution.knots = result.after.trajectory.rotations.front().knots();
@@ -462,45 +423,9 @@ nlohmann::json simulation_result_json(const MotionFile& file, const SimulationRe
   return result_to_json(simulation_result(file, s, options));
 }
 
-nlohmann::json write_evaluation_outputs(const std::string& out_dir, const MotionFile& file,
-                                        const MotionEvaluation& evaluation,
-                                        const EvaluateOptions& options) {
-  return write_outputs(out_dir, file, evaluation.samples,
-                       evaluation_result_json(file, evaluation, options));
-}
-
-nlohmann::json write_simulation_outputs(const std::string& out_dir, const MotionFile& file,
-                                        const SimulationResult& simulation,
-                                        const EvaluateOptions& options) {
-  return write_outputs(out_dir, file, simulation.samples,
-                       simulation_result_json(file, simulation, options));
-}
-
 nlohmann::json optimization_result_json(const MotionFile& file, const OptimizationResult& result,
                                         const OptimizeOptions& options) {
   return result_to_json(optimization_result(file, result, options));
-}
-
-nlohmann::json write_optimization_outputs(const std::string& out_dir, const MotionFile& file,
-                                          const OptimizationResult& result,
-                                          const OptimizeOptions& options) {
-  const nlohmann::json r = optimization_result_json(file, result, options);
-  require_finite(r, file.path);
-  require_finite(result.before.samples, file.path, "trajectory_before.csv");
-  require_finite(result.after.samples, file.path, "trajectory_after.csv");
-  OutputFolder folder(out_dir);
-  write_csv(folder, "trajectory_before.csv", file.model, result.before.samples);
-  write_csv(folder, "trajectory_after.csv", file.model, result.after.samples);
-  // The optimised motion names the model copy written beside it, so the folder is
-  // self-contained: `saltus evaluate DIR/optimized.motion.json` works wherever DIR goes.
-  Motion optimized = result.optimized_motion;
-  optimized.model = "model.json";
-  write_text_file(
-      folder.file("optimized.motion.json"), "the optimised motion",
-      [&](std::ostream& o) { o << motion_to_json(optimized, file.model).dump(2) << '\n'; });
-  write_common_files(folder, file, r);
-  folder.commit();
-  return r;
 }
 
 std::string folder_name(const std::string& dir) {

@@ -7,9 +7,20 @@
 #include <optional>
 #include <string>
 
-#include "saltus/formats/study_folder.h"
+#include "saltus/formats/study_case_file.h"
 
 namespace saltus {
+
+/// Where a running study stands, after each case.
+struct StudyProgress {
+  int done = 0;            ///< cases of the shard with a record, those kept from before included
+  int total = 0;           ///< cases of the shard
+  int failed = 0;          ///< records whose process crashed or timed out
+  int unsolved = 0;        ///< records that finished without solving
+  double elapsed_s = 0.0;  ///< since this run started
+  double eta_s = -1.0;     ///< remaining time at this run's pace; −1 before the first case
+  const CaseRecord* last = nullptr;  ///< the record just written
+};
 
 /// "  [ 12/40] 0 failed, 3 not solved, 0:41 elapsed, ETA 1:02  M1 strict ε=10, …: solved, 37 it.,
 /// 2.1 N" (the counts padded to the width of the total).

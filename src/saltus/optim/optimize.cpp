@@ -9,6 +9,7 @@
 #include "saltus/dynamics/inverse_dynamics.h"
 #include "saltus/evaluation/flight_state.h"
 #include "saltus/motion/interpolate.h"
+#include "saltus/optim/option_table.h"
 
 namespace saltus {
 
@@ -173,8 +174,7 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
   if (n_key < 2) throw std::invalid_argument("a motion needs at least two keyframes");
   const AutomaticResolution rules;
   OptimizationResult result;
-  const bool automatic =
-      options.automatic_resolution && options.nlp.formulation == Formulation::kRelaxed;
+  const bool automatic = options.resolution_is_automatic();
   std::vector<int> subdivisions =
       automatic ? first_subdivisions(motion, model, rules) : options.nlp.spans_per_interval(n_key);
 
@@ -206,11 +206,9 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
                             evaluate_options(options.nlp.samples, std::vector<int>(n_key - 1, 1)))
           : start_evaluation;
 
-  MotionNlpOptions nlp_options = options.nlp;
-  // The keyframe prior is a tie-break among near-physical motions, which only knots fine
-  // enough to reach near zero give: on a resolution the user fixed (the paper's K = 1 above
-  // all) the motion must use its tolerances to cut the force, and the prior would fight it.
-  if (!automatic) nlp_options.keyframe_weight = 0.0;
+  // Options that do not apply (the keyframe prior on a fixed resolution) take the value the
+  // option table declares for that case.
+  MotionNlpOptions nlp_options = effective_options(options).nlp;
   SolverOptions solver = options.solver;
   for (const Keyframe& k : motion.keyframes)
     nlp_options.given_keyframe_times.push_back(k.time);

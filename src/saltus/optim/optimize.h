@@ -25,6 +25,12 @@ struct OptimizeOptions {
   /// nlp.knots_per_interval (or nlp.subdivisions). Relaxed model only: the strict model's
   /// objective is the keyframe distance, not the residual.
   bool automatic_resolution = true;
+
+  /// The automatic resolution acts: asked for, and the relaxed model. The one statement of
+  /// that rule; the option table, the writers and the app ask here.
+  bool resolution_is_automatic() const {
+    return automatic_resolution && nlp.formulation == Formulation::kRelaxed;
+  }
 };
 
 /// The rules of the automatic resolution, deterministic: the same input, the same knots.
@@ -59,6 +65,11 @@ struct AutomaticResolution {
 inline void use_paper_protocol(OptimizeOptions& options) {
   options.automatic_resolution = false;
   options.nlp.keyframe_weight = 0.0;
+}
+inline OptimizeOptions paper_protocol_options() {
+  OptimizeOptions options;
+  use_paper_protocol(options);
+  return options;
 }
 
 /// See OptimizationResult::keyframe_time_spreads.

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
+#include <utility>
 
 #include "saltus/base/constants.h"
 
@@ -78,6 +80,7 @@ std::vector<OptionSpec> make_table() {
   record(o, "epsilon", ResultRecord::kOptimization);
   bind(o, nlp, &MotionNlpOptions::epsilon);
   o.applies = [](const OptimizeOptions& x) { return x.nlp.formulation == Formulation::kStrict; };
+  o.applies_when = "with --formulation strict";
   t.push_back(o);
 
   o = entry("optimize_timing", "--no-timing", "Optimise keyframe times", "",
@@ -145,6 +148,7 @@ std::vector<OptionSpec> make_table() {
   range(o, OptionKind::kReal, 0.0, kUnbounded);
   bind(o, nlp, &MotionNlpOptions::max_time_shift);
   o.applies = [](const OptimizeOptions& x) { return x.nlp.optimize_timing; };
+  o.applies_when = "unless --no-timing";
   t.push_back(o);
 
   o = entry("min_time_gap", "--min-time-gap", "Min keyframe gap", "s",
@@ -153,6 +157,7 @@ std::vector<OptionSpec> make_table() {
   range(o, OptionKind::kReal, 0.0, kUnbounded, true);
   bind(o, nlp, &MotionNlpOptions::min_time_gap);
   o.applies = [](const OptimizeOptions& x) { return x.nlp.optimize_timing; };
+  o.applies_when = "unless --no-timing";
   t.push_back(o);
 
   o = entry("regularization", "--regularization", "Regularization", "N²/rad²",
@@ -165,14 +170,17 @@ std::vector<OptionSpec> make_table() {
   o = entry("keyframe_weight", "--keyframe-weight", "Keyframe prior", "N²",
             "weight of the prior that prefers, among motions of nearly the same root force, the "
             "one closest to the keyframes (their distance in units of the tolerances): it is "
-            "what brings keyframe times back; with --knots-per-interval auto only (a fixed "
-            "resolution keeps the paper's objective); 0 = none");
+            "what brings keyframe times back (a fixed resolution keeps the paper's objective, "
+            "so it is 0 there); 0 = none");
   range(o, OptionKind::kReal, 0.0, kUnbounded);
   record(o, "keyframe_weight", ResultRecord::kOptimization);
   bind(o, nlp, &MotionNlpOptions::keyframe_weight);
-  o.applies = [](const OptimizeOptions& x) {
-    return x.nlp.formulation == Formulation::kRelaxed && x.automatic_resolution;
-  };
+  // The prior is a tie-break among near-physical motions, which only knots fine enough to reach
+  // near zero give: on a resolution the user fixed (the paper's K = 1 above all) the motion
+  // must use its tolerances to cut the force, and the prior would fight it.
+  o.applies = [](const OptimizeOptions& x) { return x.resolution_is_automatic(); };
+  o.applies_when = "with --knots-per-interval auto and --formulation relaxed";
+  o.value_when_inactive = 0.0;
   t.push_back(o);
 
   o = entry("max_joint_turn", "--max-joint-turn", "Max joint turn", "°",
@@ -413,6 +421,99 @@ OptimizeOptions with_evaluation_options(const EvaluateOptions& options) {
   o.nlp.samples = options.samples;
   o.nlp.knots_per_interval = options.interpolation.knots_per_interval;
   return o;
+}
+
+nlohmann::json option_value_json(const OptionValue& value) {
+  return std::visit([](const auto& v) { return nlohmann::json(v); }, value);
+}
+
+std::string option_description(const OptionSpec& spec, OptionUse runs) {
+  std::string out = spec.help;
+  if (spec.kind != OptionKind::kSwitch && spec.kind != OptionKind::kChoice)
+    out += " (" + (spec.unit.empty() ? std::string() : spec.unit + "; ") +
+           option_range_text(spec, runs) + ")";
+  if (!spec.applies_when.empty()) out += ". Applies " + spec.applies_when + ".";
+  return out;
+}
+
+OptimizeOptions effective_options(const OptimizeOptions& options) {
+  OptimizeOptions effective = options;
+  for (const OptionSpec& spec : option_table())
+    if (spec.applies && spec.value_when_inactive && !spec.applies(options))
+      spec.write(effective, *spec.value_when_inactive);
+  return effective;
+}
+
+namespace {
+
+/// Converts to any member type: T{AnyField{}, ...} compiles for at most T's member count.
+struct AnyField {
+  template <class T>
+  operator T() const;
+};
+
+template <class T, class Indices, class = void>
+struct BraceInitializable : std::false_type {};
+template <class T, std::size_t... I>
+struct BraceInitializable<T, std::index_sequence<I...>,
+                          std::void_t<decltype(T{(void(I), AnyField{})...})>> : std::true_type {};
+
+/// The number of members of the aggregate T.
+template <class T, std::size_t N = 0>
+constexpr std::size_t member_count() {
+  if constexpr (BraceInitializable<T, std::make_index_sequence<N + 1>>::value)
+    return member_count<T, N + 1>();
+  else
+    return N;
+}
+
+// Every member of the option structs is either an option of the table or one of the internal
+// settings below (or, like verbose and derivative_test_file, decides only what is logged). A new
+// member changes these counts: declare it in the table or below, then update the count.
+static_assert(member_count<MotionNlpOptions>() == 18, "new MotionNlpOptions member: declare it");
+static_assert(member_count<DampingRule>() == 7, "new DampingRule member: declare it");
+static_assert(member_count<SolverOptions>() == 11, "new SolverOptions member: declare it");
+static_assert(member_count<OptimizeOptions>() == 4, "new OptimizeOptions member: declare it");
+
+/// The settings that decide a result but have no flag: the objective's quadrature, the
+/// Hessian's damping, Ipopt's acceptable exit and restarts, the knot refinement.
+nlohmann::json internal_settings(const OptimizeOptions& o) {
+  const MotionNlpOptions& n = o.nlp;
+  const SolverOptions& s = o.solver;
+  nlohmann::json checkpoints = nlohmann::json::array();
+  for (const FeasibilityCheckpoint& c : s.feasibility_checkpoints)
+    checkpoints.push_back({c.iterations, c.violation});
+  return {{"subdivisions", n.subdivisions},
+          {"quadrature_nodes", n.quadrature_nodes},
+          {"quadrature_spacing", n.quadrature_spacing},
+          {"given_keyframe_times", n.given_keyframe_times},
+          {"damping",
+           {{"initial", n.damping.initial},
+            {"minimum", n.damping.minimum},
+            {"maximum", n.damping.maximum},
+            {"shrink", n.damping.shrink},
+            {"grow", n.damping.grow},
+            {"good_ratio", n.damping.good_ratio},
+            {"poor_ratio", n.damping.poor_ratio}}},
+          {"adapt_damping", n.adapt_damping},
+          {"joint_turn_weight", n.joint_turn_weight},
+          {"acceptable_iterations", s.acceptable_iterations},
+          {"acceptable_constraint_violation", s.acceptable_constraint_violation},
+          {"stall_iterations", s.stall_iterations},
+          {"max_restarts", s.max_restarts},
+          {"feasibility_checkpoints", checkpoints},
+          {"warm_start", s.warm_start},
+          {"refine_when_keyframes_missed", o.refine_when_keyframes_missed}};
+}
+
+}  // namespace
+
+nlohmann::json result_deciding_settings(const OptimizeOptions& options) {
+  nlohmann::json settings = nlohmann::json::object();
+  for (const OptionSpec& spec : option_table())
+    settings[spec.name] = option_value_json(spec.read(options));
+  settings["internal"] = internal_settings(options);
+  return settings;
 }
 
 std::vector<std::pair<std::string, OptionValue>> recorded_options(const OptimizeOptions& options,

@@ -8,6 +8,8 @@
 /// (MotionNlpOptions, SolverOptions, kDefaultSamples), read through each entry: stated once.
 
 #include <functional>
+#include <nlohmann/json.hpp>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -63,8 +65,13 @@ struct OptionSpec {
   std::function<OptionValue(const OptimizeOptions&)> read;
   std::function<void(OptimizeOptions&, const OptionValue&)> write;
   /// Whether the option acts, given the others (ε: the strict model only); null = always.
-  /// Forms disable it when it does not, and result.json leaves it out.
+  /// Forms disable it when it does not, result.json leaves it out, and a run uses
+  /// `value_when_inactive` instead of its value (effective_options).
   std::function<bool(const OptimizeOptions&)> applies;
+  /// When `applies` holds, in words for --help and the app ("with --formulation strict").
+  std::string applies_when;
+  /// The value a run uses when the option does not apply; empty: its value is simply unused.
+  std::optional<OptionValue> value_when_inactive;
   /// What result.json records when that differs from `read`; null = `read`.
   std::function<OptionValue(const OptimizeOptions&)> recorded_value;
 
@@ -103,10 +110,24 @@ OptionValue parse_option_value(const OptionSpec& spec, const std::string& text,
 /// Returns the value as stored (an integer given for a real option becomes a double).
 OptionValue checked_option_value(const OptionSpec& spec, const OptionValue& value,
                                  OptionUse runs = OptionUse::kOptimization);
+/// The value as JSON: true/false, a number or a word (result.json, study definitions).
+nlohmann::json option_value_json(const OptionValue& value);
 /// Text that parse_option_value reads back to the same value (reals in the shortest such form).
 std::string option_value_text(const OptionValue& value);
 /// The allowed values, e.g. "2-100000", "> 0", ">= 0", "relaxed|strict", "1-64 or auto".
 std::string option_range_text(const OptionSpec& spec, OptionUse runs = OptionUse::kOptimization);
+/// What --help and the app's tooltips say of an option: its help, unit and range, and when it
+/// applies ("... (N²; >= 0). Applies with --knots-per-interval auto and --formulation relaxed.").
+std::string option_description(const OptionSpec& spec, OptionUse runs = OptionUse::kOptimization);
+
+/// `options` as a run uses them: every option that does not apply set to its
+/// OptionSpec::value_when_inactive. optimize_motion runs on these.
+OptimizeOptions effective_options(const OptimizeOptions& options);
+
+/// Every setting that decides an optimisation's result, as JSON: the table's options by name and
+/// the internal settings no flag reaches (quadrature, damping, solver safeguards). A study's
+/// definition holds it, so shards and resumed runs with other settings never merge.
+nlohmann::json result_deciding_settings(const OptimizeOptions& options);
 
 /// A value for every option of the table, each at its default until set. The values of an
 /// optimisation, or (OptionUse::kEvaluation) of `saltus evaluate` and `simulate`: their

@@ -62,7 +62,8 @@ struct ConvergenceStudyOptions {
   unsigned seed = 1;  ///< of the keyframe-time disturbance (same seed, same study)
   /// Feasibility checkpoints of the strict runs (empty: each runs to its iteration limit).
   std::vector<FeasibilityCheckpoint> strict_checkpoints = kStrictStudyCheckpoints;
-  OptimizeOptions optimize;  ///< everything else (samples, iterations, K, ...)
+  /// Everything else (samples, iterations, K, ...): the paper's protocol unless changed.
+  OptimizeOptions optimize = paper_protocol_options();
 };
 
 /// The motion with each interior keyframe time moved by +amplitude or −amplitude (signs drawn

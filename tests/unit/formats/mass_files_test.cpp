@@ -15,6 +15,7 @@
 #include "saltus/base/input_error.h"
 #include "saltus/formats/model_file.h"
 #include "saltus/formats/trajectory_csv.h"
+#include "saltus/use_cases/result_folders.h"
 #include "support/cli_runner.h"
 #include "support/mass_study_fixture.h"
 #include "support/test_motions.h"

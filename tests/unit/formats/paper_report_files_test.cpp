@@ -1,46 +1,63 @@
-// Loading a paper folder (formats/paper_report_files.h): the bundled examples give Table 1's seven
-// skills in label order, each with the paper's keyframe count, and the dive; a folder that is not
-// one is refused by name. (The whole report: tests/paper/paper_report_test.cpp.)
+// The reproduction report's files (formats/paper_report_files.h) from a report assembled by
+// hand: report.md carries our Table 1 row beside the paper's, result.json the same figures, a
+// failed run shows as a dash, never as a number. (The whole report:
+// tests/paper/paper_report_test.cpp.)
 
 #include "saltus/formats/paper_report_files.h"
 
 #include <gtest/gtest.h>
 
-#include <filesystem>
-
-#include "saltus/base/input_error.h"
-#include "saltus/studies/paper_table1.h"
+#include "saltus/formats/convergence_files.h"
+#include "saltus/optim/option_table.h"
 #include "support/cli_runner.h"
 
 namespace saltus {
 namespace {
 
-TEST(LoadPaperMotions, FindsTheSevenSkillsInOrderAndTheDive) {
-  const PaperMotions motions = load_paper_motions(std::string(SALTUS_EXAMPLES_DIR) + "/motions");
-  ASSERT_EQ(motions.skills.size(), 7u);
-  for (std::size_t i = 0; i < 7; ++i) {
-    const LabelledMotion& m = motions.skills[i];
-    EXPECT_EQ(m.label, "M" + std::to_string(i + 1));
-    EXPECT_EQ(static_cast<int>(m.file.motion.keyframes.size()), paper_table1(m.label)->keyframes)
-        << m.label;
-  }
-  ASSERT_FALSE(motions.dives.empty());
-  for (const LabelledMotion& m : motions.dives)
-    EXPECT_EQ(m.label.rfind("dive", 0), 0u) << m.label;
+RunSummary a_run(const std::string& status, double after) {
+  RunSummary r;
+  r.motion_name = "M1 straight back somersault";
+  r.keyframes = 5;
+  r.status = status;
+  r.solved = status == "solved";
+  r.iterations = 31;
+  r.seconds = 0.4;
+  r.variables = 297;
+  r.constraints = 84;
+  r.objective_before = 600;
+  r.objective_after = 6 * after * after;
+  r.avg_force_before = 10;
+  r.avg_force_after = after;
+  return r;
 }
 
-TEST(LoadPaperMotions, RefusesAFolderWithoutSkills) {
+nlohmann::json a_definition() {
+  OptimizeOptions optimize;
+  use_paper_protocol(optimize);
+  return {{"quick", true},
+          {"optimize", result_deciding_settings(optimize)},
+          {"convergence", convergence_definition({}, ConvergenceStudyOptions{})}};
+}
+
+TEST(PaperReportFiles, TheReportAndResultJsonCarryTheSameFigures) {
   test::TempDir dir;
-  std::filesystem::copy_file(
-      std::string(SALTUS_EXAMPLES_DIR) + "/motions/dive-5m-front-one-and-a-half-twists.motion.json",
-      dir / "dive-5m.motion.json");
-  try {
-    load_paper_motions(dir.path().string());
-    FAIL() << "a folder with a dive only is no paper folder";
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.file(), dir.path().string());
-  }
-  EXPECT_THROW(load_paper_motions(dir / "missing"), InputError);
+  PaperReport report;
+  report.skills.push_back({"M1", a_run("solved", 0.0123), std::nullopt});
+  report.skills.push_back({"M2", a_run("crashed", 0.0), std::nullopt});
+  report.mass_markdown = "No M7 among the motions.\n";
+  OutputFolder folder(dir / "report");
+  const nlohmann::json result = write_paper_report_files(folder, a_definition(), report, 1);
+  folder.commit();
+  const std::string md = test::read_text(dir / "report/report.md");
+  EXPECT_NE(md.find("| M1 | 5 | 297 | 84 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("0.0123"), std::string::npos);
+  EXPECT_NE(md.find("| M2 | 5 | – | – |"), std::string::npos) << md;
+  EXPECT_NE(md.find("**Quick run**"), std::string::npos);
+  ASSERT_EQ(result["table1"].size(), 2u);
+  EXPECT_DOUBLE_EQ(result["table1"][0]["avg_force_after_N"].get<double>(), 0.0123);
+  EXPECT_TRUE(result["table1"][1]["avg_force_after_N"].is_null());
+  EXPECT_EQ(result["failed_cases"], 1);
+  EXPECT_EQ(test::read_json(dir / "report/result.json"), result);
 }
 
 }  // namespace

@@ -19,6 +19,7 @@
 #include "saltus/base/input_error.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/formats/trajectory_csv.h"
+#include "saltus/use_cases/result_folders.h"
 #include "support/cli_runner.h"
 #include "support/temp_path.h"
 #include "support/test_motions.h"

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <map>
 #include <random>
 #include <set>
@@ -336,6 +337,84 @@ TEST(OptionTable, ResultJsonRecordsWhatItAlwaysRecorded) {
     EXPECT_EQ(evaluation[0].first, "samples");
     EXPECT_EQ(evaluation[0].second, v.get("samples"));
   }
+}
+
+TEST(OptionTable, WhenAnOptionAppliesIsItsEntrysAndRunsUseTheDeclaredInactiveValue) {
+  // The keyframe prior acts with the automatic resolution of the relaxed model only: the entry
+  // says so, --help and the app's tooltip show it, and a run on fixed knots takes 0.
+  const OptionSpec& prior = option_spec("keyframe_weight");
+  EXPECT_NE(option_description(prior).find("Applies with --knots-per-interval auto"),
+            std::string::npos)
+      << option_description(prior);
+  EXPECT_NE(option_description(option_spec("epsilon")).find("Applies with --formulation strict"),
+            std::string::npos);
+  EXPECT_EQ(option_description(option_spec("samples")).find("Applies"), std::string::npos);
+
+  OptionValues v;
+  v.set("keyframe_weight", 7.0);
+  EXPECT_TRUE(v.applies("keyframe_weight"));
+  EXPECT_EQ(effective_options(v.optimize_options()).nlp.keyframe_weight, 7.0);
+  v.set("knots_per_interval", 2);
+  EXPECT_FALSE(v.applies("keyframe_weight"));
+  EXPECT_EQ(effective_options(v.optimize_options()).nlp.keyframe_weight, 0.0);
+  v.set("knots_per_interval", std::string("auto"));
+  v.set("formulation", std::string("strict"));
+  EXPECT_FALSE(v.optimize_options().resolution_is_automatic());
+  EXPECT_EQ(effective_options(v.optimize_options()).nlp.keyframe_weight, 0.0);
+  // An option that does not apply but declares no inactive value keeps its value (unused).
+  v.set("formulation", std::string("relaxed"));
+  v.set("epsilon", 3.0);
+  EXPECT_EQ(effective_options(v.optimize_options()).nlp.epsilon, 3.0);
+}
+
+TEST(OptionTable, TheSettingsThatDecideAResultNameEveryOptionAndEveryInternalSetting) {
+  const OptimizeOptions defaults;
+  const nlohmann::json base = result_deciding_settings(defaults);
+  for (const OptionSpec& spec : option_table())
+    EXPECT_TRUE(base.contains(spec.name)) << spec.name;
+  // Every option and every internal setting changes the record.
+  std::mt19937 rng(11);
+  for (const OptionSpec& spec : option_table()) {
+    OptionValues v;
+    for (const OptionValue& value : sample_values(spec, 5)) {
+      v.set(spec.name, value);
+      if (v.get(spec.name) != OptionValues().get(spec.name)) break;
+    }
+    EXPECT_NE(result_deciding_settings(v.optimize_options()), base) << spec.name;
+  }
+  std::vector<std::function<void(OptimizeOptions&)>> internal = {
+      [](OptimizeOptions& o) {
+        o.nlp.subdivisions = {2, 3};
+      },
+      [](OptimizeOptions& o) { o.nlp.quadrature_nodes += 1; },
+      [](OptimizeOptions& o) { o.nlp.quadrature_spacing *= 2; },
+      [](OptimizeOptions& o) {
+        o.nlp.given_keyframe_times = {0.0, 1.0};
+      },
+      [](OptimizeOptions& o) { o.nlp.damping.initial *= 2; },
+      [](OptimizeOptions& o) { o.nlp.damping.poor_ratio *= 0.5; },
+      [](OptimizeOptions& o) { o.nlp.adapt_damping = !o.nlp.adapt_damping; },
+      [](OptimizeOptions& o) { o.nlp.joint_turn_weight += 1; },
+      [](OptimizeOptions& o) { o.solver.acceptable_iterations += 1; },
+      [](OptimizeOptions& o) { o.solver.acceptable_constraint_violation *= 2; },
+      [](OptimizeOptions& o) { o.solver.stall_iterations += 1; },
+      [](OptimizeOptions& o) { o.solver.max_restarts += 1; },
+      [](OptimizeOptions& o) {
+        o.solver.feasibility_checkpoints.push_back({10, 1.0});
+      },
+      [](OptimizeOptions& o) { o.solver.warm_start = !o.solver.warm_start; },
+      [](OptimizeOptions& o) { o.refine_when_keyframes_missed = !o.refine_when_keyframes_missed; },
+  };
+  for (std::size_t i = 0; i < internal.size(); ++i) {
+    OptimizeOptions o;
+    internal[i](o);
+    EXPECT_NE(result_deciding_settings(o), base) << "internal setting " << i;
+  }
+  // What decides only the log does not.
+  OptimizeOptions logged;
+  logged.solver.verbose = true;
+  logged.solver.derivative_test_file = "check.txt";
+  EXPECT_EQ(result_deciding_settings(logged), base);
 }
 
 }  // namespace

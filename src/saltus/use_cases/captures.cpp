@@ -1,4 +1,4 @@
-#include "saltus/formats/capture_files.h"
+#include "saltus/use_cases/captures.h"
 
 #include <algorithm>
 #include <cctype>

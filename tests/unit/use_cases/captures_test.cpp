@@ -1,9 +1,9 @@
-// Capture files in and out (formats/capture_files.h): a motion exported as BVH and imported again
+// Captures in and out (use_cases/captures.h): a motion exported as BVH and imported again
 // gives back its joint rotations frame by frame (Saltus's own skeleton keeps its heading), the
 // import's folder holds the five files and its motion files load; which paths are captures, the
 // export's default rate, and a folder with nothing to export.
 
-#include "saltus/formats/capture_files.h"
+#include "saltus/use_cases/captures.h"
 
 #include <gtest/gtest.h>
 

@@ -1,0 +1,102 @@
+#include "saltus/use_cases/result_folders.h"
+
+#include <functional>
+#include <sstream>
+
+#include "saltus/formats/finite_check.h"
+#include "saltus/formats/mass_files.h"
+#include "saltus/formats/model_file.h"
+#include "saltus/formats/output_folder.h"
+#include "saltus/formats/result_json.h"
+#include "saltus/formats/trajectory_csv.h"
+
+namespace saltus {
+
+namespace {
+
+/// Composes a file in memory, then writes it (write_text: the message of a failed write names
+/// DIR/file and the system's reason, e.g. a full disk).
+void write_composed(const std::string& path, const std::function<void(std::ostream&)>& body) {
+  std::ostringstream out;
+  body(out);
+  write_text(path, out.str());
+}
+
+void write_common_files(OutputFolder& folder, const MotionFile& file,
+                        const nlohmann::json& result) {
+  write_composed(folder.file("model.json"),
+                 [&](std::ostream& o) { o << body_model_to_json(file.model).dump(2) << '\n'; });
+  write_composed(folder.file("result.json"), [&](std::ostream& o) { o << result.dump(2) << '\n'; });
+}
+
+void write_csv(OutputFolder& folder, const std::string& name, const BodyModel& model,
+               const std::vector<SampleRecord>& samples) {
+  write_composed(folder.file(name),
+                 [&](std::ostream& o) { write_trajectory_csv(o, model, samples); });
+}
+
+nlohmann::json write_outputs(const std::string& out_dir, const MotionFile& file,
+                             const std::vector<SampleRecord>& samples, nlohmann::json result) {
+  require_finite(result, file.path);
+  require_finite(samples, file.path, "trajectory.csv");
+  OutputFolder folder(out_dir);
+  write_csv(folder, "trajectory.csv", file.model, samples);
+  write_common_files(folder, file, result);
+  folder.commit();
+  return result;
+}
+
+}  // namespace
+
+nlohmann::json write_evaluation_outputs(const std::string& out_dir, const MotionFile& file,
+                                        const MotionEvaluation& evaluation,
+                                        const EvaluateOptions& options) {
+  return write_outputs(out_dir, file, evaluation.samples,
+                       evaluation_result_json(file, evaluation, options));
+}
+
+nlohmann::json write_simulation_outputs(const std::string& out_dir, const MotionFile& file,
+                                        const SimulationResult& simulation,
+                                        const EvaluateOptions& options) {
+  return write_outputs(out_dir, file, simulation.samples,
+                       simulation_result_json(file, simulation, options));
+}
+
+nlohmann::json write_optimization_outputs(const std::string& out_dir, const MotionFile& file,
+                                          const OptimizationResult& result,
+                                          const OptimizeOptions& options) {
+  const nlohmann::json r = optimization_result_json(file, result, options);
+  require_finite(r, file.path);
+  require_finite(result.before.samples, file.path, "trajectory_before.csv");
+  require_finite(result.after.samples, file.path, "trajectory_after.csv");
+  OutputFolder folder(out_dir);
+  write_csv(folder, "trajectory_before.csv", file.model, result.before.samples);
+  write_csv(folder, "trajectory_after.csv", file.model, result.after.samples);
+  // The optimised motion names the model copy written beside it, so the folder is
+  // self-contained: `saltus evaluate DIR/optimized.motion.json` works wherever DIR goes.
+  Motion optimized = result.optimized_motion;
+  optimized.model = "model.json";
+  write_composed(folder.file("optimized.motion.json"), [&](std::ostream& o) {
+    o << motion_to_json(optimized, file.model).dump(2) << '\n';
+  });
+  write_common_files(folder, file, r);
+  folder.commit();
+  return r;
+}
+
+nlohmann::json write_mass_outputs(const std::string& out_dir, const MotionFile& file,
+                                  const MassStudyResult& study, const MassStudyOptions& options) {
+  const nlohmann::json result = mass_result_json(file, study, options);
+  OutputFolder folder(out_dir);
+  write_text(folder.file("mass.csv"), mass_study_csv(study));
+  write_text(folder.file("mass.md"),
+             "# Mass study: " + file.motion.name + "\n\n" + mass_study_markdown(study));
+  write_text(folder.file("model.json"), body_model_to_json(study.runs[0].model).dump(2) + "\n");
+  write_text(folder.file("model_scaled.json"),
+             body_model_to_json(study.runs[1].model).dump(2) + "\n");
+  write_text(folder.file("result.json"), result.dump(2) + "\n");
+  folder.commit();
+  return result;
+}
+
+}  // namespace saltus

@@ -1,0 +1,26 @@
+#include "saltus/use_cases/study_kinds.h"
+
+#include "saltus/base/input_error.h"
+#include "saltus/use_cases/convergence_run.h"
+#include "saltus/use_cases/paper_report_run.h"
+
+namespace saltus {
+
+const std::vector<StudyKind>& study_kinds() {
+  static const std::vector<StudyKind> kinds = {
+      {kConvergenceStudy, write_convergence_study_outputs},
+      {kPaperReportStudy, write_paper_report_outputs},
+  };
+  return kinds;
+}
+
+const StudyKind& study_kind(const std::string& name, const std::string& file) {
+  for (const StudyKind& kind : study_kinds())
+    if (kind.name == name) return kind;
+  std::string known;
+  for (const StudyKind& kind : study_kinds())
+    known += (known.empty() ? "" : ", ") + kind.name;
+  throw InputError(file, "/study", "unknown study \"" + name + "\" (known: " + known + ")");
+}
+
+}  // namespace saltus
