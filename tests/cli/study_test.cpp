@@ -120,6 +120,16 @@ TEST(CliStudy, SameFilesWhateverTheJobsAndTheShards) {
                               (dir / "s2") + " --out " + (dir / "m") + " --quiet");
   ASSERT_EQ(merged.status, 0) << merged.output;
   EXPECT_EQ(joined(test::study_folder_differences(dir / "one", dir / "m")), "");
+  // A finished study, a merged one and a shard are Saltus's own: run again into them, they are
+  // replaced by the new run's files.
+  const auto again = run_cli(small_study(dir / "one") + " --quiet");
+  ASSERT_EQ(again.status, 0) << again.output;
+  const auto merged_again = run_cli("study merge " + (dir / "s3") + " " + (dir / "s1") + " " +
+                                    (dir / "s2") + " --out " + (dir / "m") + " --quiet");
+  ASSERT_EQ(merged_again.status, 0) << merged_again.output;
+  EXPECT_EQ(joined(test::study_folder_differences(dir / "one", dir / "m")), "");
+  const auto shard_again = run_cli(small_study(dir / "s2") + " --shard 2/3 --quiet");
+  ASSERT_EQ(shard_again.status, 0) << shard_again.output;
   // And the differences check itself sees a real change.
   test::write_text(dir / "two/convergence.csv",
                    test::read_text(dir / "two/convergence.csv") + "M9,relaxed\n");

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <mutex>
 
 #include "saltus/base/input_error.h"
@@ -31,12 +32,14 @@ const std::vector<ResultKind>& result_kinds() {
        {"evaluated"},
        {"result.json", "trajectory.csv", "model.json"},
        {},
+       {},
        false},
       {"simulate",
        "saltus-result/1",
        "status",
        {"simulated"},
        {"result.json", "trajectory.csv", "model.json"},
+       {},
        {},
        false},
       {"optimize",
@@ -46,13 +49,15 @@ const std::vector<ResultKind>& result_kinds() {
        {"result.json", "trajectory_before.csv", "trajectory_after.csv", "model.json",
         "optimized.motion.json"},
        {},
+       {},
        false},
       {"study convergence",
        "saltus-study/1",
        "study",
        {"convergence"},
-       {"result.json", "convergence.csv", "convergence.md"},
+       {"result.json", "convergence.csv", "convergence.md", "study.json"},
        {},
+       {"cases"},
        false},
       {"study mass",
        "saltus-study/1",
@@ -60,10 +65,27 @@ const std::vector<ResultKind>& result_kinds() {
        {"mass"},
        {"result.json", "mass.csv", "mass.md", "model.json", "model_scaled.json"},
        {},
+       {},
        false},
       // saltus paper: report.md, one result folder per run (M1/, mass/, convergence/, ...) and
       // the app's figures (saltus-gui --export-figures DIR/figures ...).
-      {"paper", "saltus-report/1", "", {}, {"result.json", "report.md"}, {"figures"}, true},
+      {"paper",
+       "saltus-report/1",
+       "",
+       {},
+       {"result.json", "report.md", "study.json"},
+       {"figures"},
+       {"cases"},
+       true},
+      // A shard of a study (--shard I/N): its records and, for the report, its runs' folders.
+      {"study shard",
+       "saltus-study-shard/1",
+       "",
+       {},
+       {"result.json", "study.json"},
+       {},
+       {"cases"},
+       true},
       // saltus import (use_cases/captures).
       {"import",
        "saltus-result/1",
@@ -71,6 +93,7 @@ const std::vector<ResultKind>& result_kinds() {
        {"imported"},
        {"result.json", "capture.motion.json", "keyframes.motion.json", "trajectory.csv",
         "model.json"},
+       {},
        {},
        false},
   };
@@ -128,6 +151,22 @@ const ResultKind* kind_of(const nlohmann::json& result) {
   return fallback;
 }
 
+/// Whether `folder` holds regular files only, each passing `wanted`.
+bool holds_only(const fs::path& folder, const std::function<bool(const fs::path&)>& wanted) {
+  std::error_code ec;
+  bool only = true;
+  for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec))
+    only = only && fs::is_regular_file(it->symlink_status(ec)) && wanted(it->path());
+  return only && !ec;
+}
+
+/// NNNN.json, at least four digits: a study's case record (study_case_file.h).
+bool is_case_record_name(const fs::path& file) {
+  const std::string name = file.filename().string();
+  if (name.size() < 9 || file.extension() != ".json") return false;
+  return std::all_of(name.begin(), name.end() - 5, [](char c) { return c >= '0' && c <= '9'; });
+}
+
 std::string foreign_content_at(const fs::path& folder, int depth) {
   std::error_code ec;
   // An empty folder holds nothing to lose; inside a result, every sub-folder must be a result.
@@ -155,15 +194,16 @@ std::string foreign_content_at(const fs::path& folder, int depth) {
     if (fs::is_regular_file(status) &&
         std::find(kind->files.begin(), kind->files.end(), name) != kind->files.end())
       continue;
-    if (fs::is_directory(status) &&
-        std::find(kind->image_folders.begin(), kind->image_folders.end(), name) !=
-            kind->image_folders.end()) {
-      bool images_only = true;
-      for (fs::directory_iterator it(entry, ec), end; !ec && it != end; it.increment(ec))
-        images_only = images_only && fs::is_regular_file(it->symlink_status(ec)) &&
-                      it->path().extension() == ".png";
-      if (images_only && !ec) continue;
+    const auto listed = [&](const std::vector<std::string>& names) {
+      return std::find(names.begin(), names.end(), name) != names.end();
+    };
+    if (fs::is_directory(status) && listed(kind->image_folders)) {
+      if (holds_only(entry, [](const fs::path& f) { return f.extension() == ".png"; })) continue;
       return "its " + printable(name) + "/ holds files other than the PNG figures Saltus writes";
+    }
+    if (fs::is_directory(status) && listed(kind->record_folders)) {
+      if (holds_only(entry, is_case_record_name)) continue;
+      return "its " + printable(name) + "/ holds files other than the case records Saltus writes";
     }
     if (fs::is_directory(status) && kind->holds_results && depth < kMaxResultDepth) {
       const std::string inner = foreign_content_at(entry, depth + 1);

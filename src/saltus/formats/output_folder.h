@@ -40,6 +40,8 @@ struct ResultKind {
   std::vector<std::string> files;  ///< regular files Saltus writes there
   /// Sub-folders that may hold only PNG images (the paper report's figures/).
   std::vector<std::string> image_folders;
+  /// Sub-folders that may hold only a study's case records, NNNN.json (a study's cases/).
+  std::vector<std::string> record_folders;
   /// Any other sub-folder must itself be a Saltus result (the paper report's M1/, mass/, ...).
   bool holds_results = false;
 };

@@ -109,6 +109,10 @@ void make_result(const fs::path& folder, const ResultKind& kind) {
     fs::create_directories(folder / images);
     test::write_text((folder / images / "M1_root_force.png").string(), "png");
   }
+  for (const std::string& records : kind.record_folders) {
+    fs::create_directories(folder / records);
+    test::write_text((folder / records / "0007.json").string(), "{}");
+  }
 }
 
 TEST(OutputFolder, EveryKindOfResultIsRecognisedAndAnyOtherFileMakesItForeign) {
@@ -116,8 +120,8 @@ TEST(OutputFolder, EveryKindOfResultIsRecognisedAndAnyOtherFileMakesItForeign) {
   std::set<std::string> names;
   for (const ResultKind& kind : result_kinds())
     names.insert(kind.name);
-  for (const char* expected :
-       {"evaluate", "simulate", "optimize", "study convergence", "study mass", "paper", "import"})
+  for (const char* expected : {"evaluate", "simulate", "optimize", "study convergence",
+                               "study mass", "paper", "study shard", "import"})
     EXPECT_EQ(names.count(expected), 1u) << expected;
 
   for (const ResultKind& kind : result_kinds()) {
@@ -159,6 +163,11 @@ TEST(OutputFolder, WhatIsNotASaltusResult) {
   test::write_text((report / "figures/notes.txt").string(), "x");
   EXPECT_NE(foreign_content(report.string()).find("figures/"), std::string::npos);
   fs::remove(report / "figures/notes.txt");
+  // Its case records' folder holds records only.
+  test::write_text((report / "cases/notes.json").string(), "x");
+  EXPECT_NE(foreign_content(report.string()).find("cases/"), std::string::npos);
+  fs::remove(report / "cases/notes.json");
+  EXPECT_EQ(foreign_content(report.string()), "");
   fs::create_directories(report / "M1");
   test::write_text((report / "M1/thesis.tex").string(), "x");
   EXPECT_NE(foreign_content(report.string()).find("M1/"), std::string::npos);
