@@ -12,7 +12,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
 
 # Debian packages the build and the tests need (see docs/dependencies.md).
-packages=(build-essential cmake pkg-config clang-format
+packages=(build-essential cmake ninja-build pkg-config clang-format
           libeigen3-dev coinor-libipopt-dev libopenblas0-serial nlohmann-json3-dev libcli11-dev
           libgtest-dev libbenchmark-dev
           libvtk9-qt-dev libvtk9-dev qtbase5-dev xvfb xauth libgl1-mesa-dri ffmpeg)
@@ -44,11 +44,11 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-stage "configure and build (Release)"
-cmake --preset release >/dev/null
-cmake --build --preset release -j"$(nproc)"
-
 if [ "$mode" = demo ]; then
+  # The demo builds what it runs: the command line and the app, not the tests.
+  stage "configure and build saltus and saltus-gui (Release)"
+  cmake --preset release >/dev/null
+  cmake --build --preset release -j"$(nproc)" --target saltus_cli saltus_gui
   motion=examples/motions/M1-straight-back-somersault.motion.json
   echo "== saltus evaluate $motion"
   build/release/bin/saltus evaluate "$motion" --out out/M1-evaluate
@@ -60,8 +60,13 @@ if [ "$mode" = demo ]; then
     echo "== saltus optimize $motion"
     build/release/bin/saltus optimize "$motion" --out "out/$name" 2>/dev/null
   done
+  echo "-- $((SECONDS - stage_start)) s (total $SECONDS s)"
   exit 0
 fi
+
+stage "configure and build everything (Release)"
+cmake --preset release >/dev/null
+cmake --build --preset release -j"$(nproc)"
 
 stage "format check (clang-format, .clang-format)"
 mapfile -t sources < <(git ls-files '*.h' '*.cpp' 2>/dev/null || find src tests -name '*.h' -o -name '*.cpp')

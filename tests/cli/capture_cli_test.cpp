@@ -19,6 +19,7 @@ namespace saltus {
 namespace {
 
 namespace fs = std::filesystem;
+using test::m1_path;
 using test::read_json;
 using test::read_text;
 using test::run_cli;
@@ -27,10 +28,6 @@ using test::write_text;
 
 std::string bundled_capture(const std::string& name) {
   return std::string(SALTUS_CAPTURES_DIR) + "/" + name;
-}
-
-std::string m1_path() {
-  return std::string(SALTUS_EXAMPLES_DIR) + "/motions/M1-straight-back-somersault.motion.json";
 }
 
 std::set<std::string> folder_contents(const fs::path& folder) {

@@ -25,12 +25,8 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::names_in;
+using test::read_json;
 using json = nlohmann::json;
-
-json read_json(const std::string& path) {
-  std::ifstream in(path);
-  return json::parse(in);
-}
 
 /// One mutant: the two files' text and what was done to them.
 struct Mutant {

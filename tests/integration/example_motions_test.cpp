@@ -116,7 +116,7 @@ TEST_P(ExampleMotion, FreeFlightLandsOnTheLastKeyframe) {
   }
 }
 
-std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
+std::string example_test_name(const ::testing::TestParamInfo<std::string>& info) {
   std::string name = fs::path(info.param).filename().string();
   name = name.substr(0, name.find('.'));
   for (char& c : name) {
@@ -126,7 +126,7 @@ std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Bundled, ExampleMotion, ::testing::ValuesIn(example_motion_files()),
-                         test_name);
+                         example_test_name);
 
 }  // namespace
 }  // namespace saltus

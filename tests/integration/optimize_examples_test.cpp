@@ -70,7 +70,7 @@ TEST_P(BundledMotion, RelaxedModelSolvesBeatsThePaperAndRefinesBelowOneNewton) {
 }
 
 /// Test name from the file name: "M1-straight-back-somersault" -> "M1_straight_back_somersault".
-std::string test_name(const ::testing::TestParamInfo<std::string>& param) {
+std::string optimize_test_name(const ::testing::TestParamInfo<std::string>& param) {
   std::string name = std::filesystem::path(param.param).stem().stem().string();
   for (char& c : name)
     if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
@@ -78,7 +78,7 @@ std::string test_name(const ::testing::TestParamInfo<std::string>& param) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, BundledMotion, ::testing::ValuesIn(bundled_motions()),
-                         test_name);
+                         optimize_test_name);
 
 }  // namespace
 }  // namespace saltus

@@ -470,15 +470,15 @@ TEST(BodyModelValidation, MissingMass) {
 }
 
 /// A file in the system's temporary folder, removed when the test ends.
-class TempFile {
+class ModelTempFile {
  public:
-  explicit TempFile(const std::string& stem)
+  explicit ModelTempFile(const std::string& stem)
       : path_((std::filesystem::temp_directory_path() /
                (stem + "-" + std::to_string(std::random_device{}()) + ".json"))
                   .string()) {}
-  ~TempFile() { std::remove(path_.c_str()); }
-  TempFile(const TempFile&) = delete;
-  TempFile& operator=(const TempFile&) = delete;
+  ~ModelTempFile() { std::remove(path_.c_str()); }
+  ModelTempFile(const ModelTempFile&) = delete;
+  ModelTempFile& operator=(const ModelTempFile&) = delete;
   const std::string& path() const { return path_; }
   void write(const std::string& text) const { std::ofstream(path_) << text; }
 
@@ -487,7 +487,7 @@ class TempFile {
 };
 
 TEST(BodyModelFile, InvalidJsonSyntaxNamesTheFile) {
-  const TempFile file("saltus-body-model-syntax");
+  const ModelTempFile file("saltus-body-model-syntax");
   std::string text = good_document().dump(2);
   text.insert(text.find("\"segments\""), ",");  // a stray comma
   file.write(text);
@@ -503,7 +503,7 @@ TEST(BodyModelFile, InvalidJsonSyntaxNamesTheFile) {
 }
 
 TEST(BodyModelFile, ValidationErrorsFromAFileNameThePath) {
-  const TempFile file("saltus-body-model-mass");
+  const ModelTempFile file("saltus-body-model-mass");
   nlohmann::json doc = good_document();
   doc["segments"][3]["mass"] = -2;
   file.write(doc.dump());

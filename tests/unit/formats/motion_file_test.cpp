@@ -53,7 +53,7 @@ BodyModel tiny_model() {
 }
 
 /// A valid document using both rotation forms, root positions and a spline.
-nlohmann::json good_document() {
+nlohmann::json good_motion_document() {
   return nlohmann::json::parse(R"({
     "format": "saltus-motion/1",
     "name": "test tuck",
@@ -122,21 +122,21 @@ bool same_rotation(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b, dou
 }
 
 /// A file in the test temp folder, removed when the object goes away.
-class TempFile {
+class MotionTempFile {
  public:
-  TempFile(const std::string& stem, const std::string& contents) {
+  MotionTempFile(const std::string& stem, const std::string& contents) {
     std::random_device rd;
     path_ = (fs::path(::testing::TempDir()) / (stem + "-" + std::to_string(rd()) + ".motion.json"))
                 .string();
     std::ofstream out(path_);
     out << contents;
   }
-  ~TempFile() {
+  ~MotionTempFile() {
     std::error_code ignored;
     fs::remove(path_, ignored);
   }
-  TempFile(const TempFile&) = delete;
-  TempFile& operator=(const TempFile&) = delete;
+  MotionTempFile(const MotionTempFile&) = delete;
+  MotionTempFile& operator=(const MotionTempFile&) = delete;
   const std::string& path() const { return path_; }
 
  private:
@@ -148,7 +148,7 @@ class TempFile {
 
 TEST(Motion, GoodDocumentParses) {
   const BodyModel model = tiny_model();
-  const Motion m = parse_motion(good_document(), kFile, model);
+  const Motion m = parse_motion(good_motion_document(), kFile, model);
   EXPECT_EQ(m.name, "test tuck");
   EXPECT_EQ(m.model, "tiny-4");
   EXPECT_TRUE(m.takeoff.com_position.isApprox(Eigen::Vector3d(0, 1, 0)));
@@ -195,7 +195,7 @@ TEST(Motion, GoodDocumentParses) {
 
 TEST(Motion, EulerXyz90IsQuarterTurnAboutX) {
   const BodyModel model = tiny_model();
-  const Motion m = parse_motion(good_document(), kFile, model);
+  const Motion m = parse_motion(good_motion_document(), kFile, model);
   const Eigen::Quaterniond root = m.keyframes[1].rotations[model.joint_index("root")];
   const Eigen::Quaterniond expected(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()));
   EXPECT_TRUE(same_rotation(root, expected, 1e-12))
@@ -209,7 +209,7 @@ TEST(Motion, EulerXyz90IsQuarterTurnAboutX) {
 }
 
 TEST(Motion, ToleranceDefaultsAndNameDefault) {
-  nlohmann::json doc = good_document();
+  nlohmann::json doc = good_motion_document();
   doc.erase("tolerances");
   doc.erase("name");
   doc.erase("spline");
@@ -229,7 +229,7 @@ TEST(Motion, ToleranceDefaultsAndNameDefault) {
 }
 
 TEST(Motion, QuaternionSlightlyOffUnitIsNormalised) {
-  nlohmann::json doc = good_document();
+  nlohmann::json doc = good_motion_document();
   const double scale = 1.0 + 5e-4;
   doc["keyframes"][1]["rotations"]["lumbar"] = {0.6 * scale, 0.8 * scale, 0.0, 0.0};
   doc["spline"]["joints"]["hip_l"][2] = {scale, 0.0, 0.0, 0.0};
@@ -245,7 +245,7 @@ TEST(Motion, QuaternionSlightlyOffUnitIsNormalised) {
 
 TEST(Motion, RoundTripReproducesMotion) {
   const BodyModel model = tiny_model();
-  const Motion a = parse_motion(good_document(), kFile, model);
+  const Motion a = parse_motion(good_motion_document(), kFile, model);
   const nlohmann::json written = motion_to_json(a, model);
   // Through text as well, as a file would be.
   const Motion b = parse_motion(nlohmann::json::parse(written.dump(2)), kFile, model);
@@ -291,7 +291,7 @@ TEST(Motion, RoundTripReproducesMotion) {
 }
 
 TEST(Motion, RoundTripWithoutOptionalParts) {
-  nlohmann::json doc = good_document();
+  nlohmann::json doc = good_motion_document();
   doc.erase("spline");
   doc["takeoff"].erase("angular_momentum");
   doc["keyframes"][1].erase("root_position");
@@ -306,8 +306,8 @@ TEST(Motion, RoundTripWithoutOptionalParts) {
 }
 
 TEST(Motion, ReadModelField) {
-  EXPECT_EQ(read_motion_model_field(good_document(), kFile), "tiny-4");
-  nlohmann::json doc = good_document();
+  EXPECT_EQ(read_motion_model_field(good_motion_document(), kFile), "tiny-4");
+  nlohmann::json doc = good_motion_document();
   doc.erase("model");
   expect_input_error([&] { read_motion_model_field(doc, kFile); }, kFile, "/", "\"model\"");
   doc["model"] = 3;
@@ -381,134 +381,134 @@ TEST(Motion, ModelReferenceForASavedMotionFindsTheSameModel) {
 // Bad input: one change to the good document each.
 
 TEST(MotionErrors, WrongFormatTag) {
-  nlohmann::json doc = good_document();
+  nlohmann::json doc = good_motion_document();
   doc["format"] = "saltus-motion/2";
   expect_parse_error(doc, "/format", "saltus-motion/1");
 }
 
 TEST(MotionErrors, MissingTakeoff) {
-  nlohmann::json doc = good_document();
+  nlohmann::json doc = good_motion_document();
   doc.erase("takeoff");
   expect_parse_error(doc, "/", "missing field \"takeoff\"");
 }
 
 TEST(MotionErrors, ComVelocityWrongLength) {
-  nlohmann::json doc = good_document();
+  nlohmann::json doc = good_motion_document();
   doc["takeoff"]["com_velocity"] = {0.15, 10.0};
   expect_parse_error(doc, "/takeoff/com_velocity", "expected 3 numbers, found 2");
 }
 
 TEST(MotionErrors, StringInsteadOfNumber) {
-  nlohmann::json doc = good_document();
+  nlohmann::json doc = good_motion_document();
   doc["keyframes"][1]["time"] = "0.5";
   expect_parse_error(doc, "/keyframes/1/time", "expected a number, found string");
 }
 
 TEST(MotionErrors, KeyframeTimesUnsorted) {
-  nlohmann::json doc = good_document();
+  nlohmann::json doc = good_motion_document();
   doc["keyframes"][1]["time"] = 1.5;
   expect_parse_error(doc, "/keyframes/2/time",
                      "keyframe 2 time 1 is not after keyframe 1 time 1.5");
 }
 
 TEST(MotionErrors, KeyframeTimesEqual) {
-  nlohmann::json doc = good_document();
+  nlohmann::json doc = good_motion_document();
   doc["keyframes"][2]["time"] = 0.47;
   expect_parse_error(doc, "/keyframes/2/time", "strictly increase");
 }
 
 TEST(MotionErrors, FirstTimeNotZero) {
-  nlohmann::json doc = good_document();
+  nlohmann::json doc = good_motion_document();
   doc["keyframes"][0]["time"] = 0.1;
   expect_parse_error(doc, "/keyframes/0/time", "must be 0");
 }
 
 TEST(MotionErrors, FirstTimeWithinPrintingNoiseIsZero) {
-  nlohmann::json doc = good_document();
+  nlohmann::json doc = good_motion_document();
   doc["keyframes"][0]["time"] = 1e-13;
   const Motion m = parse_motion(doc, kFile, tiny_model());
   EXPECT_EQ(m.keyframes[0].time, 0.0);
 }
 
 TEST(MotionErrors, FewerThanTwoKeyframes) {
-  nlohmann::json doc = good_document();
+  nlohmann::json doc = good_motion_document();
   doc["keyframes"].erase(1);
   doc["keyframes"].erase(1);
   expect_parse_error(doc, "/keyframes", "at least 2 keyframes");
 }
 
 TEST(MotionErrors, MissingJoint) {
-  nlohmann::json doc = good_document();
+  nlohmann::json doc = good_motion_document();
   doc["keyframes"][2]["rotations"].erase("knee_l");
   expect_parse_error(doc, "/keyframes/2/rotations", "missing joint \"knee_l\"");
 }
 
 TEST(MotionErrors, UnknownJoint) {
-  nlohmann::json doc = good_document();
+  nlohmann::json doc = good_motion_document();
   doc["keyframes"][1]["rotations"]["elbow_l"] = {1, 0, 0, 0};
   expect_parse_error(doc, "/keyframes/1/rotations/elbow_l", "unknown joint \"elbow_l\"");
 }
 
 TEST(MotionErrors, QuaternionNormTooFarFromOne) {
-  nlohmann::json doc = good_document();
+  nlohmann::json doc = good_motion_document();
   doc["keyframes"][2]["rotations"]["hip_l"] = {1.2, 0, 0, 0};
   expect_parse_error(doc, "/keyframes/2/rotations/hip_l", "quaternion norm 1.2 is not 1");
 }
 
 TEST(MotionErrors, QuaternionNormJustOutsideTolerance) {
-  nlohmann::json doc = good_document();
+  nlohmann::json doc = good_motion_document();
   doc["keyframes"][2]["rotations"]["hip_l"] = {1.0 + 2e-3, 0, 0, 0};
   expect_parse_error(doc, "/keyframes/2/rotations/hip_l", "tolerance 1e-3");
 }
 
 TEST(MotionErrors, QuaternionWithThreeNumbers) {
-  nlohmann::json doc = good_document();
+  nlohmann::json doc = good_motion_document();
   doc["keyframes"][0]["rotations"]["lumbar"] = {1, 0, 0};
   expect_parse_error(doc, "/keyframes/0/rotations/lumbar", "expected 4 numbers, found 3");
 }
 
 TEST(MotionErrors, BadEulerOrder) {
-  nlohmann::json doc = good_document();
+  nlohmann::json doc = good_motion_document();
   doc["keyframes"][1]["rotations"]["root"]["order"] = "XXY";
   expect_parse_error(doc, "/keyframes/1/rotations/root/order", "invalid Euler order \"XXY\"");
 }
 
 TEST(MotionErrors, NegativeTolerance) {
-  nlohmann::json doc = good_document();
+  nlohmann::json doc = good_motion_document();
   doc["tolerances"]["translation_m"] = -0.1;
   expect_parse_error(doc, "/tolerances/translation_m", "must be > 0");
 }
 
 TEST(MotionErrors, UnknownTakeoffField) {
-  nlohmann::json doc = good_document();
+  nlohmann::json doc = good_motion_document();
   doc["takeoff"]["angular_momentun"] = {0, 0, 0};
   expect_parse_error(doc, "/takeoff/angular_momentun", "unknown field");
 }
 
 TEST(MotionErrors, SplineWrongControlCount) {
-  nlohmann::json doc = good_document();
+  nlohmann::json doc = good_motion_document();
   doc["spline"]["joints"]["lumbar"].erase(4);
   expect_parse_error(doc, "/spline/joints/lumbar", "expected 5 control points");
-  doc = good_document();
+  doc = good_motion_document();
   doc["spline"]["root_translation"].push_back({0, 0, 0});
   expect_parse_error(doc, "/spline/root_translation", "expected 5 control points");
 }
 
 TEST(MotionErrors, SplineDecreasingKnots) {
-  nlohmann::json doc = good_document();
+  nlohmann::json doc = good_motion_document();
   doc["spline"]["knots"][4] = -0.5;
   expect_parse_error(doc, "/spline/knots/4", "must not decrease");
 }
 
 TEST(MotionErrors, InvalidJsonSyntax) {
-  const TempFile file("syntax", R"({ "format": "saltus-motion/1", "model": "tiny-4", })");
+  const MotionTempFile file("syntax", R"({ "format": "saltus-motion/1", "model": "tiny-4", })");
   expect_input_error([&] { load_motion_file(file.path()); }, file.path(), "", "invalid JSON");
 }
 
 TEST(MotionErrors, MissingModelFile) {
-  nlohmann::json doc = good_document();
+  nlohmann::json doc = good_motion_document();
   doc["model"] = "no-such-model-4f1c";
-  const TempFile file("missing-model", doc.dump());
+  const MotionTempFile file("missing-model", doc.dump());
   expect_input_error([&] { load_motion_file(file.path()); }, file.path(), "/model",
                      "model \"no-such-model-4f1c\" not found");
 }

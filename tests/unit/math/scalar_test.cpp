@@ -11,13 +11,13 @@
 namespace saltus {
 namespace {
 
-using AdFixed = Eigen::AutoDiffScalar<Eigen::Vector2d>;
+using AdTwo = Eigen::AutoDiffScalar<Eigen::Vector2d>;
 using AdDynamic = Eigen::AutoDiffScalar<Eigen::VectorXd>;
 
 TEST(Scalar, ValueOfAndConstantStripAndCarryNoDerivative) {
   EXPECT_EQ(value_of(2.5), 2.5);
-  EXPECT_EQ(value_of(AdFixed(2.5, 2, 0)), 2.5);
-  const AdFixed c = constant<AdFixed>(4.0);
+  EXPECT_EQ(value_of(AdTwo(2.5, 2, 0)), 2.5);
+  const AdTwo c = constant<AdTwo>(4.0);
   EXPECT_EQ(c.value(), 4.0);
   EXPECT_TRUE(c.derivatives().size() == 0 || c.derivatives().isZero());
 }
@@ -27,7 +27,7 @@ TEST(Atan2SameType, ValueAndDerivativesMatchInEveryQuadrant) {
   for (double y : {0.7, -0.7, 1e-3, -2.0}) {
     for (double x : {1.3, -1.3, -1e-3, 0.4}) {
       EXPECT_EQ(atan2_same_type(y, x), std::atan2(y, x));
-      const AdFixed a = atan2_same_type(AdFixed(y, 2, 0), AdFixed(x, 2, 1));
+      const AdTwo a = atan2_same_type(AdTwo(y, 2, 0), AdTwo(x, 2, 1));
       EXPECT_EQ(a.value(), std::atan2(y, x));
       const double dy = (std::atan2(y + h, x) - std::atan2(y - h, x)) / (2 * h);
       const double dx = (std::atan2(y, x + h) - std::atan2(y, x - h)) / (2 * h);

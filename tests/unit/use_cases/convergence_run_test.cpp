@@ -13,7 +13,7 @@
 namespace saltus {
 namespace {
 
-LabelledMotion m1() {
+LabelledMotion labelled_m1() {
   return {"M1", load_motion_file(std::string(SALTUS_EXAMPLES_DIR) +
                                  "/motions/M1-straight-back-somersault.motion.json")};
 }
@@ -27,7 +27,7 @@ ConvergenceStudyOptions small_design() {
 }
 
 TEST(ConvergenceRun, OneNamedCasePerStudyCaseAndTheStudysDefinition) {
-  const std::vector<LabelledMotion> motions = {m1()};
+  const std::vector<LabelledMotion> motions = {labelled_m1()};
   const StudyJob job = convergence_study_job(motions, small_design());
   const std::vector<StudyCase> cases = convergence_study_cases(motions, small_design());
   ASSERT_EQ(job.case_names.size(), cases.size());
@@ -39,7 +39,7 @@ TEST(ConvergenceRun, OneNamedCasePerStudyCaseAndTheStudysDefinition) {
 }
 
 TEST(ConvergenceRun, ACaseWhoseProcessDiedIsRecordedAsSuch) {
-  const StudyJob job = convergence_study_job({m1()}, small_design());
+  const StudyJob job = convergence_study_job({labelled_m1()}, small_design());
   WorkerExit exit;
   exit.kind = WorkerExit::Kind::kTimedOut;
   exit.seconds = 600;

@@ -26,13 +26,13 @@ std::set<std::string> names_in_folder(const fs::path& dir) {
   return names;
 }
 
-MotionFile m1() {
+MotionFile m1_file() {
   return load_motion_file(std::string(SALTUS_EXAMPLES_DIR) +
                           "/motions/M1-straight-back-somersault.motion.json");
 }
 
 TEST(ResultFolders, EachVerbWritesExactlyItsFiles) {
-  const MotionFile file = m1();
+  const MotionFile file = m1_file();
   EvaluateOptions options;
   options.samples = 21;
   test::TempDir dir;
@@ -63,7 +63,7 @@ TEST(ResultFolders, EachVerbWritesExactlyItsFiles) {
 }
 
 TEST(ResultFolders, ANonFiniteNumberWritesNothing) {
-  const MotionFile file = m1();
+  const MotionFile file = m1_file();
   EvaluateOptions options;
   options.samples = 11;
   MotionEvaluation e = evaluate_motion(file.motion, file.model, options);
