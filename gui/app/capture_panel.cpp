@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "app/qt_text.h"
 #include "core/capture_keyframes.h"
 #include "core/document.h"
 #include "saltus/evaluation/force_metrics.h"
@@ -25,10 +26,6 @@ namespace {
 constexpr int kStripHeight = 46;
 constexpr int kMaxCellWidth = 28;
 constexpr int kMargin = 6;
-
-QString qstr(const std::string& s) {
-  return QString::fromStdString(s);
-}
 
 }  // namespace
 

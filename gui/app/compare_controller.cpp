@@ -11,6 +11,7 @@
 
 #include "app/compare_window.h"
 #include "app/optimization_runner.h"
+#include "app/qt_text.h"
 #include "app/view_controller.h"
 #include "core/compare.h"
 #include "saltus/base/input_error.h"
@@ -18,13 +19,7 @@
 
 namespace saltus::gui {
 
-namespace {
-
-QString qstr(const std::string& s) {
-  return QString::fromStdString(s);
-}
-
-}  // namespace
+namespace {}  // namespace
 
 CompareController::CompareController(AppContext& context, ViewController& view, QObject* parent)
     : QObject(parent), context_(context), view_(view) {

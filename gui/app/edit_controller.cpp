@@ -13,6 +13,7 @@
 #include "app/keyframe_panel.h"
 #include "app/model_panel.h"
 #include "app/optimize_panel.h"
+#include "app/qt_text.h"
 #include "app/run_controller.h"
 #include "core/capture_keyframes.h"
 #include "core/model_edit.h"
@@ -114,10 +115,6 @@ class OptionsEdit : public QUndoCommand {
   qint64 stamp_;
   bool first_ = true;
 };
-
-QString qstr(const std::string& s) {
-  return QString::fromStdString(s);
-}
 
 }  // namespace
 

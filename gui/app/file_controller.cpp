@@ -22,6 +22,7 @@
 
 #include "app/playback_controller.h"
 #include "app/plots_panel.h"
+#include "app/qt_text.h"
 #include "app/scene_widget.h"
 #include "app/view_controller.h"
 #include "saltus/base/input_error.h"
@@ -37,10 +38,6 @@ namespace saltus::gui {
 namespace {
 
 constexpr int kMaxRecent = 8;
-
-QString qstr(const std::string& s) {
-  return QString::fromStdString(s);
-}
 
 /// The open dialog's filter for `kind` (formats/readable_formats.h).
 QString filter(ReadableKind kind) {

@@ -7,14 +7,11 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QSpinBox>
+#include "app/qt_text.h"
 
 namespace saltus::gui {
 
 namespace {
-
-QString qstr(const std::string& s) {
-  return QString::fromStdString(s);
-}
 
 /// A text field whose text is acceptable when the option table reads it.
 class OptionValidator : public QValidator {

@@ -12,6 +12,7 @@
 #include <filesystem>
 
 #include "app/chart_widget.h"
+#include "app/qt_text.h"
 #include "app/teaching_panel.h"
 #include "core/figures.h"
 #include "core/plot_series.h"
@@ -25,10 +26,6 @@ namespace {
 
 constexpr int kFigureWidth = 1400;
 constexpr int kFigureHeight = 700;
-
-QString qstr(const std::string& s) {
-  return QString::fromStdString(s);
-}
 
 }  // namespace
 

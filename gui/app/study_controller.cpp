@@ -12,15 +12,12 @@
 #include <QProcess>
 #include <QProgressDialog>
 
+#include "app/qt_text.h"
 #include "saltus/formats/study_progress.h"
 
 namespace saltus::gui {
 
 namespace {
-
-QString qstr(const std::string& s) {
-  return QString::fromStdString(s);
-}
 
 QString clock(double seconds) {
   return qstr(clock_text(seconds));

@@ -7,6 +7,7 @@
 
 #include "core/plot_series.h"
 #include "core/run_list.h"
+#include "saltus/base/text_format.h"
 #include "saltus/body/segment_names.h"
 #include "saltus/evaluation/evaluate.h"
 #include "saltus/evaluation/residual_measures.h"
@@ -16,12 +17,6 @@
 namespace saltus::gui {
 
 namespace {
-
-std::string number(const char* format, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, format, value);
-  return buffer;
-}
 
 /// Unique stems, so two folders with the same name write different figures.
 class StemSet {
@@ -150,8 +145,8 @@ std::string folder_settings(const ResultFolder& f) {
   out += " · " + status_text(f.result.status.empty() ? "solved" : f.result.status);
   const int iterations = f.result.optimization ? f.result.optimization->iterations : 0;
   if (iterations > 0) out += " in " + std::to_string(iterations) + " iterations";
-  out += " · average root force " + number("%.3g", f.result.before.avg_root_force) + " → " +
-         number("%.3g", avg_force_after(f)) + " N";
+  out += " · average root force " + format_number("%.3g", f.result.before.avg_root_force) + " → " +
+         format_number("%.3g", avg_force_after(f)) + " N";
   return out;
 }
 

@@ -4,23 +4,18 @@
 #include <cstdio>
 
 #include "saltus/base/constants.h"
+#include "saltus/base/text_format.h"
 #include "saltus/evaluation/force_metrics.h"
 
 namespace saltus::gui {
 
 namespace {
-std::string number(const char* format, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, format, value);
-  return buffer;
-}
-
 /// One time per line, so the table's columns stay narrow.
 std::string times_text(const std::vector<double>& times) {
   std::string out;
   for (std::size_t i = 0; i < times.size(); ++i) {
     if (i) out += "\n";
-    out += number("%.3f", times[i]);
+    out += format_number("%.3f", times[i]);
   }
   return out;
 }
@@ -125,8 +120,8 @@ std::vector<ResultRow> result_table(const OptimizationResult& r, const OptimizeO
   std::vector<ResultRow> rows;
   const bool strict = options.nlp.formulation == Formulation::kStrict;
   rows.push_back({"status", "", r.solve.status});
-  rows.push_back(
-      {"model", "", strict ? "strict, ε = " + number("%g", options.nlp.epsilon) : "relaxed"});
+  rows.push_back({"model", "",
+                  strict ? "strict, ε = " + format_number("%g", options.nlp.epsilon) : "relaxed"});
   rows.push_back({"keyframes", std::to_string(r.before.keyframe_times.size()),
                   std::to_string(r.after.keyframe_times.size())});
   // K before is the one asked for ("auto": the automatic resolution, relaxed model); after, the
@@ -138,35 +133,37 @@ std::vector<ResultRow> result_table(const OptimizationResult& r, const OptimizeO
                   spans_text(r)});
   rows.push_back({"variables", "", std::to_string(r.variables)});
   rows.push_back({"constraints", "", std::to_string(r.constraints)});
-  rows.push_back({"objective J (N²)", number("%.4g", b.objective), number("%.4g", a.objective)});
-  rows.push_back({"average root force √(J/6) (N)", number("%.4g", b.avg_root_force),
-                  number("%.4g", a.avg_root_force)});
   rows.push_back(
-      {"RMS root force (N)", number("%.4g", b.rms_force_N), number("%.4g", a.rms_force_N)});
-  rows.push_back(
-      {"RMS root moment (N·m)", number("%.4g", b.rms_moment_Nm), number("%.4g", a.rms_moment_Nm)});
-  rows.push_back(
-      {"max root force (N)", number("%.4g", b.max_force_N), number("%.4g", a.max_force_N)});
-  rows.push_back(
-      {"max root moment (N·m)", number("%.4g", b.max_moment_Nm), number("%.4g", a.max_moment_Nm)});
+      {"objective J (N²)", format_number("%.4g", b.objective), format_number("%.4g", a.objective)});
+  rows.push_back({"average root force √(J/6) (N)", format_number("%.4g", b.avg_root_force),
+                  format_number("%.4g", a.avg_root_force)});
+  rows.push_back({"RMS root force (N)", format_number("%.4g", b.rms_force_N),
+                  format_number("%.4g", a.rms_force_N)});
+  rows.push_back({"RMS root moment (N·m)", format_number("%.4g", b.rms_moment_Nm),
+                  format_number("%.4g", a.rms_moment_Nm)});
+  rows.push_back({"max root force (N)", format_number("%.4g", b.max_force_N),
+                  format_number("%.4g", a.max_force_N)});
+  rows.push_back({"max root moment (N·m)", format_number("%.4g", b.max_moment_Nm),
+                  format_number("%.4g", a.max_moment_Nm)});
   rows.push_back({"iterations", "", std::to_string(r.solve.iterations)});
   if (r.solve.restarts > 0)
     rows.push_back(
         {"restarts from the best feasible iterate", "", std::to_string(r.solve.restarts)});
-  rows.push_back({"seconds", "", number("%.2f", r.solve.seconds)});
+  rows.push_back({"seconds", "", format_number("%.2f", r.solve.seconds)});
   rows.push_back({"keyframe times (s)", times_text(r.before.keyframe_times),
                   times_text(r.after.keyframe_times)});
   rows.push_back({"max keyframe translation error (m)",
-                  number("%.3g", r.before.keyframe_errors.max_translation_error_m),
-                  number("%.3g", r.after.keyframe_errors.max_translation_error_m)});
+                  format_number("%.3g", r.before.keyframe_errors.max_translation_error_m),
+                  format_number("%.3g", r.after.keyframe_errors.max_translation_error_m)});
   // Light limbs spin between keyframes when nothing holds them (MotionNlpOptions::
   // joint_turn_limit): the largest turn of a joint between two control points shows it.
-  rows.push_back({"largest joint turn between control points (°)",
-                  number("%.0f", largest_control_turn(r.before.trajectory, 1) * kDegreesPerRadian),
-                  number("%.0f", largest_control_turn(r.after.trajectory, 1) * kDegreesPerRadian)});
+  rows.push_back(
+      {"largest joint turn between control points (°)",
+       format_number("%.0f", largest_control_turn(r.before.trajectory, 1) * kDegreesPerRadian),
+       format_number("%.0f", largest_control_turn(r.after.trajectory, 1) * kDegreesPerRadian)});
   rows.push_back({"max keyframe rotation error (°)",
-                  number("%.3g", r.before.keyframe_errors.max_rotation_error_deg),
-                  number("%.3g", r.after.keyframe_errors.max_rotation_error_deg)});
+                  format_number("%.3g", r.before.keyframe_errors.max_rotation_error_deg),
+                  format_number("%.3g", r.after.keyframe_errors.max_rotation_error_deg)});
   return rows;
 }
 

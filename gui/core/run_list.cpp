@@ -4,15 +4,11 @@
 #include <map>
 #include <variant>
 
+#include "saltus/base/text_format.h"
+
 namespace saltus::gui {
 
 namespace {
-
-std::string number(const char* format, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, format, value);
-  return buffer;
-}
 
 double after_force(const RunRecord& run) {
   return run.result->after.metrics.avg_root_force;
@@ -82,14 +78,15 @@ std::string RunList::label(int index) const {
   if (!run.result) return out + "failed: " + run.error;
   const OptimizationResult& r = *run.result;
   out += status_text(r.solve.status) + " after " + std::to_string(r.solve.iterations) +
-         " iterations · " + number("%.3g", r.before.metrics.avg_root_force) + " → " +
-         number("%.3g", r.after.metrics.avg_root_force) + " N · " + settings_summary(run.settings);
+         " iterations · " + format_number("%.3g", r.before.metrics.avg_root_force) + " → " +
+         format_number("%.3g", r.after.metrics.avg_root_force) + " N · " +
+         settings_summary(run.settings);
   return out;
 }
 
 std::string settings_summary(const OptimizeSettings& s) {
   const bool strict = std::get<std::string>(s.get("formulation")) == "strict";
-  std::string out = strict ? "strict, ε = " + number("%g", s.real("epsilon")) : "relaxed";
+  std::string out = strict ? "strict, ε = " + format_number("%g", s.real("epsilon")) : "relaxed";
   out += s.on("optimize_timing") ? ", times free" : ", times fixed";
   const OptionValue knots = s.get("knots_per_interval");
   out += std::holds_alternative<std::string>(knots)
@@ -97,7 +94,7 @@ std::string settings_summary(const OptimizeSettings& s) {
              : ", K = " + std::to_string(std::get<int>(knots));
   out += ", " + std::to_string(s.integer("samples")) + " samples";
   if (s.real("max_joint_turn") > 0)
-    out += ", joint turn ≤ " + number("%g", s.real("max_joint_turn")) + "°";
+    out += ", joint turn ≤ " + format_number("%g", s.real("max_joint_turn")) + "°";
   return out;
 }
 

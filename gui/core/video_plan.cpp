@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "saltus/base/text_format.h"
+
 namespace saltus::gui {
 
 namespace {
@@ -17,12 +19,6 @@ bool ends_with(const std::string& text, const std::string& suffix) {
         suffix[i])
       return false;
   return true;
-}
-
-std::string number(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", value);
-  return buffer;
 }
 
 }  // namespace
@@ -63,7 +59,7 @@ std::vector<std::string> ffmpeg_arguments(VideoFormat format, int width, int hei
       "-f",         "rawvideo",
       "-pix_fmt",   "rgb24",
       "-s",         std::to_string(width) + "x" + std::to_string(height),
-      "-framerate", number(fps),
+      "-framerate", format_number("%g", fps),
       "-i",         "-"};
   if (format == VideoFormat::kMp4) {
     // yuv420p: what every player reads; +faststart: playable while it downloads.
