@@ -27,8 +27,8 @@ struct SampleRecord {
 };
 
 /// Default time grid of every verb: 101 samples, 20.4 ms apart over the paper's 2.04 s flight,
-/// 8 or more per knot span at K = 1. On M1 the optimised J differs from a 201-sample run by
-/// 0.04 %; with many keyframes and --knots-per-interval 3, ask for more.
+/// 8 or more per knot span at K = 1; with many keyframes and --knots-per-interval 3, ask for
+/// more. Measurement: docs/optimizer.md, "Measurement history" (Default samples).
 inline constexpr int kDefaultSamples = 101;
 
 /// Uniform grid of `count` >= 2 times from 0 to duration, both ends included.

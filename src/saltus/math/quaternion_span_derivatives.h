@@ -8,8 +8,8 @@
 ///
 /// Forward-mode AD through the same code did this with a derivative vector on every scalar
 /// operation; the closed form propagates 3 × Cols blocks through the product's recursion with
-/// one 3 × 3 matrix per step (a quarter of M7's run time was that AD). The recursion, with
-/// E_j = exp(v_j), v_j = w_j b_j and dφ_j its right perturbation (E_j(ε) = E_j·exp(dφ_j)):
+/// one 3 × 3 matrix per step (why: docs/optimizer.md, "Measurement history"). The recursion,
+/// with E_j = exp(v_j), v_j = w_j b_j and dφ_j its right perturbation (E_j(ε) = E_j·exp(dφ_j)):
 ///   dφ_j = Jr(2 v_j) dv_j                (Jr: SO(3)'s right Jacobian of the rotation 2 v_j),
 ///   d(Rᵀx) = Rᵀ dx + 2 (Rᵀx) × dφ_j     for R = R(E_j),
 ///   η = R(E₀E₁E₂)ᵀ θ₀ + R(E₁E₂)ᵀ dφ₀ + R(E₂)ᵀ dφ₁ + dφ₂,

@@ -19,7 +19,8 @@ struct Takeoff {
   Eigen::Vector3d com_position = Eigen::Vector3d(0, 1, 0);  ///< m
   Eigen::Vector3d com_velocity = Eigen::Vector3d::Zero();   ///< m/s
   /// Angular momentum about the CoM, world frame, kg·m²/s. When absent, free-flight simulation
-  /// uses the one implied by the interpolated keyframes at t = 0.
+  /// uses the constant that best fits the motion's own L(t) over the flight (its time average,
+  /// evaluation/flight_state.h), not L(0).
   std::optional<Eigen::Vector3d> angular_momentum;
 };
 

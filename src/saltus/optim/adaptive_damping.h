@@ -4,20 +4,19 @@
 /// to step like a trust region (Nielsen 1999; Fan & Yuan 2005 for the ‖F‖²-scaled form).
 ///
 /// Why it adapts. At the paper's resolution (K = 1) the optimum keeps a root force of a few N
-/// to tens of N, and there the Gauss–Newton model misses the residual's own curvature
-/// Σ F·∇²F. Measured on M3 (tucked double, 101 samples): after ~50 iterations the objective's
-/// true curvature along each step was negative while μ·J·‖s‖² outweighed the Gauss–Newton
-/// curvature sᵀHs 30–90 times, so a fixed μ = 1 made the damping a fixed trust radius: steps
-/// of 0.02–0.05 rad, each cutting J by 0.2–0.5 %, for 130 iterations. Letting μ fall while the
-/// model predicts the decrease well lets the steps grow; raising it when it predicts badly or the
-/// line search has to cut the step keeps the robustness of μ = 1.
+/// to tens of N, where the Gauss–Newton model misses the residual's own curvature Σ F·∇²F and
+/// the damping outweighs the curvature it does model: a fixed μ = 1 then acts as a fixed trust
+/// radius, and the late steps stay short. Letting μ fall while the model predicts the decrease
+/// well lets the steps grow; raising it when it predicts badly or the line search has to cut the
+/// step keeps the robustness of μ = 1. Measurements: docs/optimizer.md, "Measurement history"
+/// (Damping).
 
 #include <algorithm>
 
 namespace saltus {
 
 struct DampingRule {
-  double initial = 1.0;  ///< μ at the first iteration: the fixed damping that was measured safe
+  double initial = 1.0;  ///< μ at the first iteration: the steadiest fixed damping
   double minimum = 0.01;
   double maximum = 10.0;
   double shrink = 2.0;       ///< μ /= shrink after a well-predicted step
@@ -40,8 +39,8 @@ class AdaptiveDamping {
   /// well-predicted one. `ratio` = actual / predicted decrease of the objective along the step
   /// taken, the model being the damped one the step was computed with.
   /// A step stopped short by the fraction-to-the-boundary rule (a slack nearing its bound) is
-  /// judged like any other: measured, sparing those from shrinking μ cost 498 instead of 364
-  /// iterations over M1-M7 and the dive, since most late steps stop at an active keyframe bound.
+  /// judged like any other: most late steps stop at an active keyframe bound, and sparing them
+  /// from shrinking μ cost iterations (docs/optimizer.md, "Measurement history").
   void update(double ratio, bool shortened) {
     if (shortened || !(ratio >= rule_.poor_ratio))
       factor_ = std::min(rule_.maximum, factor_ * rule_.grow);

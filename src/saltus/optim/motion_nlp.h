@@ -2,9 +2,10 @@
 /// @file
 /// The optimisation models of docs/method.md over a keyframed motion.
 ///
-/// Relaxed (the paper's eqs. 1-4): minimise J = (1/T) ∫ Σ F_i² dt (trapezoidal rule on a fixed
-/// grid of `samples` times), plus a small proximity term (see `regularization`) and a soft limit
-/// on how far joints turn between control points (see `joint_turn_limit`), subject to
+/// Relaxed (the paper's eqs. 1-4): minimise J = (1/T) ∫ Σ F_i² dt (Gauss–Lobatto nodes on every
+/// knot span, moving with the knots: RootWrenchTerm, see `quadrature_nodes`), plus a small
+/// proximity term (see `regularization`), the keyframe prior (see `keyframe_weight`) and a soft
+/// limit on how far joints turn between control points (see `joint_turn_limit`), subject to
 ///   |B_d(t_i) − B̄_d(t_i)| <= ε1   per keyframe i and coordinate d              (eq. 2)
 ///   ‖Q_k(t_i) − Q̄_k‖² <= ε2²       per keyframe and joint, sign-aligned         (eq. 3)
 /// (both divided by their tolerance, see kKeyframeBoundMargin)
@@ -18,7 +19,7 @@
 /// function of x (step_taken tells the NLP how the solver got there).
 ///
 /// Strict (classic spacetime constraints): the same variables and keyframe constraints plus
-/// |F_i(t_s)| <= ε at every grid time; objective the keyframe distance
+/// |F_i(t_s)| <= ε at every one of the `samples` grid times; objective the keyframe distance
 /// Σ‖B(t_i) − B̄_i‖² + Σ‖Q_k(t_i) − Q̄_k‖², plus the same proximity term and joint-turn limit
 /// (with the same weights, so here they weigh more against the objective). Its Hessian is the
 /// Gauss-Newton one of that objective; the force constraints' curvature is not available and
@@ -48,8 +49,7 @@ enum class Formulation { kRelaxed, kStrict };
 /// Dimensionless rows matter to Ipopt: it pushes every initial slack max(1, |bound|)·1e-2
 /// inside its bound, and for an unscaled ‖Q − Q̄‖² <= 0.0025 that put the slack at −0.0075, a
 /// value no squared distance can reach: the first Newton step then flew off to wherever the
-/// linearisation pointed (measured: violation 1.8 and a wander to 500 N on M5 with timing
-/// errors).
+/// linearisation pointed (docs/optimizer.md, "Measurement history").
 /// The margin is 2× SolverOptions::acceptable_constraint_violation, so a point the solver
 /// accepts still meets the user's tolerances: for ε2 = 0.05 the optimiser works to
 /// ‖Q − Q̄‖ <= 0.0495, for ε1 = 0.25 m to 0.245 m.
@@ -103,10 +103,11 @@ struct MotionNlpOptions {
   /// automatic resolution only. 0 = none.
   double keyframe_weight = 10.0;
   /// Soft limit (rad) on the turn of each non-root joint between two consecutive control points
-  /// (JointTurnPenalty: the floor of L; the interpolation's own larger turns stay allowed), with
+  /// (JointTurnTerm: the floor of L; the interpolation's own larger turns stay allowed), with
   /// weight joint_turn_weight (N²/rad², in J's units: 0.1 rad past the limit costs 10 N²). Half a
   /// revolution: no joint turns further relative to its parent between two controls, and every
-  /// run stays well off the spline's branch point at 2π. 0 = none.
+  /// run stays well off the spline's branch point at 2π (docs/optimizer.md, "Measurement
+  /// history"). 0 = none.
   double joint_turn_limit = 3.14159265358979323846;
   double joint_turn_weight = 1000.0;
   bool limits_joint_turns() const { return joint_turn_limit > 0 && joint_turn_weight > 0; }
@@ -114,16 +115,18 @@ struct MotionNlpOptions {
   /// samples, keyframes or knot spans); 0 = one per hardware thread, at most 4. A fixed
   /// default, not the machine's core count, so that the same input gives the same output
   /// everywhere: the values do not depend on it, but the Hessian's blocked products round
-  /// differently with where each thread's memory lies, and the iterations follow the rounding.
+  /// differently with where each thread's memory lies, and the iterations follow the rounding
+  /// (docs/optimizer.md, "Measurement history").
   int threads = 2;
 };
 
 class RootWrenchTerm;
 
 /// One formulation assembled from objective terms and constraint blocks (optim/terms/): the
-/// relaxed model sums the root wrench, the proximity term and the joint-turn penalty, subject to
-/// the keyframe translation, keyframe rotation and time-order blocks; the strict model sums the
-/// keyframe distance, proximity and penalty, subject to the same blocks and the force bounds.
+/// relaxed model sums the root wrench, the keyframe prior, the proximity term and the joint-turn
+/// penalty, subject to the keyframe translation, keyframe rotation and time-order blocks; the
+/// strict model sums the keyframe distance, proximity and penalty, subject to the same blocks and
+/// the force bounds.
 /// This class only stacks them for the solver, caches the gradient per point and adapts the
 /// damping of the relaxed model's Hessian.
 class MotionNlp : public Nlp {

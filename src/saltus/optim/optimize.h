@@ -38,8 +38,7 @@ struct AutomaticResolution {
   /// First guess: each keyframe interval split so that no segment, turning at its fastest rate
   /// on the interval, would turn in the world by more than this in one span (rad), ... Fine
   /// enough that the first level usually ends within ~10× of target_force, where one
-  /// refinement reaches it; started at the paper's knots, the twisting doubles ended their
-  /// first level at 6-13 N and needed two refinements (docs/performance.md).
+  /// refinement reaches it (docs/performance.md, "Fewer levels").
   double turn_per_span = 1.6;  // 92°
   /// ... and no span is longer than this (s).
   double max_span = 0.26;
@@ -48,9 +47,8 @@ struct AutomaticResolution {
   /// ... or a refinement cut it by less than this fraction (more knots stop paying).
   double min_gain = 0.3;
   /// A refinement splits each interval's spans by the factor its own mean squared wrench asks
-  /// for, assuming the average root force falls like the span length to this power (measured
-  /// on the bundled motions: doubling the knots cut it 4-7 times, 2^2.5 ≈ 5.7; the cubic law
-  /// that was here landed just above the target and cost one more refinement).
+  /// for, assuming the average root force falls like the span length to this power (fitted on
+  /// the bundled motions: docs/performance.md, "Fewer levels").
   double convergence_order = 2.5;
   int max_spans_per_interval = 8;
   int max_refinements = 2;
@@ -137,8 +135,8 @@ bool optimizer_agrees_with_check(const OptimizationResult& result);
 /// Cumulative quaternion splines turn by ω_j = log(q_{j−1}⁻¹ q_j) between control points, less
 /// than 180°. Where consecutive keyframes are far apart in rotation over uneven intervals (a
 /// fast tucked somersault keyframed sparsely, or keyframe times far off) the curve through them
-/// would need more, so the interpolation on knots at the keyframes misses them (measured: M3
-/// with ±0.1 s timing errors misses by 59°) and the optimiser starts outside its constraints,
+/// would need more, so the interpolation on knots at the keyframes misses them
+/// (docs/optimizer.md, "Measurement history") and the optimiser starts outside its constraints,
 /// on a landscape where the log's branch cut makes them jump. Then K is raised until the
 /// interpolation meets the keyframe tolerances.
 OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,

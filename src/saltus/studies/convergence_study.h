@@ -47,10 +47,9 @@ struct StudyOutcome {
 
 /// When a strict run of a study is given up (SolverOptions::feasibility_checkpoints): by 80
 /// iterations its constraint violation must have been below 20 (N, N·m or keyframe
-/// tolerances), by 120 below 10, by 150 below 5. Set from the strict runs of the full report's
-/// study (M1-M7 × ε 10-500 × mass and timing errors, run to 300 iterations; README
-/// "Studies at scale"): every run that solved came below 20 by iteration 56, below 10 by 80 and
-/// below 5 by 97, while most runs that never solved stayed above 20 throughout.
+/// tolerances), by 120 below 10, by 150 below 5. Set, with a margin, from when the strict runs
+/// of the full report's study that solved came below each (docs/studies.md; docs/optimizer.md,
+/// "Measurement history").
 inline const std::vector<FeasibilityCheckpoint> kStrictStudyCheckpoints{
     {80, 20.0}, {120, 10.0}, {150, 5.0}};
 

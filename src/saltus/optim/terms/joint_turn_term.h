@@ -8,15 +8,14 @@
 /// Why. A joint rotation is the child segment relative to its parent, and no human joint turns
 /// through half a revolution between two control points. But the root force hardly depends on
 /// light segments, and at the paper's resolution (K = 1, controls 0.15-0.3 s apart) the relaxed
-/// optimum used to spin forearms, feet and shanks by 5-6.3 rad between two controls (measured
-/// on M2, M3, M5, M7 and the dive). At 2π the spline's relative log has its branch point: the
-/// gradient blows up there (1e17), and runs that reached it failed (M3 with the right thigh 10 %
-/// light and 0.05 s timing errors: 300 iterations, not solved).
+/// optimum without this limit spun forearms, feet and shanks by nearly a full turn between two
+/// controls. At 2π the spline's relative log has its branch point: the gradient blows up there,
+/// and runs that reached it failed.
 ///
 /// A penalty, not constraint rows: the residual √ρ·(θ − L)₊ joins the objective's sum of squares
 /// with a Gauss–Newton Hessian 2ρ·∇θ∇θᵀ on the two controls' 6 tangent coordinates, which lie
-/// inside the Hessian's band. Hard rows ⟨c_{j−1}, c_j⟩ >= cos(L/2) were tried: they kept runs off
-/// the branch too, but the examples needed 455 iterations instead of 364.
+/// inside the Hessian's band (hard rows ⟨c_{j−1}, c_j⟩ >= cos(L/2) cost more iterations).
+/// Measurements: docs/optimizer.md, "Measurement history" (Joint-turn limit).
 
 #include <array>
 #include <vector>
