@@ -15,6 +15,7 @@
 #include "app/main_window.h"
 #include "app/run_controller.h"
 #include "core/command_line.h"
+#include "saltus/optim/solver_memory.h"
 
 namespace {
 
@@ -60,6 +61,7 @@ void on_qt_message(QtMsgType type, const QMessageLogContext&, const QString& mes
 }  // namespace
 
 int main(int argc, char** argv) {
+  saltus::keep_solver_memory_in_heap();
   std::vector<std::string> args(argv + 1, argv + argc);
   saltus::gui::CommandLine command_line;
   try {

@@ -8,6 +8,7 @@ set(covered_elsewhere
     "dynamics/body_state=a plain struct, read and written by every dynamics test"
     "motion/motion=plain structs, read and written in unit/formats/motion_file_test.cpp"
     "optim/nlp=the interface, whose implementations are tested (unit/optim/ipopt_solver_test.cpp solves analytic ones)"
+    "optim/solver_memory=a process-wide malloc setting made by each program's main: every optimisation of the cli tests runs under it"
     "optim/terms/objective_term=the terms' interface, exercised by every unit/optim/terms/*_term_test.cpp"
     "optim/terms/constraint_block=the blocks' interface, exercised by every unit/optim/terms/*_block_test.cpp"
     "studies/paper_report=runs every paper experiment: tests/paper/paper_report_test.cpp (label paper)")

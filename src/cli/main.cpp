@@ -25,6 +25,7 @@
 #include "saltus/formats/result_json.h"
 #include "saltus/motion/motion.h"
 #include "saltus/optim/optimize.h"
+#include "saltus/optim/solver_memory.h"
 #include "saltus/use_cases/captures.h"
 #include "saltus/use_cases/result_folders.h"
 #include "study_verbs.h"
@@ -235,6 +236,7 @@ int run_optimize(const CommonArgs& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  saltus::keep_solver_memory_in_heap();
   CLI::App app{
       "Saltus: physics-based simulation of human aerial motion.\n"
       "Evaluates keyframed somersaults and dives by inverse dynamics and simulates free "

@@ -52,56 +52,6 @@ nlohmann::json optional_string(const std::string& text) {
   return text.empty() ? nlohmann::json(nullptr) : nlohmann::json(text);
 }
 
-nlohmann::json outcome_to_json(const StudyOutcome& o) {
-  const StudyCase& c = o.study_case;
-  return {{"motion", c.motion},
-          {"formulation", c.formulation == Formulation::kRelaxed ? "relaxed" : "strict"},
-          {"epsilon", number(c.epsilon)},
-          {"mass_segment", c.mass_segment},
-          {"mass_error", number(c.mass_error)},
-          {"timing_error_s", number(c.timing_error_s)},
-          {"status", o.status},
-          {"solved", o.solved},
-          {"iterations", o.iterations},
-          {"seconds", number(o.seconds)},
-          {"variables", o.variables},
-          {"constraints", o.constraints},
-          {"avg_force_before_N", number(o.avg_force_before)},
-          {"avg_force_after_N", number(o.avg_force_after)},
-          {"max_force_after_N", number(o.max_force_after)},
-          {"max_quaternion_error", number(o.max_quaternion_error)},
-          {"knots_per_interval", o.knots_per_interval},
-          {"restarts", o.restarts}};
-}
-
-StudyOutcome parse_outcome(const JsonNode& node) {
-  node.require_object();
-  StudyOutcome o;
-  StudyCase& c = o.study_case;
-  c.motion = node.at("motion").as_string();
-  const std::string formulation = node.at("formulation").as_string();
-  if (formulation != "relaxed" && formulation != "strict")
-    node.at("formulation").fail("expected \"relaxed\" or \"strict\"");
-  c.formulation = formulation == "relaxed" ? Formulation::kRelaxed : Formulation::kStrict;
-  c.epsilon = read_number(node, "epsilon");
-  c.mass_segment = node.at("mass_segment").as_string();
-  c.mass_error = read_number(node, "mass_error");
-  c.timing_error_s = read_number(node, "timing_error_s");
-  o.status = node.at("status").as_string();
-  o.solved = read_bool(node, "solved");
-  o.iterations = node.at("iterations").as_int();
-  o.seconds = read_number(node, "seconds");
-  o.variables = node.at("variables").as_int();
-  o.constraints = node.at("constraints").as_int();
-  o.avg_force_before = read_number(node, "avg_force_before_N");
-  o.avg_force_after = read_number(node, "avg_force_after_N");
-  o.max_force_after = read_number(node, "max_force_after_N");
-  o.max_quaternion_error = read_number(node, "max_quaternion_error");
-  o.knots_per_interval = node.at("knots_per_interval").as_int();
-  o.restarts = node.at("restarts").as_int();
-  return o;
-}
-
 nlohmann::json numbers(const std::vector<double>& values) {
   nlohmann::json out = nlohmann::json::array();
   for (double v : values)
@@ -130,10 +80,13 @@ nlohmann::json run_to_json(const RunSummary& r) {
           {"variables", r.variables},
           {"constraints", r.constraints},
           {"knots_per_interval", r.knots_per_interval},
+          {"restarts", r.restarts},
           {"objective_before", number(r.objective_before)},
           {"objective_after", number(r.objective_after)},
           {"avg_force_before_N", number(r.avg_force_before)},
           {"avg_force_after_N", number(r.avg_force_after)},
+          {"max_force_after_N", number(r.max_force_after)},
+          {"max_quaternion_error", number(r.max_quaternion_error)},
           {"keyframe_times_before", numbers(r.keyframe_times_before)},
           {"keyframe_times_after", numbers(r.keyframe_times_after)}};
 }
@@ -150,13 +103,44 @@ RunSummary parse_run(const JsonNode& node) {
   r.variables = node.at("variables").as_int();
   r.constraints = node.at("constraints").as_int();
   r.knots_per_interval = node.at("knots_per_interval").as_int();
+  r.restarts = node.at("restarts").as_int();
   r.objective_before = read_number(node, "objective_before");
   r.objective_after = read_number(node, "objective_after");
   r.avg_force_before = read_number(node, "avg_force_before_N");
   r.avg_force_after = read_number(node, "avg_force_after_N");
+  r.max_force_after = read_number(node, "max_force_after_N");
+  r.max_quaternion_error = read_number(node, "max_quaternion_error");
   r.keyframe_times_before = read_numbers(node, "keyframe_times_before");
   r.keyframe_times_after = read_numbers(node, "keyframe_times_after");
   return r;
+}
+
+nlohmann::json outcome_to_json(const StudyOutcome& o) {
+  const StudyCase& c = o.study_case;
+  nlohmann::json j = run_to_json(o);
+  j["motion"] = c.motion;
+  j["formulation"] = c.formulation == Formulation::kRelaxed ? "relaxed" : "strict";
+  j["epsilon"] = number(c.epsilon);
+  j["mass_segment"] = c.mass_segment;
+  j["mass_error"] = number(c.mass_error);
+  j["timing_error_s"] = number(c.timing_error_s);
+  return j;
+}
+
+StudyOutcome parse_outcome(const JsonNode& node) {
+  StudyOutcome o;
+  static_cast<RunSummary&>(o) = parse_run(node);
+  StudyCase& c = o.study_case;
+  c.motion = node.at("motion").as_string();
+  const std::string formulation = node.at("formulation").as_string();
+  if (formulation != "relaxed" && formulation != "strict")
+    node.at("formulation").fail("expected \"relaxed\" or \"strict\"");
+  c.formulation = formulation == "relaxed" ? Formulation::kRelaxed : Formulation::kStrict;
+  c.epsilon = read_number(node, "epsilon");
+  c.mass_segment = node.at("mass_segment").as_string();
+  c.mass_error = read_number(node, "mass_error");
+  c.timing_error_s = read_number(node, "timing_error_s");
+  return o;
 }
 
 }  // namespace

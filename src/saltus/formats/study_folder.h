@@ -13,7 +13,7 @@
 
 #include "saltus/formats/motion_file.h"
 #include "saltus/formats/study_case_file.h"
-#include "saltus/optim/ipopt_solver.h"
+#include "saltus/optim/solve_policy.h"
 
 namespace saltus {
 

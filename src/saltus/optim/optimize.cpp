@@ -77,7 +77,7 @@ Solved solve_level(const Motion& motion, const Motion& motion_at_start, const Bo
   std::vector<double> initial_x(nlp.variable_count());
   nlp.initial_point(initial_x.data());
   out.objective_before = nlp.force_objective(initial_x.data());
-  out.solve = solve_with_ipopt(nlp, solver, progress, cancel);
+  out.solve = solve_nlp(nlp, solver, progress, cancel);
   const double* x = out.solve.x.data();
   out.objective_after = nlp.force_objective(x);
   out.optimized = motion;

@@ -6,8 +6,8 @@
 #include <atomic>
 
 #include "saltus/evaluation/evaluate.h"
-#include "saltus/optim/ipopt_solver.h"
 #include "saltus/optim/motion_nlp.h"
+#include "saltus/optim/solve_policy.h"
 
 namespace saltus {
 

@@ -115,8 +115,10 @@ std::vector<OptionSpec> make_table() {
   t.push_back(o);
 
   o = entry("samples", "--samples", "Samples", "",
-            "time samples on [0, T], both ends included: the evaluation grid and the optimiser's "
-            "quadrature grid (fewer = faster)");
+            "time samples on [0, T], both ends included: the grid of the written trajectories "
+            "and figures, and of the strict model's force bounds (the relaxed objective is "
+            "integrated on every knot span, and every residual is checked densely, whatever "
+            "this is)");
   range(o, OptionKind::kInteger, 2, 100000);
   o.use = OptionUse::kEvaluation;
   record(o, "samples", ResultRecord::kEveryResult);

@@ -1,8 +1,9 @@
 #pragma once
 /// @file
-/// Solving an Nlp with Ipopt. The adapter only translates (Drake's style): Ipopt's TNLP calls map
-/// onto Nlp; evaluation caching keyed on x is the Nlp's business. Progress is reported once per
-/// iteration and a cancel flag stops the solver cleanly at the next iteration.
+/// How an Nlp is solved: Ipopt runs (ipopt_solver.h) under a policy of our own: an acceptable
+/// exit on the objective's relative change, a restart from the best feasible iterate when a run
+/// stalls, an early stop at feasibility checkpoints, the best feasible iterate returned when a
+/// run ends somewhere worse, progress once per iteration and a cancel flag that stops cleanly.
 
 #include <atomic>
 #include <functional>
@@ -20,9 +21,7 @@ struct FeasibilityCheckpoint {
 };
 
 struct SolverOptions {
-  /// Ipopt's limit. M1 solves in ~30 iterations; tucked double somersaults keyframed at the
-  /// paper's resolution (K = 1) need ~100-115: the spline cannot follow the flight closely, and
-  /// the many active keyframe bounds shorten the interior-point steps.
+  /// Iterations over every run of one solve (docs/optimizer.md says what the motions need).
   int max_iterations = 300;
   double tolerance =
       1e-8;  ///< Ipopt's tol: the NLP error for an "optimal" exit (CLI and GUI default)
@@ -89,8 +88,7 @@ struct SolveReport {
 };
 
 /// Solves `nlp` from its initial point. Never throws for solver failures: they are reported.
-SolveReport solve_with_ipopt(Nlp& nlp, const SolverOptions& options,
-                             const ProgressCallback& progress = {},
-                             const std::atomic<bool>* cancel = nullptr);
+SolveReport solve_nlp(Nlp& nlp, const SolverOptions& options, const ProgressCallback& progress = {},
+                      const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace saltus

@@ -79,19 +79,8 @@ StudyOutcome run_study_case(const LabelledMotion& motion, const StudyCase& study
   }
   const OptimizationResult r = optimize_motion(disturbed, model, optimize);
   StudyOutcome o;
+  static_cast<RunSummary&>(o) = summarize_run(disturbed, r);
   o.study_case = study_case;
-  o.status = r.solve.status;
-  o.solved = r.solve.solved;
-  o.iterations = r.solve.iterations;
-  o.seconds = r.solve.seconds;
-  o.variables = r.variables;
-  o.constraints = r.constraints;
-  o.avg_force_before = r.before.metrics.avg_root_force;
-  o.avg_force_after = r.after.metrics.avg_root_force;
-  o.max_force_after = r.after.metrics.max_force_N;
-  o.max_quaternion_error = r.after.keyframe_errors.max_quaternion_error;
-  o.knots_per_interval = r.knots_per_interval;
-  o.restarts = r.solve.restarts;
   return o;
 }
 

@@ -10,6 +10,7 @@
 
 #include "saltus/motion/motion.h"
 #include "saltus/optim/optimize.h"
+#include "saltus/studies/run_summary.h"
 
 namespace saltus {
 
@@ -29,20 +30,9 @@ struct StudyCase {
   double timing_error_s = 0.0;  ///< amplitude of the keyframe-time disturbance
 };
 
-struct StudyOutcome {
+/// A case and the summary of its optimisation (run on the disturbed keyframes and model).
+struct StudyOutcome : RunSummary {
   StudyCase study_case;
-  std::string status;  ///< SolveReport::status
-  bool solved = false;
-  int iterations = 0;
-  double seconds = 0.0;
-  int variables = 0;
-  int constraints = 0;
-  double avg_force_before = 0.0;  ///< sqrt(J/6) of the interpolation, N
-  double avg_force_after = 0.0;
-  double max_force_after = 0.0;       ///< N
-  double max_quaternion_error = 0.0;  ///< of the result, vs the (disturbed) keyframes
-  int knots_per_interval = 1;  ///< K used (raised when the interpolation missed the keyframes)
-  int restarts = 0;            ///< solver restarts from its best feasible iterate
 };
 
 /// When a strict run of a study is given up (SolverOptions::feasibility_checkpoints): by 80

@@ -2,26 +2,6 @@
 
 namespace saltus {
 
-RunSummary summarize_run(const Motion& motion, const OptimizationResult& result) {
-  RunSummary s;
-  s.motion_name = motion.name;
-  s.keyframes = static_cast<int>(motion.keyframes.size());
-  s.status = result.solve.status;
-  s.solved = result.solve.solved;
-  s.iterations = result.solve.iterations;
-  s.seconds = result.solve.seconds;
-  s.variables = result.variables;
-  s.constraints = result.constraints;
-  s.knots_per_interval = result.knots_per_interval;
-  s.objective_before = result.before.metrics.objective;
-  s.objective_after = result.after.metrics.objective;
-  s.avg_force_before = result.before.metrics.avg_root_force;
-  s.avg_force_after = result.after.metrics.avg_root_force;
-  s.keyframe_times_before = result.before.keyframe_times;
-  s.keyframe_times_after = result.after.keyframe_times;
-  return s;
-}
-
 PaperPlan paper_report_plan(const std::vector<LabelledMotion>& skills,
                             const std::vector<LabelledMotion>& dives,
                             const PaperReportOptions& options) {

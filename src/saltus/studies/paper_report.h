@@ -11,6 +11,7 @@
 
 #include "saltus/studies/convergence_study.h"
 #include "saltus/studies/mass_study.h"
+#include "saltus/studies/run_summary.h"
 
 namespace saltus {
 
@@ -23,27 +24,6 @@ struct PaperReportOptions {
   /// The convergence study's early stop of strict runs (ConvergenceStudyOptions).
   std::vector<FeasibilityCheckpoint> strict_checkpoints = kStrictStudyCheckpoints;
 };
-
-/// What the report keeps of one optimisation (the whole result goes to its own folder).
-struct RunSummary {
-  std::string motion_name;  ///< Motion::name
-  int keyframes = 0;
-  /// SolveReport::status, or "crashed" / "timed_out" when the case's process did not finish.
-  std::string status;
-  bool solved = false;
-  int iterations = 0;
-  double seconds = 0.0;  ///< the solve's wall time
-  int variables = 0;
-  int constraints = 0;
-  int knots_per_interval = 1;
-  double objective_before = 0.0, objective_after = 0.0;  ///< J, N²
-  double avg_force_before = 0.0, avg_force_after = 0.0;  ///< sqrt(J/6), N
-  std::vector<double> keyframe_times_before, keyframe_times_after;
-  /// False when the case's process failed: only motion_name, keyframes and status are set.
-  bool completed() const { return status != "crashed" && status != "timed_out"; }
-};
-
-RunSummary summarize_run(const Motion& motion, const OptimizationResult& result);
 
 enum class PaperCaseKind {
   kSkill,         ///< a skill at the paper's resolution (K = 1), written to DIR/<label>

@@ -13,8 +13,8 @@
 #include "saltus/formats/motion_file.h"
 #include "saltus/math/quaternion.h"
 #include "saltus/motion/interpolate.h"
-#include "saltus/optim/ipopt_solver.h"
 #include "saltus/optim/motion_nlp.h"
+#include "saltus/optim/solve_policy.h"
 #include "support/term_checks.h"
 #include "support/test_motions.h"
 
@@ -423,7 +423,7 @@ TEST(Solver, StoppedEarlyReturnsTheBetterOfItsLastAndItsBestFeasibleIterate) {
     SolverOptions options;
     options.max_iterations = limit;
     double best_feasible = std::numeric_limits<double>::infinity(), last = 0.0;
-    const SolveReport report = solve_with_ipopt(nlp, options, [&](const ProgressInfo& p) {
+    const SolveReport report = solve_nlp(nlp, options, [&](const ProgressInfo& p) {
       if (p.constraint_violation <= options.acceptable_constraint_violation)
         best_feasible = std::min(best_feasible, p.objective);
       last = p.objective;
@@ -464,7 +464,7 @@ TEST(IpoptDerivativeChecker, FindsNoErrorInGradientOrJacobian) {
     SolverOptions options;
     options.max_iterations = 0;
     options.derivative_test_file = report;
-    solve_with_ipopt(nlp, options);
+    solve_nlp(nlp, options);
     std::ifstream in(report);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     EXPECT_NE(text.find("Starting derivative checker"), std::string::npos) << text.substr(0, 500);
