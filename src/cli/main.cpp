@@ -19,6 +19,7 @@
 #include "saltus/base/input_error.h"
 #include "saltus/evaluation/evaluate.h"
 #include "saltus/evaluation/force_metrics.h"
+#include "saltus/evaluation/joint_loads.h"
 #include "saltus/evaluation/simulate.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/formats/output_folder.h"
@@ -225,6 +226,24 @@ int run_optimize(const CommonArgs& args) {
       std::printf(" (soft limit %.0f deg, or the interpolation's own turn)",
                   values.real("max_joint_turn"));
     std::printf("\n");
+    const saltus::JointLoadRise rise =
+        saltus::largest_joint_load_rise(file.model, result.before.check, result.after.check);
+    if (!rise.joint.empty()) {
+      const bool moment = rise.moment_ratio >= rise.force_ratio;
+      const double weight = saltus::body_weight_N(file.model);
+      if (moment)
+        std::printf(
+            "  joint loads: largest rise at %s, moment %.3g N·m at t = %.3f s after, %.3g N·m "
+            "before (%.2fx)\n",
+            rise.joint.c_str(), rise.after.moment_Nm, rise.after.moment_time_s,
+            rise.before.moment_Nm, rise.moment_ratio);
+      else
+        std::printf(
+            "  joint loads: largest rise at %s, force %.3g N (%.0f %% of body weight) at t = "
+            "%.3f s after, %.3g N before (%.2fx)\n",
+            rise.joint.c_str(), rise.after.force_N, 100.0 * rise.after.force_N / weight,
+            rise.after.force_time_s, rise.before.force_N, rise.force_ratio);
+    }
     std::printf(
         "  wrote %s/{result.json, trajectory_before.csv, trajectory_after.csv, model.json, "
         "optimized.motion.json} in %.3f s\n",

@@ -36,6 +36,7 @@ struct RandomPoint {
     options.formulation = formulation;
     options.knots_per_interval = knots_per_interval;
     options.samples = 23;
+    options.joint_effort = 0.1;  // every relaxed term present
     InterpolationOptions interpolation;
     interpolation.knots_per_interval = knots_per_interval;
     nlp = std::make_unique<MotionNlp>(motion, model,

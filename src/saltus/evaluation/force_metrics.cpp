@@ -43,6 +43,7 @@ DenseCheck dense_check(const BodyModel& model, const Trajectory<double>& traject
   if (!(duration > 0)) return check;
   DynamicsData<double> data(model);
   BodyState<double> state(model.size());
+  check.joint_peaks.assign(model.size(), JointLoadPeak{});
   double sum_force = 0.0, sum_moment = 0.0;
   for (std::size_t s = 3; s + 4 < knots.size(); ++s) {
     const double start = knots[s], end = knots[s + 1];
@@ -67,6 +68,13 @@ DenseCheck dense_check(const BodyModel& model, const Trajectory<double>& traject
       span_moment += weight * moment2;
       check.metrics.max_force_N = std::max(check.metrics.max_force_N, std::sqrt(force2));
       check.metrics.max_moment_Nm = std::max(check.metrics.max_moment_Nm, std::sqrt(moment2));
+      for (int k = 0; k < model.size(); ++k) {
+        const Vector6d w = joint_wrench_force_first(data, k);
+        JointLoadPeak& peak = check.joint_peaks[k];
+        const double force = w.head<3>().norm(), moment = w.tail<3>().norm();
+        if (force > peak.force_N) peak.force_N = force, peak.force_time_s = t;
+        if (moment > peak.moment_Nm) peak.moment_Nm = moment, peak.moment_time_s = t;
+      }
       ++check.points;
     }
     span_force *= h / 3.0;

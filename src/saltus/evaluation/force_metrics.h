@@ -32,8 +32,19 @@ ForceMetrics force_metrics(const std::vector<SampleRecord>& samples);
 /// on a span and kinks only at knots), the peaks taken over every point. Independent of the
 /// optimiser's own quadrature (Gauss–Lobatto nodes on the spans), so force the optimiser
 /// hid between its nodes shows here.
+/// The largest load one joint carried over the dense check's points: the wrench the parent exerts
+/// on the child segment's subtree at their joint (inverse dynamics' joint wrench, child frame).
+struct JointLoadPeak {
+  double force_N = 0.0;  ///< max |force|
+  double force_time_s = 0.0;
+  double moment_Nm = 0.0;  ///< max |moment| about the joint centre
+  double moment_time_s = 0.0;
+};
+
 struct DenseCheck {
   ForceMetrics metrics;
+  /// Per segment, the load at its joint (segment 0's is the root wrench itself).
+  std::vector<JointLoadPeak> joint_peaks;
   int points = 0;  ///< wrench evaluations used
   /// Per knot span: its start and end (s) and ∫ Σ F_i² dt over it (N²·s), where the residual
   /// lives.

@@ -11,6 +11,7 @@
 #include "saltus/base/input_error.h"
 #include "saltus/base/json_reader.h"
 #include "saltus/base/text_format.h"
+#include "saltus/evaluation/joint_loads.h"
 #include "saltus/formats/finite_check.h"
 #include "saltus/formats/model_file.h"
 #include "saltus/formats/motion_file.h"
@@ -40,6 +41,20 @@ namespace {
 
 nlohmann::json vector_json(const Eigen::Vector3d& v) {
   return {v.x(), v.y(), v.z()};
+}
+
+/// The body weight and every joint's peak load (the root left out) from the dense checks.
+void set_joint_loads(ResultJson& r, const BodyModel& model, const DenseCheck& before,
+                     const DenseCheck* after) {
+  r.body_weight_N = body_weight_N(model);
+  for (int k = 1; k < model.size(); ++k) {
+    if (k >= static_cast<int>(before.joint_peaks.size())) break;
+    ResultJson::JointLoad l;
+    l.joint = model.segments[k].joint;
+    l.before = before.joint_peaks[k];
+    if (after && k < static_cast<int>(after->joint_peaks.size())) l.after = after->joint_peaks[k];
+    r.joint_loads.push_back(std::move(l));
+  }
 }
 
 /// The fields every result shares.
@@ -96,6 +111,14 @@ nlohmann::json resolution_json(const ResultJson::Optimization::Resolution& resol
           {"subdivisions", resolution.subdivisions},
           {"knots", resolution.knots},
           {"levels", levels}};
+}
+
+nlohmann::json joint_peak_json(const JointLoadPeak& p, double body_weight) {
+  return {{"peak_force_N", p.force_N},
+          {"peak_force_pct_bw", 100.0 * p.force_N / body_weight},
+          {"peak_force_time_s", p.force_time_s},
+          {"peak_moment_Nm", p.moment_Nm},
+          {"peak_moment_time_s", p.moment_time_s}};
 }
 
 bool read_bool(const JsonNode& node) {
@@ -203,6 +226,15 @@ nlohmann::json result_to_json(const ResultJson& r) {
   j["max_rotation_error_deg"] = e ? nlohmann::json(e->max_rotation_error_deg) : nullptr;
   if (r.takeoff_angular_momentum)
     j["takeoff_angular_momentum"] = vector_json(*r.takeoff_angular_momentum);
+  if (r.body_weight_N) j["body_weight_N"] = *r.body_weight_N;
+  if (!r.joint_loads.empty() && r.body_weight_N) {
+    nlohmann::json loads = nlohmann::json::object();
+    for (const ResultJson::JointLoad& l : r.joint_loads) {
+      loads[l.joint]["before"] = joint_peak_json(l.before, *r.body_weight_N);
+      if (l.after) loads[l.joint]["after"] = joint_peak_json(*l.after, *r.body_weight_N);
+    }
+    j["joint_loads"] = loads;
+  }
   if (const auto& s = r.simulation) {
     j["takeoff_angular_momentum_source"] = s->angular_momentum_source;
     nlohmann::json joints = nlohmann::json::object();
@@ -285,6 +317,26 @@ ResultJson parse_result_json(const nlohmann::json& document, const std::string& 
   }
   if (const auto momentum = root.find("takeoff_angular_momentum"))
     r.takeoff_angular_momentum = momentum->as_vector3();
+  if (const auto weight = root.find("body_weight_N")) r.body_weight_N = weight->as_double();
+  if (const auto loads = root.find("joint_loads")) {
+    loads->require_object();
+    const auto peak = [](const JsonNode& node) {
+      node.require_object();
+      JointLoadPeak p;
+      p.force_N = node.at("peak_force_N").as_double();
+      p.force_time_s = node.at("peak_force_time_s").as_double();
+      p.moment_Nm = node.at("peak_moment_Nm").as_double();
+      p.moment_time_s = node.at("peak_moment_time_s").as_double();
+      return p;
+    };
+    for (const auto& [name, node] : loads->members()) {
+      ResultJson::JointLoad l;
+      l.joint = name;
+      l.before = peak(node.at("before"));
+      if (const auto after = node.find("after")) l.after = peak(*after);
+      r.joint_loads.push_back(std::move(l));
+    }
+  }
   if (r.kind == ResultJson::Kind::kSimulation) {
     ResultJson::Simulation s;
     s.angular_momentum_source = root.at("takeoff_angular_momentum_source").as_string();
@@ -348,6 +400,7 @@ ResultJson evaluation_result(const MotionFile& file, const MotionEvaluation& e,
   r.residual_check = residual_check(e.check);
   r.keyframe_errors = e.keyframe_errors;
   r.takeoff_angular_momentum = e.samples.front().angular_momentum;
+  set_joint_loads(r, file.model, e.check, nullptr);
   return r;
 }
 
@@ -381,6 +434,7 @@ ResultJson optimization_result(const MotionFile& file, const OptimizationResult&
   r.residual_check = residual_check(result.after.check);
   r.residual_check->optimizer_agrees = optimizer_agrees_with_check(result);
   r.keyframe_errors = result.after.keyframe_errors;
+  set_joint_loads(r, file.model, result.before.check, &result.after.check);
   ResultJson::Optimization o;
   o.optimizer_objective_before = result.optimizer_objective_before;
   o.optimizer_objective_after = result.optimizer_objective_after;

@@ -53,6 +53,18 @@ struct ResultJson {
   /// Of the evaluated or the optimised motion; none for simulations (null in the file).
   std::optional<KeyframeErrors> keyframe_errors;
   std::optional<Eigen::Vector3d> takeoff_angular_momentum;  ///< evaluations and simulations
+  /// Body weight m·g (N), the scale of "% of body weight"; missing from files before it.
+  std::optional<double> body_weight_N;
+  /// The peak load at each joint on the dense check's points (force N, moment N·m about the
+  /// joint centre, and when): of the evaluated or interpolated ("before") motion and, for
+  /// optimisations, of the optimised one; in model order, the root left out. Evaluations and
+  /// optimisations; missing from files before it.
+  struct JointLoad {
+    std::string joint;
+    JointLoadPeak before;
+    std::optional<JointLoadPeak> after;
+  };
+  std::vector<JointLoad> joint_loads;
 
   struct Simulation {
     /// "motion file", or "best constant fit to the motion's L(t)" ("keyframes" in older files)

@@ -94,6 +94,10 @@ struct MotionNlpOptions {
   /// starting J, so that a bad start (wrong timing) is not held near its own interpolation.
   /// Reported objectives are J alone. 0 disables it.
   double regularization = 1.0;
+  /// Weight w of the joint-acceleration term (JointAccelerationTerm, relaxed model): the joints'
+  /// angular accelerations stay near the starting motion's, in units of the joint moments they
+  /// ask for; w = 1 weighs a joint moment change like a root moment. 0 = none.
+  double joint_effort = 0.0;
   /// Weight w (N²) of the keyframe prior added to the relaxed objective:
   /// w·Σ_i (‖B(t_i) − B̄_i‖²/ε1² + Σ_k ‖Q_k(t_i) − Q̄_k‖²/ε2²), the strict model's keyframe
   /// distance in units of the tolerances. The tolerances let a motion meet its keyframes at

@@ -169,6 +169,18 @@ std::vector<OptionSpec> make_table() {
   bind(o, nlp, &MotionNlpOptions::regularization);
   t.push_back(o);
 
+  o = entry("joint_effort", "--joint-effort", "Joint effort", "",
+            "weight of the term that keeps each joint's angular acceleration near the starting "
+            "motion's, in units of the joint moment it asks for (acceleration times the inertia "
+            "the joint moves): the joints do not pay for a physical root, e.g. with kicks at "
+            "take-off; 1 weighs a joint moment like a root moment; 0 = none");
+  range(o, OptionKind::kReal, 0.0, kUnbounded);
+  record(o, "joint_effort", ResultRecord::kOptimization);
+  bind(o, nlp, &MotionNlpOptions::joint_effort);
+  o.applies = [](const OptimizeOptions& x) { return x.nlp.formulation == Formulation::kRelaxed; };
+  o.applies_when = "with --formulation relaxed";
+  t.push_back(o);
+
   o = entry("keyframe_weight", "--keyframe-weight", "Keyframe prior", "N²",
             "weight of the prior that prefers, among motions of nearly the same root force, the "
             "one closest to the keyframes (their distance in units of the tolerances): it is "
@@ -472,7 +484,7 @@ constexpr std::size_t member_count() {
 // Every member of the option structs is either an option of the table or one of the internal
 // settings below (or, like verbose and derivative_test_file, decides only what is logged). A new
 // member changes these counts: declare it in the table or below, then update the count.
-static_assert(member_count<MotionNlpOptions>() == 18, "new MotionNlpOptions member: declare it");
+static_assert(member_count<MotionNlpOptions>() == 19, "new MotionNlpOptions member: declare it");
 static_assert(member_count<DampingRule>() == 7, "new DampingRule member: declare it");
 static_assert(member_count<SolverOptions>() == 11, "new SolverOptions member: declare it");
 static_assert(member_count<OptimizeOptions>() == 4, "new OptimizeOptions member: declare it");

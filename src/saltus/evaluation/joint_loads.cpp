@@ -1,0 +1,41 @@
+#include "saltus/evaluation/joint_loads.h"
+
+#include <algorithm>
+
+#include "saltus/base/constants.h"
+
+namespace saltus {
+
+std::vector<JointLoadRise> joint_load_rises(const BodyModel& model, const DenseCheck& before,
+                                            const DenseCheck& after) {
+  std::vector<JointLoadRise> rises;
+  const int n = std::min({model.size(), static_cast<int>(before.joint_peaks.size()),
+                          static_cast<int>(after.joint_peaks.size())});
+  for (int k = 1; k < n; ++k) {
+    JointLoadRise r;
+    r.joint = model.segments[k].joint;
+    r.before = before.joint_peaks[k];
+    r.after = after.joint_peaks[k];
+    r.force_ratio = std::max(r.after.force_N, kJointForceFloorN) /
+                    std::max(r.before.force_N, kJointForceFloorN);
+    r.moment_ratio = std::max(r.after.moment_Nm, kJointMomentFloorNm) /
+                     std::max(r.before.moment_Nm, kJointMomentFloorNm);
+    rises.push_back(r);
+  }
+  return rises;
+}
+
+JointLoadRise largest_joint_load_rise(const BodyModel& model, const DenseCheck& before,
+                                      const DenseCheck& after) {
+  JointLoadRise largest;
+  bool found = false;
+  for (const JointLoadRise& r : joint_load_rises(model, before, after))
+    if (!found || r.ratio() > largest.ratio()) largest = r, found = true;
+  return largest;
+}
+
+double body_weight_N(const BodyModel& model) {
+  return model.total_mass() * kStandardGravity;
+}
+
+}  // namespace saltus
