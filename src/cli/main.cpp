@@ -85,6 +85,20 @@ void print_forces(const saltus::ForceMetrics& m) {
   std::printf("  root moment RMS %.4g N·m, max %.4g N·m\n", m.rms_moment_Nm, m.max_moment_Nm);
 }
 
+/// "1½ back somersaults with 2 twists to the left (tilt up to 24°, twisting at up to 2.1 rev/s)"
+/// from a result.json rotation block, as written.
+std::string rotation_words(const nlohmann::json& r) {
+  std::string out = r.at("description").get<std::string>();
+  char more[96];
+  const double rate = r.at("peak_twist_rate_rev_s").get<double>();
+  if (rate > 0)
+    std::snprintf(more, sizeof more, " (tilt up to %.0f deg, twisting at up to %.2g rev/s)",
+                  r.at("max_tilt_deg").get<double>(), rate);
+  else
+    std::snprintf(more, sizeof more, " (tilt up to %.0f deg)", r.at("max_tilt_deg").get<double>());
+  return out + more;
+}
+
 void print_outputs(const std::string& out_dir, double seconds) {
   std::printf("  wrote %s/{result.json, trajectory.csv, model.json} in %.3f s\n",
               absolute(out_dir).c_str(), seconds);
@@ -97,7 +111,7 @@ int run_evaluate(const CommonArgs& args) {
       saltus::load_motion_or_capture(args.motion_path, args.model_override);
   const saltus::EvaluateOptions options = options_from(args);
   const saltus::MotionEvaluation e = saltus::evaluate_motion(file.motion, file.model, options);
-  saltus::write_evaluation_outputs(args.out_dir, file, e, options);
+  const nlohmann::json written = saltus::write_evaluation_outputs(args.out_dir, file, e, options);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!args.quiet) {
@@ -106,6 +120,8 @@ int run_evaluate(const CommonArgs& args) {
     std::printf("  keyframes: max root translation error %.3g m, max rotation error %.3g deg\n",
                 e.keyframe_errors.max_translation_error_m,
                 e.keyframe_errors.max_rotation_error_deg);
+    std::printf("  Yeadon's angles: %s\n",
+                rotation_words(written.at("rotation").at("before")).c_str());
     print_outputs(args.out_dir, seconds);
   }
   return 0;
@@ -118,7 +134,7 @@ int run_simulate(const CommonArgs& args) {
       saltus::load_motion_or_capture(args.motion_path, args.model_override);
   const saltus::EvaluateOptions options = options_from(args);
   const saltus::SimulationResult s = saltus::simulate_motion(file.motion, file.model, options);
-  saltus::write_simulation_outputs(args.out_dir, file, s, options);
+  const nlohmann::json written = saltus::write_simulation_outputs(args.out_dir, file, s, options);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!args.quiet) {
@@ -131,6 +147,8 @@ int run_simulate(const CommonArgs& args) {
     std::printf("  the motion's own L(t) strays from that constant by %.3g kg·m²/s RMS\n",
                 s.angular_momentum_spread);
     print_forces(s.metrics);
+    std::printf("  Yeadon's angles of the free flight: %s\n",
+                rotation_words(written.at("rotation").at("before")).c_str());
     std::printf(
         "  landing vs last keyframe: whole-body orientation off by %.2f deg, CoM off the "
         "parabola by %.3g m\n",
@@ -158,7 +176,8 @@ int run_optimize(const CommonArgs& args) {
   };
   const saltus::OptimizationResult result =
       saltus::optimize_motion(file.motion, file.model, options, progress);
-  saltus::write_optimization_outputs(args.out_dir, file, result, options);
+  const nlohmann::json written =
+      saltus::write_optimization_outputs(args.out_dir, file, result, options);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!quiet) {
@@ -226,6 +245,9 @@ int run_optimize(const CommonArgs& args) {
       std::printf(" (soft limit %.0f deg, or the interpolation's own turn)",
                   values.real("max_joint_turn"));
     std::printf("\n");
+    std::printf("  Yeadon's angles: %s before; %s after\n",
+                rotation_words(written.at("rotation").at("before")).c_str(),
+                rotation_words(written.at("rotation").at("after")).c_str());
     const saltus::JointLoadRise rise =
         saltus::largest_joint_load_rise(file.model, result.before.check, result.after.check);
     if (!rise.joint.empty()) {

@@ -79,9 +79,10 @@ TEST(Cli, EvaluateWritesTheDocumentedOutputs) {
   std::string header;
   std::getline(csv, header);
   EXPECT_EQ(header.rfind("t,abdomen.x,abdomen.y,abdomen.z,abdomen.qw", 0), 0u) << header;
-  EXPECT_NE(header.find(",com_x,com_y,com_z,root_fx,root_fy,root_fz,root_mx,root_my,root_mz,"
-                        "res_fx,res_fy,res_fz,res_mx,res_my,res_mz"),
-            std::string::npos);
+  EXPECT_NE(
+      header.find(",com_x,com_y,com_z,root_fx,root_fy,root_fz,root_mx,root_my,root_mz,"
+                  "res_fx,res_fy,res_fz,res_mx,res_my,res_mz,somersault_deg,tilt_deg,twist_deg"),
+      std::string::npos);
   int rows = 0;
   for (std::string line; std::getline(csv, line);)
     ++rows;

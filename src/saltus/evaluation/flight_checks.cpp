@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "saltus/base/constants.h"
+#include "saltus/evaluation/yeadon_angles.h"
 #include "saltus/motion/interpolate.h"
 
 namespace saltus {
@@ -44,8 +45,7 @@ FlightChecks flight_checks(const Takeoff& takeoff, const std::vector<SampleRecor
 
 double forward_somersault_sign(const SampleRecord& takeoff) {
   if (takeoff.segment_rotation.empty()) throw std::invalid_argument("sample without a pose");
-  const Eigen::Vector3d left = takeoff.segment_rotation.front() * Eigen::Vector3d::UnitX();
-  return left.x() >= 0.0 ? 1.0 : -1.0;
+  return forward_somersault_sign(takeoff.segment_rotation.front());
 }
 
 }  // namespace saltus

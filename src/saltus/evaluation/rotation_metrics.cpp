@@ -4,6 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "saltus/base/constants.h"
+#include "saltus/evaluation/yeadon_angles.h"
+
 namespace saltus {
 
 Eigen::Matrix3d whole_body_inertia_about_com(const BodyModel& model, const SampleRecord& sample) {
@@ -38,14 +41,19 @@ std::vector<RotationSample> rotation_metrics(const BodyModel& model,
     r.somersault_rate = r.angular_velocity.x();
     const Eigen::Vector3d long_axis = record.segment_rotation[0] * Eigen::Vector3d::UnitY();
     r.twist_rate = r.angular_velocity.dot(long_axis);
-    if (k > 0) {
-      const RotationSample& previous = out.back();
-      const double dt = r.time - previous.time;
-      r.somersaults = previous.somersaults +
-                      0.5 * dt * (previous.somersault_rate + r.somersault_rate) / (2.0 * M_PI);
-      r.twists = previous.twists + 0.5 * dt * (previous.twist_rate + r.twist_rate) / (2.0 * M_PI);
-    }
     out.push_back(r);
+  }
+  // Yeadon's angles of the root, and the turns counted by them from the first sample.
+  std::vector<Eigen::Quaterniond> roots;
+  for (const SampleRecord& record : samples)
+    roots.push_back(record.segment_rotation.at(0));
+  const std::vector<Eigen::Vector3d> angles = unwrapped_angles(roots);
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    out[k].somersault_deg = angles[k][0] * kDegreesPerRadian;
+    out[k].tilt_deg = angles[k][1] * kDegreesPerRadian;
+    out[k].twist_deg = angles[k][2] * kDegreesPerRadian;
+    out[k].somersaults = (angles[k][0] - angles[0][0]) / (2.0 * M_PI);
+    out[k].twists = (angles[k][2] - angles[0][2]) / (2.0 * M_PI);
   }
   return out;
 }

@@ -2,10 +2,10 @@
 /// @file
 /// Whole-body rotation quantities for teaching why a tucked body spins faster: the angular
 /// momentum about the centre of mass (constant in a valid flight), the whole-body moment of
-/// inertia about the CoM, the whole-body angular velocity ω = I⁻¹·L and the somersaults and twists
-/// counted by integrating it. Everything is derived from SampleRecords (segment poses and the
-/// angular momentum that inverse dynamics computed through dynamics/momentum.h), so front ends
-/// show these numbers without re-implementing any physics.
+/// inertia about the CoM, the whole-body angular velocity ω = I⁻¹·L, and Yeadon's somersault,
+/// tilt and twist angles with the turns counted by them. Everything is derived from SampleRecords
+/// (segment poses and the angular momentum that inverse dynamics computed through
+/// dynamics/momentum.h), so front ends show these numbers without re-implementing any physics.
 
 #include <Eigen/Core>
 #include <vector>
@@ -30,11 +30,15 @@ struct RotationSample {
   /// ω_x, rad/s: somersault rate about the world x axis (negative = backward,
   /// docs/method.md, "Conventions").
   double somersault_rate = 0.0;
-  /// ω projected on the root segment's long axis (its y axis in the world), rad/s.
+  /// ω projected on the root segment's long axis (its y axis in the world), rad/s: the spin
+  /// about the body's long axis (not Yeadon's twist rate, which is relative to the somersault).
   double twist_rate = 0.0;
-  /// Somersaults since the first sample, revolutions: ∫ somersault_rate dt / 2π (signed).
+  /// Yeadon's somersault φ, tilt θ and twist ψ of the root, degrees (yeadon_angles.h), φ and ψ
+  /// continuous over the samples.
+  double somersault_deg = 0.0, tilt_deg = 0.0, twist_deg = 0.0;
+  /// Somersaults and twists since the first sample, revolutions: (φ − φ₀)/360° and
+  /// (ψ − ψ₀)/360° (signed: < 0 backward; > 0 to the left).
   double somersaults = 0.0;
-  /// Twists since the first sample, revolutions: ∫ twist_rate dt / 2π (signed).
   double twists = 0.0;
 };
 
@@ -43,9 +47,8 @@ struct RotationSample {
 /// @param sample  must hold one pose per model segment (as evaluate_trajectory fills it)
 Eigen::Matrix3d whole_body_inertia_about_com(const BodyModel& model, const SampleRecord& sample);
 
-/// Rotation quantities at every sample. Counts integrate the rates with the trapezoidal rule from
-/// the first sample, so they are as fine as the sample grid. Throws std::invalid_argument if a
-/// sample does not hold one pose per segment.
+/// Rotation quantities at every sample (consecutive samples less than half a turn apart). Throws
+/// std::invalid_argument if a sample does not hold one pose per segment.
 std::vector<RotationSample> rotation_metrics(const BodyModel& model,
                                              const std::vector<SampleRecord>& samples);
 

@@ -121,6 +121,27 @@ nlohmann::json joint_peak_json(const JointLoadPeak& p, double body_weight) {
           {"peak_moment_time_s", p.moment_time_s}};
 }
 
+nlohmann::json rotation_json(const YeadonSummary& s) {
+  return {{"somersaults", s.somersaults},
+          {"twists", s.twists},
+          {"description", s.description},
+          {"max_tilt_deg", s.max_tilt_deg},
+          {"peak_twist_rate_rev_s", s.peak_twist_rate_rev_s},
+          {"peak_twist_rate_time_s", s.peak_twist_rate_time_s}};
+}
+
+YeadonSummary read_rotation(const JsonNode& node) {
+  node.require_object();
+  YeadonSummary s;
+  s.somersaults = node.at("somersaults").as_double();
+  s.twists = node.at("twists").as_double();
+  s.description = node.at("description").as_string();
+  s.max_tilt_deg = node.at("max_tilt_deg").as_double();
+  s.peak_twist_rate_rev_s = node.at("peak_twist_rate_rev_s").as_double();
+  s.peak_twist_rate_time_s = node.at("peak_twist_rate_time_s").as_double();
+  return s;
+}
+
 bool read_bool(const JsonNode& node) {
   if (!node.value().is_boolean()) node.fail("expected true or false");
   return node.value().get<bool>();
@@ -235,6 +256,10 @@ nlohmann::json result_to_json(const ResultJson& r) {
     }
     j["joint_loads"] = loads;
   }
+  if (r.rotation_before) {
+    j["rotation"]["before"] = rotation_json(*r.rotation_before);
+    if (r.rotation_after) j["rotation"]["after"] = rotation_json(*r.rotation_after);
+  }
   if (const auto& s = r.simulation) {
     j["takeoff_angular_momentum_source"] = s->angular_momentum_source;
     nlohmann::json joints = nlohmann::json::object();
@@ -318,6 +343,11 @@ ResultJson parse_result_json(const nlohmann::json& document, const std::string& 
   if (const auto momentum = root.find("takeoff_angular_momentum"))
     r.takeoff_angular_momentum = momentum->as_vector3();
   if (const auto weight = root.find("body_weight_N")) r.body_weight_N = weight->as_double();
+  if (const auto rotation = root.find("rotation")) {
+    rotation->require_object();
+    r.rotation_before = read_rotation(rotation->at("before"));
+    if (const auto after = rotation->find("after")) r.rotation_after = read_rotation(*after);
+  }
   if (const auto loads = root.find("joint_loads")) {
     loads->require_object();
     const auto peak = [](const JsonNode& node) {
@@ -401,6 +431,7 @@ ResultJson evaluation_result(const MotionFile& file, const MotionEvaluation& e,
   r.keyframe_errors = e.keyframe_errors;
   r.takeoff_angular_momentum = e.samples.front().angular_momentum;
   set_joint_loads(r, file.model, e.check, nullptr);
+  r.rotation_before = yeadon_summary(e.trajectory, options.samples);
   return r;
 }
 
@@ -411,6 +442,10 @@ ResultJson simulation_result(const MotionFile& file, const SimulationResult& s,
   for (const Keyframe& k : file.motion.keyframes)
     r.keyframe_times_before.push_back(k.time);
   r.takeoff_angular_momentum = s.angular_momentum;
+  std::vector<Eigen::Quaterniond> roots;
+  for (const SampleRecord& sample : s.samples)
+    roots.push_back(sample.segment_rotation.at(0));
+  r.rotation_before = yeadon_summary(roots);
   ResultJson::Simulation sim;
   sim.angular_momentum_source =
       s.angular_momentum_from_file ? "motion file" : "best constant fit to the motion's L(t)";
@@ -435,6 +470,8 @@ ResultJson optimization_result(const MotionFile& file, const OptimizationResult&
   r.residual_check->optimizer_agrees = optimizer_agrees_with_check(result);
   r.keyframe_errors = result.after.keyframe_errors;
   set_joint_loads(r, file.model, result.before.check, &result.after.check);
+  r.rotation_before = yeadon_summary(result.before.trajectory, options.nlp.samples);
+  r.rotation_after = yeadon_summary(result.after.trajectory, options.nlp.samples);
   ResultJson::Optimization o;
   o.optimizer_objective_before = result.optimizer_objective_before;
   o.optimizer_objective_after = result.optimizer_objective_after;

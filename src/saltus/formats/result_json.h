@@ -15,6 +15,7 @@
 
 #include "saltus/evaluation/evaluate.h"
 #include "saltus/evaluation/simulate.h"
+#include "saltus/evaluation/yeadon_angles.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/formats/trajectory_csv.h"
 #include "saltus/optim/optimize.h"
@@ -65,6 +66,10 @@ struct ResultJson {
     std::optional<JointLoadPeak> after;
   };
   std::vector<JointLoad> joint_loads;
+  /// Yeadon's somersaults, twists, largest tilt and peak twist rate (evaluation/yeadon_angles.h)
+  /// of the evaluated, simulated or interpolated motion and of the optimised one; missing from
+  /// files before them. A simulation's peak rate is not known (its samples hold no ω): 0.
+  std::optional<YeadonSummary> rotation_before, rotation_after;
 
   struct Simulation {
     /// "motion file", or "best constant fit to the motion's L(t)" ("keyframes" in older files)

@@ -4,7 +4,9 @@
 #include <fstream>
 #include <iterator>
 
+#include "saltus/base/constants.h"
 #include "saltus/base/input_error.h"
+#include "saltus/evaluation/yeadon_angles.h"
 
 namespace saltus {
 
@@ -15,6 +17,8 @@ const char* const kTrailingColumns[15] = {"com_x",   "com_y",   "com_z",   "root
                                           "root_fz", "root_mx", "root_my", "root_mz", "res_fx",
                                           "res_fy",  "res_fz",  "res_mx",  "res_my",  "res_mz"};
 const char* const kSegmentColumns[7] = {".x", ".y", ".z", ".qw", ".qx", ".qy", ".qz"};
+/// Yeadon's angles of the root (evaluation/yeadon_angles.h), last; files before them end at res_mz.
+const char* const kAngleColumns[3] = {"somersault_deg", "tilt_deg", "twist_deg"};
 
 [[noreturn]] void bad_column(const std::string& file, std::size_t index, const std::string& found,
                              const std::string& expected) {
@@ -31,6 +35,8 @@ std::vector<std::string> trajectory_csv_header(const BodyModel& model) {
     for (const char* c : kSegmentColumns)
       h.push_back(s.name + c);
   for (const char* c : kTrailingColumns)
+    h.emplace_back(c);
+  for (const char* c : kAngleColumns)
     h.emplace_back(c);
   return h;
 }
@@ -53,7 +59,12 @@ void write_trajectory_csv(std::ostream& out, const BodyModel& model,
     line.push_back(',');
     append(v);
   };
-  for (const SampleRecord& r : samples) {
+  std::vector<Eigen::Quaterniond> roots;
+  for (const SampleRecord& r : samples)
+    roots.push_back(r.segment_rotation.at(0));
+  const std::vector<Eigen::Vector3d> angles = unwrapped_angles(roots);
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    const SampleRecord& r = samples[k];
     line.clear();
     append(r.time);
     for (int s = 0; s < model.size(); ++s) {
@@ -69,6 +80,8 @@ void write_trajectory_csv(std::ostream& out, const BodyModel& model,
       put(r.root_wrench[i]);
     for (int i = 0; i < 6; ++i)
       put(r.residual[i]);
+    for (int i = 0; i < 3; ++i)
+      put(angles[k][i] * kDegreesPerRadian);
     line.push_back('\n');
     out << line;
   }
@@ -83,13 +96,17 @@ TrajectoryCsv read_trajectory_csv(const std::string& path) {
 TrajectoryCsv parse_trajectory_csv(std::istream& in, const std::string& file) {
   const CsvTable table = parse_csv_table(in, file);
   const std::vector<std::string>& columns = table.columns;
-  const std::size_t trailing = std::size(kTrailingColumns);
+  const bool has_angles = columns.size() >= 3 && columns.back() == kAngleColumns[2];
+  const std::size_t angle_count = has_angles ? std::size(kAngleColumns) : 0;
+  const std::size_t trailing = std::size(kTrailingColumns) + angle_count;
   if (columns.empty() || columns[0] != "t")
     bad_column(file, 0, columns.empty() ? "" : columns[0], "\"t\"");
   if (columns.size() < 1 + trailing || (columns.size() - 1 - trailing) % 7 != 0)
-    throw InputError(file, "line 1",
-                     std::to_string(columns.size()) +
-                         " columns: expected t, 7 per segment, then com_x ... res_mz");
+    throw InputError(
+        file, "line 1",
+        std::to_string(columns.size()) +
+            " columns: expected t, 7 per segment, then com_x ... res_mz (and somersault_deg, "
+            "tilt_deg, twist_deg)");
   TrajectoryCsv out;
   const std::size_t segments = (columns.size() - 1 - trailing) / 7;
   for (std::size_t s = 0; s < segments; ++s) {
@@ -103,10 +120,14 @@ TrajectoryCsv parse_trajectory_csv(std::istream& in, const std::string& file) {
         bad_column(file, 1 + 7 * s + c, columns[1 + 7 * s + c],
                    "\"" + out.segments.back() + kSegmentColumns[c] + "\"");
   }
-  for (std::size_t c = 0; c < trailing; ++c)
-    if (columns[1 + 7 * segments + c] != kTrailingColumns[c])
+  for (std::size_t c = 0; c < trailing; ++c) {
+    const char* expected = c < std::size(kTrailingColumns)
+                               ? kTrailingColumns[c]
+                               : kAngleColumns[c - std::size(kTrailingColumns)];
+    if (columns[1 + 7 * segments + c] != expected)
       bad_column(file, 1 + 7 * segments + c, columns[1 + 7 * segments + c],
-                 std::string("\"") + kTrailingColumns[c] + "\"");
+                 std::string("\"") + expected + "\"");
+  }
 
   out.samples.reserve(table.rows.size());
   for (const std::vector<double>& row : table.rows) {
@@ -122,6 +143,7 @@ TrajectoryCsv parse_trajectory_csv(std::istream& in, const std::string& file) {
       r.root_wrench[i] = v[3 + i];
       r.residual[i] = v[9 + i];
     }
+    if (has_angles) out.angles_deg.emplace_back(v[15], v[16], v[17]);
     out.samples.push_back(std::move(r));
   }
   return out;

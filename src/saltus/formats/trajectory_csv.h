@@ -1,7 +1,9 @@
 #pragma once
 /// @file
 /// The trajectory CSV of docs/formats.md: one row per sample; columns t; per segment S (model
-/// order) S.x,S.y,S.z,S.qw,S.qx,S.qy,S.qz; com_x..z; root_fx..root_mz (F1..F6); res_fx..res_mz.
+/// order) S.x,S.y,S.z,S.qw,S.qx,S.qy,S.qz; com_x..z; root_fx..root_mz (F1..F6); res_fx..res_mz;
+/// somersault_deg, tilt_deg, twist_deg (Yeadon's angles of the root, evaluation/yeadon_angles.h;
+/// files written before them end at res_mz and still read).
 
 #include <istream>
 #include <ostream>
@@ -28,6 +30,8 @@ struct TrajectoryCsv {
   /// One per row: time, segment positions and rotations, CoM, root wrench and residual as
   /// written; the quantities the file does not hold are left zero or empty.
   std::vector<SampleRecord> samples;
+  /// Per row: somersault, tilt and twist (degrees, φ and ψ continuous); empty for older files.
+  std::vector<Eigen::Vector3d> angles_deg;
 };
 
 /// Reads a trajectory CSV. Throws InputError naming the file and the line, or the column that

@@ -1,7 +1,7 @@
 // Joint loads (evaluation/joint_loads.h and the dense check's joint peaks): a body that keeps its
-// shape and does not turn falls with every joint unloaded to rounding (each segment's weight is all the
-// acceleration it has); the dense peaks are the largest loads found on a much finer grid; ratios
-// are after over before with small loads counted at the floors.
+// shape and does not turn falls with every joint unloaded to rounding (each segment's weight is all
+// the acceleration it has); the dense peaks are the largest loads found on a much finer grid;
+// ratios are after over before with small loads counted at the floors.
 
 #include "saltus/evaluation/joint_loads.h"
 

@@ -7,6 +7,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include "saltus/evaluation/yeadon_angles.h"
+
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -122,14 +126,45 @@ std::string temp_file(const std::string& name, const std::string& text) {
 TEST(TrajectoryCsv, HeaderHasTimePosesCentreOfMassRootWrenchAndResidual) {
   const BodyModel model = test::bundled_model();
   const std::vector<std::string> h = trajectory_csv_header(model);
-  ASSERT_EQ(h.size(), 1u + 7u * model.size() + 15u);
+  ASSERT_EQ(h.size(), 1u + 7u * model.size() + 18u);
   EXPECT_EQ(h[0], "t");
   EXPECT_EQ(h[1], model.segments[0].name + ".x");
   EXPECT_EQ(h[7], model.segments[0].name + ".qz");
   EXPECT_EQ(h[8], model.segments[1].name + ".x");
   EXPECT_EQ(h[1 + 7 * model.size()], "com_x");
-  EXPECT_EQ(h[h.size() - 7], "root_mz");
-  EXPECT_EQ(h.back(), "res_mz");
+  EXPECT_EQ(h[h.size() - 10], "root_mz");
+  EXPECT_EQ(h[h.size() - 4], "res_mz");
+  EXPECT_EQ(h[h.size() - 3], "somersault_deg");
+  EXPECT_EQ(h.back(), "twist_deg");
+}
+
+TEST(TrajectoryCsv, FilesWithoutTheAnglesStillReadAndTheAnglesReadBack) {
+  const BodyModel m = model();
+  std::stringstream file;
+  write_trajectory_csv(file, m, random_samples(m, 3, 5));
+  const TrajectoryCsv with = parse_trajectory_csv(file, "new.csv");
+  ASSERT_EQ(with.angles_deg.size(), 5u);
+  // The angles are Yeadon's of each row's root rotation.
+  for (std::size_t k = 0; k < 5; ++k) {
+    const Eigen::Vector3d raw = somersault_tilt_twist(with.samples[k].segment_rotation[0]);
+    EXPECT_NEAR(with.angles_deg[k][1], raw[1] * 180.0 / M_PI, 1e-9);
+    for (int i : {0, 2})
+      EXPECT_NEAR(std::remainder(with.angles_deg[k][i] - raw[i] * 180.0 / M_PI, 360.0), 0.0, 1e-9);
+  }
+  // An older file: the same rows without the three last columns.
+  std::string older;
+  std::string line;
+  std::stringstream again(file.str());
+  while (std::getline(again, line)) {
+    for (int cut = 0; cut < 3; ++cut)
+      line.erase(line.rfind(','));
+    older += line + "\n";
+  }
+  std::stringstream old_file(older);
+  const TrajectoryCsv without = parse_trajectory_csv(old_file, "old.csv");
+  EXPECT_TRUE(without.angles_deg.empty());
+  ASSERT_EQ(without.samples.size(), 5u);
+  EXPECT_EQ(without.samples[4].residual, with.samples[4].residual);
 }
 
 TEST(TrajectoryCsv, EveryNumberReadsBackExactly) {
