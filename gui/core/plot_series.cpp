@@ -253,7 +253,8 @@ ChartSpec joint_load_chart(const BodyModel& model, int segment,
 
 std::vector<std::string> rotation_quantity_names() {
   return {"Moment of inertia and somersault rate", "Angular momentum about the CoM",
-          "Somersault and twist rates", "Somersaults and twists counted"};
+          "Somersault and twist rates", "Somersaults and twists counted",
+          "Somersault, tilt and twist (Yeadon)"};
 }
 
 ChartSpec rotation_chart(RotationQuantity quantity, const std::vector<RotationSample>& before,
@@ -304,14 +305,14 @@ ChartSpec rotation_chart(RotationQuantity quantity, const std::vector<RotationSa
            {0.05, 0.55, 0.55},
            false,
            [](const RotationSample& s) { return s.somersault_rate; }},
-          {"twist",
+          {"spin about the long axis",
            {0.85, 0.45, 0.10},
            false,
            [](const RotationSample& s) { return s.twist_rate; }},
       };
       break;
     case RotationQuantity::kCounts:
-      chart.title = "Somersaults and twists so far (about world x and the body's long axis)";
+      chart.title = "Somersaults and twists so far (Yeadon's angles of the trunk)";
       chart.y_title = "revolutions";
       quantities = {
           {"somersaults",
@@ -319,6 +320,21 @@ ChartSpec rotation_chart(RotationQuantity quantity, const std::vector<RotationSa
            false,
            [](const RotationSample& s) { return s.somersaults; }},
           {"twists", {0.85, 0.45, 0.10}, false, [](const RotationSample& s) { return s.twists; }},
+      };
+      break;
+    case RotationQuantity::kYeadonAngles:
+      chart.title = "Somersault φ, tilt θ and twist ψ of the trunk (Yeadon's angles)";
+      chart.y_title = "angle (°)";
+      quantities = {
+          {"somersault φ",
+           {0.05, 0.55, 0.55},
+           false,
+           [](const RotationSample& s) { return s.somersault_deg; }},
+          {"tilt θ", {0.55, 0.25, 0.75}, false, [](const RotationSample& s) { return s.tilt_deg; }},
+          {"twist ψ",
+           {0.85, 0.45, 0.10},
+           false,
+           [](const RotationSample& s) { return s.twist_deg; }},
       };
       break;
   }

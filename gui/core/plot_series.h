@@ -112,7 +112,8 @@ enum class RotationQuantity {
   kInertiaAndRate,   ///< I_xx (left) and |somersault rate| (right): the tuck's teaching plot
   kAngularMomentum,  ///< L_x, L_y, L_z about the CoM: constant in a valid flight
   kRates,            ///< somersault and twist rates
-  kCounts,           ///< somersaults and twists counted so far
+  kCounts,           ///< somersaults and twists counted so far (Yeadon's angles)
+  kYeadonAngles,     ///< somersault, tilt and twist of the trunk, degrees
 };
 /// Menu names in enum order.
 std::vector<std::string> rotation_quantity_names();

@@ -145,7 +145,12 @@ TEST_F(PlotSeriesTest, RotationChartsShowTheLibrarysRotationMetrics) {
   EXPECT_DOUBLE_EQ(momentum.lines[0].y[7], rotation[7].angular_momentum.x());
   const ChartSpec counts = rotation_chart(RotationQuantity::kCounts, rotation, nullptr);
   EXPECT_DOUBLE_EQ(counts.lines[0].y.back(), rotation.back().somersaults);
-  EXPECT_EQ(rotation_quantity_names().size(), 4u);
+  const ChartSpec angles = rotation_chart(RotationQuantity::kYeadonAngles, rotation, nullptr);
+  ASSERT_EQ(angles.lines.size(), 3u);
+  EXPECT_DOUBLE_EQ(angles.lines[1].y.back(), rotation.back().tilt_deg);
+  EXPECT_NEAR(angles.lines[0].y.back() - angles.lines[0].y.front(),
+              360.0 * rotation.back().somersaults, 1e-9);
+  EXPECT_EQ(rotation_quantity_names().size(), 5u);
 }
 
 TEST_F(PlotSeriesTest, ReadsTheSameSeriesFromATrajectoryCsv) {
