@@ -49,6 +49,7 @@ if [ "$mode" = demo ]; then
   stage "configure and build saltus and saltus-gui (Release)"
   cmake --preset release >/dev/null
   cmake --build --preset release -j"$(nproc)" --target saltus_cli saltus_gui
+  stage "the bundled motions: evaluate, simulate, optimise"
   motion=examples/motions/M1-straight-back-somersault.motion.json
   echo "== saltus evaluate $motion"
   build/release/bin/saltus evaluate "$motion" --out out/M1-evaluate

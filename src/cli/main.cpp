@@ -21,6 +21,7 @@
 #include "saltus/evaluation/force_metrics.h"
 #include "saltus/evaluation/joint_loads.h"
 #include "saltus/evaluation/simulate.h"
+#include "saltus/evaluation/twist_sources.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/formats/output_folder.h"
 #include "saltus/formats/result_json.h"
@@ -274,6 +275,31 @@ int run_optimize(const CommonArgs& args) {
   return result.solve.solved ? 0 : kExitNotSolved;
 }
 
+int run_analyse_twist(const CommonArgs& args) {
+  const auto start = std::chrono::steady_clock::now();
+  saltus::check_output_folder(args.out_dir);
+  const saltus::MotionFile file =
+      saltus::load_motion_or_capture(args.motion_path, args.model_override);
+  const saltus::EvaluateOptions options = options_from(args);
+  const saltus::TwistSources sources = saltus::twist_sources(file.motion, file.model, options);
+  const nlohmann::json written = saltus::write_twist_outputs(args.out_dir, file, sources);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!args.quiet) {
+    print_header("analyse twist", file, options);
+    std::printf("  %s\n", written.at("sentence").get<std::string>().c_str());
+    for (const nlohmann::json& share : written.at("shares"))
+      std::printf("  %-10s %7.1f deg of tilt at mid-flight (%.0f %%)\n",
+                  share.at("source").get<std::string>().c_str(), share.at("tilt_deg").get<double>(),
+                  share.at("percent").get<double>());
+    std::printf("  together beyond their separate effects: %.1f deg\n",
+                written.at("interaction_deg").get<double>());
+    std::printf("  wrote %s/{result.json, twist.csv, twist.md} in %.3f s\n",
+                absolute(args.out_dir).c_str(), seconds);
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -308,6 +334,17 @@ int main(int argc, char** argv) {
       "converge (results are still written)");
   add_common(optimize, optimize_args, saltus::OptionUse::kOptimization);
 
+  CLI::App* analyse = app.add_subcommand(
+      "analyse", "Analyses of a motion: `analyse twist` (where the twist comes from)");
+  analyse->require_subcommand(1);
+  CommonArgs twist_args;
+  CLI::App* twist = analyse->add_subcommand(
+      "twist",
+      "Where the twist comes from: the tilt at mid-flight of the motion's free flight split into "
+      "the take-off's share and each aerial movement's (left arm, right arm, legs, trunk), by "
+      "Yeadon's counterfactual free flights; writes result.json, twist.csv, twist.md");
+  add_common(twist, twist_args, saltus::OptionUse::kEvaluation);
+
   saltus::cli::StudyVerbs study_verbs(app, argc, argv);  // study convergence|mass|merge, paper
 
   saltus_cli::CaptureVerbs capture_verbs;
@@ -330,6 +367,7 @@ int main(int argc, char** argv) {
     if (evaluate->parsed()) return run_evaluate(evaluate_args);
     if (simulate->parsed()) return run_simulate(simulate_args);
     if (optimize->parsed()) return run_optimize(optimize_args);
+    if (twist->parsed()) return run_analyse_twist(twist_args);
     if (const auto status = study_verbs.run()) return *status;
     if (auto status = saltus_cli::run_capture_verbs(capture_verbs)) return *status;
   } catch (const saltus::InputError& e) {

@@ -77,6 +77,15 @@ const std::vector<ResultKind>& result_kinds() {
        {"figures"},
        {"cases"},
        true},
+      // saltus analyse twist.
+      {"analyse twist",
+       "saltus-analysis/1",
+       "analysis",
+       {"twist"},
+       {"result.json", "twist.csv", "twist.md"},
+       {},
+       {},
+       false},
       // A shard of a study (--shard I/N): its records and, for the report, its runs' folders.
       {"study shard",
        "saltus-study-shard/1",
@@ -214,8 +223,7 @@ std::string foreign_content_at(const fs::path& folder, int depth) {
   }
   if (foreign.empty()) return "";
   return "it holds " + some_names(foreign) + ", which Saltus does not write in " +
-         (kind->name == "import" || kind->name == "evaluate" || kind->name == "optimize" ? "an "
-                                                                                         : "a ") +
+         (std::string("aeiou").find(kind->name.front()) != std::string::npos ? "an " : "a ") +
          kind->name + " result";
 }
 

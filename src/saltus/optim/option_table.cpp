@@ -523,10 +523,12 @@ nlohmann::json internal_settings(const OptimizeOptions& o) {
 }  // namespace
 
 nlohmann::json result_deciding_settings(const OptimizeOptions& options) {
+  // As a run uses them: an option that does not apply is recorded at the value it acts with.
+  const OptimizeOptions effective = effective_options(options);
   nlohmann::json settings = nlohmann::json::object();
   for (const OptionSpec& spec : option_table())
-    settings[spec.name] = option_value_json(spec.read(options));
-  settings["internal"] = internal_settings(options);
+    settings[spec.name] = option_value_json(spec.read(effective));
+  settings["internal"] = internal_settings(effective);
   return settings;
 }
 

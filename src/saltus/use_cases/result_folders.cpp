@@ -9,6 +9,7 @@
 #include "saltus/formats/output_folder.h"
 #include "saltus/formats/result_json.h"
 #include "saltus/formats/trajectory_csv.h"
+#include "saltus/formats/twist_files.h"
 
 namespace saltus {
 
@@ -82,6 +83,18 @@ nlohmann::json write_optimization_outputs(const std::string& out_dir, const Moti
   write_common_files(folder, file, r);
   folder.commit();
   return r;
+}
+
+nlohmann::json write_twist_outputs(const std::string& out_dir, const MotionFile& file,
+                                   const TwistSources& sources) {
+  const nlohmann::json result = twist_result_json(file, sources);
+  require_finite(result, file.path);
+  OutputFolder folder(out_dir);
+  write_text(folder.file("twist.csv"), twist_csv(sources));
+  write_text(folder.file("twist.md"), twist_markdown(file, sources));
+  write_text(folder.file("result.json"), result.dump(2) + "\n");
+  folder.commit();
+  return result;
 }
 
 nlohmann::json write_mass_outputs(const std::string& out_dir, const MotionFile& file,

@@ -9,6 +9,7 @@
 
 #include "saltus/evaluation/evaluate.h"
 #include "saltus/evaluation/simulate.h"
+#include "saltus/evaluation/twist_sources.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/optim/optimize.h"
 #include "saltus/studies/mass_study.h"
@@ -29,6 +30,10 @@ nlohmann::json write_simulation_outputs(const std::string& out_dir, const Motion
 nlohmann::json write_optimization_outputs(const std::string& out_dir, const MotionFile& file,
                                           const OptimizationResult& result,
                                           const OptimizeOptions& options);
+
+/// DIR/{result.json, twist.csv, twist.md} of `saltus analyse twist`, atomically.
+nlohmann::json write_twist_outputs(const std::string& out_dir, const MotionFile& file,
+                                   const TwistSources& sources);
 
 /// DIR/{result.json, mass.csv, mass.md, model.json (given), model_scaled.json} atomically.
 nlohmann::json write_mass_outputs(const std::string& out_dir, const MotionFile& file,

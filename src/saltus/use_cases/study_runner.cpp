@@ -89,8 +89,7 @@ StudyRunResult run_study(const StudyJob& job, const std::string& out_dir,
   }
   // Checks DIR before any case runs (an hour of work must not end in "not overwriting it").
   OutputFolder folder(out.string());
-  fs::create_directories(partial / "cases");
-  write_text((partial / "study.json").string(), study_manifest_json(manifest).dump(2) + "\n");
+  write_study_folder(partial.string(), manifest, {});
 
   std::map<int, CaseRecord> records = read_case_records(partial.string(), cases, &job.case_names);
   std::vector<int> todo;

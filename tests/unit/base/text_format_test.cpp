@@ -16,6 +16,10 @@ TEST(FormatNumber, AppliesThePrintfPattern) {
   EXPECT_EQ(format_number("±%g s", 0.05), "±0.05 s");
   EXPECT_EQ(format_number("%.1f %%", 12.25), "12.2 %");  // round half to even, as printf does
   EXPECT_EQ(format_number("%5.0f|", -2.5), "   -2|");
+  // A pattern longer than any buffer is written whole, not cut.
+  const std::string text(200, 'x');
+  EXPECT_EQ(format_number((text + " %.1f").c_str(), 1.0), text + " 1.0");
+  EXPECT_EQ(format_number("%.0f", 1e300).size(), 301u);
 }
 
 TEST(MessageNumber, GivesSixSignificantDigitsLikePercentG) {

@@ -412,6 +412,14 @@ TEST(OptionTable, TheSettingsThatDecideAResultNameEveryOptionAndEveryInternalSet
     internal[i](o);
     EXPECT_NE(result_deciding_settings(o), base) << "internal setting " << i;
   }
+  // An option that does not apply is recorded at the value the run uses: on fixed knots the
+  // keyframe prior is 0 whatever it was set to.
+  OptionValues fixed;
+  fixed.set("knots_per_interval", 1);
+  const nlohmann::json fixed_record = result_deciding_settings(fixed.optimize_options());
+  fixed.set("keyframe_weight", 33.0);
+  EXPECT_EQ(result_deciding_settings(fixed.optimize_options()), fixed_record);
+  EXPECT_EQ(fixed_record["keyframe_weight"], 0.0);
   // What decides only the log does not.
   OptimizeOptions logged;
   logged.solver.verbose = true;

@@ -1,0 +1,54 @@
+#pragma once
+/// @file
+/// Where a twist comes from, by Yeadon's method of counterfactual free flights (M. R. Yeadon,
+/// "The biomechanics of twisting somersaults", J. Sports Sci. 11, 1993): a twist needs tilt,
+/// and the tilt at mid-flight comes from the take-off (angular momentum tilted from the
+/// somersault axis) and from asymmetric movements in the air. Each aerial movement's share is
+/// the tilt it adds: the actual free flight's tilt minus that of the same flight with the
+/// movement replaced by its symmetric part (with_symmetric_joints: an arm by the mean of itself
+/// and the other arm's mirror image, legs and trunk likewise); the take-off's share is the tilt
+/// of the flight with every movement made symmetric. The shares add up to the whole only as far as
+/// the movements act independently; `interaction_deg` says how far.
+
+#include <string>
+#include <vector>
+
+#include "saltus/evaluation/evaluate.h"
+
+namespace saltus {
+
+struct TwistShare {
+  std::string source;     ///< "take-off", "left arm", "right arm", "legs", "trunk"
+  double tilt_deg = 0.0;  ///< its share of the tilt at the reference time
+  double percent = 0.0;   ///< of the total tilt (signed: < 0 works against it)
+};
+
+struct TwistSources {
+  double reference_time_s = 0.0;   ///< mid-flight, T/2
+  double total_tilt_deg = 0.0;     ///< of the motion's own free flight at the reference time
+  double twists = 0.0;             ///< Yeadon's twists of that free flight (revolutions)
+  std::vector<TwistShare> shares;  ///< the take-off first, then each aerial movement
+  /// total − Σ shares: what the movements do together beyond their separate effects.
+  double interaction_deg = 0.0;
+  /// Tilt over time (degrees, at `times`) of the actual flight and of each counterfactual, in
+  /// the order: actual, every movement symmetric (take-off only), then without each movement.
+  std::vector<double> times;
+  std::vector<std::string> flight_names;
+  std::vector<std::vector<double>> tilt_deg;
+  /// "Of the 24° of tilt at mid-flight, 70 % came from the right arm, 28 % from the take-off."
+  std::string sentence;
+};
+
+/// Flies the motion (its take-off angular momentum: the motion file's, or the constant that
+/// best fits its own L(t), as simulate_motion) and its counterfactuals, all with the same
+/// take-off state. Throws std::invalid_argument when the model lacks a left-right pair.
+TwistSources twist_sources(const Motion& motion, const BodyModel& model,
+                           const EvaluateOptions& options = {});
+
+/// The motion with each joint of `joints` replaced by its symmetric part: the mean of its rotation
+/// and the mirror image (in the body's sagittal plane) of its counterpart's (*_l ↔ *_r; an
+/// unpaired joint's own), keyframe by keyframe. The other joints, the root and the take-off stay.
+Motion with_symmetric_joints(const Motion& motion, const BodyModel& model,
+                             const std::vector<std::string>& joints);
+
+}  // namespace saltus

@@ -1,0 +1,22 @@
+#pragma once
+/// @file
+/// `saltus analyse twist`'s files (docs/formats.md, "Twist analysis"): result.json (the shares
+/// of the tilt at mid-flight and the sentence), twist.csv (the tilt over time of the actual free
+/// flight and of each counterfactual) and twist.md (the table).
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "saltus/evaluation/twist_sources.h"
+#include "saltus/formats/motion_file.h"
+
+namespace saltus {
+
+inline constexpr const char* kAnalysisFormat = "saltus-analysis/1";
+
+nlohmann::json twist_result_json(const MotionFile& file, const TwistSources& sources);
+/// t, then one tilt column (degrees) per flight: actual, take_off_only, without_left_arm, ...
+std::string twist_csv(const TwistSources& sources);
+std::string twist_markdown(const MotionFile& file, const TwistSources& sources);
+
+}  // namespace saltus
