@@ -1,6 +1,7 @@
-// The family sweep (README "Performance"): default `optimize_motion` on physically exact flights
-// (studies/exact_flights.h) and on every bundled motion. Run by name, one run each:
-//   build/release/tests/saltus_benchmarks --benchmark_filter='Family|Bundled'
+// The family sweeps (docs/performance.md): default `optimize_motion` on physically exact flights
+// (studies/exact_flights.h: the mixed family and the twisting one) and on every bundled motion.
+// Run by name, one run each:
+//   build/release/tests/saltus_benchmarks --benchmark_filter='Family|Twisting|Bundled'
 // The smoke run in ctest leaves these out.
 
 #include <benchmark/benchmark.h>
@@ -11,6 +12,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "saltus/evaluation/simulate.h"
 #include "saltus/formats/model_file.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/optim/optimize.h"
@@ -27,23 +29,25 @@ double percentile(std::vector<double> values, double p) {
   return values[low] + (at - low) * (values[high] - values[low]);
 }
 
-/// Seeds 1..N (N = the argument) as generated (Arg 0 of the shift) or with their interior times
-/// moved by up to ±0.1 s. Counters: cases, solved, the share at or below 0.5 N, the median and
-/// worst true residual (N), the median and 95th-percentile wall time (s) and, with moved times,
-/// how much of the total timing error the optimisation removed (%): over the family, and the
-/// mean of each flight's own cut (the "on average").
-void BM_FamilyOfExactFlights(benchmark::State& bench) {
+/// Seeds 1..N of a family (N = the first argument) as generated (second argument 0) or with
+/// their interior times moved by up to ±0.1 s. Counters: cases, solved, the share at or below
+/// 0.5 N, the median and worst true residual (N), the median and 95th-percentile wall time (s)
+/// and the median wall time per second of flight, the worst angle between the free flight of the
+/// optimised motion and the optimised motion itself at landing (°) and, with moved times, how
+/// much of the total timing error the optimisation removed (%): over the family, and the mean of
+/// each flight's own cut.
+void sweep_family(benchmark::State& bench, ExactFlight (*make)(const BodyModel&, std::uint64_t)) {
   const int count = static_cast<int>(bench.range(0));
   const bool moved = bench.range(1) != 0;
   const BodyModel model =
       load_body_model(std::string(SALTUS_RESOURCES_DIR) + "/models/zatsiorsky-66kg.json");
   for (auto _ : bench) {
-    std::vector<double> forces, seconds;
+    std::vector<double> forces, seconds, per_flight_second;
     int solved = 0, near_zero = 0;
-    double error_before = 0.0, error_after = 0.0, cut_sum = 0.0;
+    double error_before = 0.0, error_after = 0.0, cut_sum = 0.0, worst_landing = 0.0;
     int cut_count = 0;
     for (int seed = 1; seed <= count; ++seed) {
-      const ExactFlight f = make_exact_flight(model, static_cast<std::uint64_t>(seed));
+      const ExactFlight f = make(model, static_cast<std::uint64_t>(seed));
       const Motion motion =
           moved ? disturb_interior_times(f.motion, 0.1, static_cast<std::uint64_t>(seed))
                 : f.motion;
@@ -51,10 +55,13 @@ void BM_FamilyOfExactFlights(benchmark::State& bench) {
       const OptimizationResult r = optimize_motion(motion, model, {});
       seconds.push_back(
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      per_flight_second.push_back(seconds.back() / motion.flight_time());
       const double force = r.after.metrics.avg_root_force;
       forces.push_back(force);
       solved += r.solve.solved;
       near_zero += r.solve.solved && force <= 0.5;
+      worst_landing =
+          std::max(worst_landing, simulate_motion(r.optimized_motion, model).landing_vs_motion_deg);
       double before = 0.0, after = 0.0;
       for (std::size_t i = 0; i < motion.keyframes.size(); ++i) {
         before += std::abs(motion.keyframes[i].time - f.motion.keyframes[i].time);
@@ -74,12 +81,29 @@ void BM_FamilyOfExactFlights(benchmark::State& bench) {
     bench.counters["worst_N"] = *std::max_element(forces.begin(), forces.end());
     bench.counters["median_s"] = percentile(seconds, 0.5);
     bench.counters["p95_s"] = percentile(seconds, 0.95);
+    bench.counters["median_s_per_flight_s"] = percentile(per_flight_second, 0.5);
+    bench.counters["worst_landing_vs_motion_deg"] = worst_landing;
     if (moved) {
       bench.counters["timing_error_cut_pct"] = 100.0 * (1.0 - error_after / error_before);
       bench.counters["mean_flight_cut_pct"] = 100.0 * cut_sum / std::max(1, cut_count);
     }
   }
 }
+
+void BM_FamilyOfExactFlights(benchmark::State& bench) {
+  sweep_family(bench, make_exact_flight);
+}
+
+/// The twisting family (make_twisting_flight): twists from the take-off and from an arm.
+void BM_TwistingExactFlights(benchmark::State& bench) {
+  sweep_family(bench, make_twisting_flight);
+}
+BENCHMARK(BM_TwistingExactFlights)
+    ->Args({40, 0})
+    ->Args({20, 1})
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
+
 BENCHMARK(BM_FamilyOfExactFlights)
     ->Args({100, 0})
     ->Args({50, 1})

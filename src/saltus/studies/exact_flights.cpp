@@ -8,6 +8,7 @@
 #include "saltus/base/constants.h"
 #include "saltus/base/text_format.h"
 #include "saltus/dynamics/free_flight.h"
+#include "saltus/evaluation/yeadon_angles.h"
 #include "saltus/math/quaternion.h"
 #include "saltus/motion/interpolate.h"
 
@@ -159,6 +160,61 @@ std::vector<double> accumulated_turn(const std::vector<BodyState<double>>& state
   return out;
 }
 
+/// Flies the joints from `initial`, records the root's turn in `f`, keyframes the flight at
+/// times a user would type (two decimals, roughly even, no more than 150° of root turn between
+/// neighbours and at least 0.06 s apart where the time allows) and stores the exact motion.
+void keyframe_flight(const BodyModel& model, Random& r, const JointMotion& joint_motion,
+                     const FreeFlightOptions& flight_options, const FreeFlightInitialState& initial,
+                     double duration, const std::vector<double>& fine, ExactFlight& f) {
+  const int fine_count = static_cast<int>(fine.size()) - 1;
+  const std::vector<BodyState<double>> flown =
+      simulate_free_flight(model, joint_motion, initial, fine, flight_options);
+  const std::vector<double> turn = accumulated_turn(flown);
+  f.root_turn_deg = turn.back() * kDegreesPerRadian;
+
+  // Keyframe times as a user types them (two decimals, roughly even), with no more than 150° of
+  // root turn between neighbours and at least 0.06 s apart where the time allows.
+  const auto turn_at = [&](double t) {
+    const double s = t / duration * fine_count;
+    const int i = std::clamp(static_cast<int>(s), 0, fine_count - 1);
+    return turn[i] + (s - i) * (turn[i + 1] - turn[i]);
+  };
+  const int fewest = std::max(5, static_cast<int>(std::ceil(f.root_turn_deg / 110.0)) + 1);
+  const int most_keys = std::max(fewest, std::min(25, static_cast<int>(duration / 0.06) + 1));
+  int count = r.integer(fewest, most_keys);
+  std::vector<double> times;
+  for (;; ++count) {
+    times.assign(1, 0.0);
+    const double h = duration / (count - 1);
+    for (int i = 1; i + 1 < count; ++i) {
+      double t = two_decimals(i * h + r.uniform(-0.25, 0.25) * h);
+      if (t <= times.back() + 0.015) t = two_decimals(i * h);
+      times.push_back(t);
+    }
+    times.push_back(duration);
+    bool fine_enough = true;
+    for (std::size_t i = 0; i + 1 < times.size(); ++i)
+      fine_enough = fine_enough && times[i + 1] > times[i] + 0.005 &&
+                    (turn_at(times[i + 1]) - turn_at(times[i])) * kDegreesPerRadian <= 150.0;
+    if (fine_enough || count >= 40) break;
+  }
+
+  const std::vector<BodyState<double>> at_keys =
+      simulate_free_flight(model, joint_motion, initial, times, flight_options);
+  f.motion.name = "exact flight " + std::to_string(f.seed);
+  f.motion.model = model.name;
+  f.motion.takeoff.com_position = initial.com_position;
+  f.motion.takeoff.com_velocity = initial.com_velocity;
+  f.motion.takeoff.angular_momentum = initial.angular_momentum;
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    Keyframe k;
+    k.time = times[i];
+    for (const auto& joint : at_keys[i].joints)
+      k.rotations.push_back(joint.q);
+    f.motion.keyframes.push_back(std::move(k));
+  }
+}
+
 }  // namespace
 
 std::string ExactFlight::description() const {
@@ -166,6 +222,10 @@ std::string ExactFlight::description() const {
   out += format_number(", %.2f somersaults ", std::abs(somersaults)) +
          (somersaults < 0 ? "backwards" : "forwards");
   if (twists > 0) out += format_number(", %.1f twists", twists);
+  if (twist_source == "take-off")
+    out += format_number(", twist from the take-off (momentum tilted %.0f deg)", takeoff_tilt_deg);
+  else if (twist_source == "arm")
+    out += ", twist from one arm";
   out += platform ? format_number(", platform %.0f m", drop_m) : std::string(", trampoline");
   out += format_number(", %.2f s", motion.flight_time());
   out += ", " + std::to_string(motion.keyframes.size()) + " keyframes";
@@ -251,52 +311,112 @@ ExactFlight make_exact_flight(const BodyModel& model, std::uint64_t seed) {
   if (f.twists > 0)
     initial.angular_momentum.y() = (r.chance(0.5) ? 1.0 : -1.0) * 2.0 * kPi * f.twists * 1.2 *
                                    model.total_mass() / 66.0 / duration;
-  const std::vector<BodyState<double>> flown =
-      simulate_free_flight(model, joint_motion, initial, fine, flight_options);
-  const std::vector<double> turn = accumulated_turn(flown);
-  f.root_turn_deg = turn.back() * kDegreesPerRadian;
+  keyframe_flight(model, r, joint_motion, flight_options, initial, duration, fine, f);
+  return f;
+}
 
-  // Keyframe times as a user types them (two decimals, roughly even), with no more than 150° of
-  // root turn between neighbours and at least 0.06 s apart where the time allows.
-  const auto turn_at = [&](double t) {
-    const double s = t / duration * fine_count;
-    const int i = std::clamp(static_cast<int>(s), 0, fine_count - 1);
-    return turn[i] + (s - i) * (turn[i + 1] - turn[i]);
-  };
-  const int fewest = std::max(5, static_cast<int>(std::ceil(f.root_turn_deg / 110.0)) + 1);
-  const int most_keys = std::max(fewest, std::min(25, static_cast<int>(duration / 0.06) + 1));
-  int count = r.integer(fewest, most_keys);
-  std::vector<double> times;
-  for (;; ++count) {
-    times.assign(1, 0.0);
-    const double h = duration / (count - 1);
-    for (int i = 1; i + 1 < count; ++i) {
-      double t = two_decimals(i * h + r.uniform(-0.25, 0.25) * h);
-      if (t <= times.back() + 0.015) t = two_decimals(i * h);
-      times.push_back(t);
+ExactFlight make_twisting_flight(const BodyModel& model, std::uint64_t seed) {
+  Random r(seed ^ 0x7457495354ull);  // "tWIST": a stream apart from make_exact_flight's
+  ExactFlight f;
+  f.seed = seed;
+  const double duration = two_decimals(r.uniform(1.0, 2.0));
+  const bool from_takeoff = r.chance(0.5);
+  // A piked body hardly twists, and a contact twist run through a pike can untwist: the twists
+  // from the take-off are layouts, those from an arm layouts or pikes that open.
+  f.shape = !from_takeoff && r.chance(0.5) ? FlightShape::kPiked : FlightShape::kStraight;
+  f.twist_source = from_takeoff ? "take-off" : "arm";
+  const double turns_per_second = f.shape == FlightShape::kStraight ? 0.85 : 1.3;
+  const int quarters = std::max(4, static_cast<int>(std::floor(turns_per_second * duration * 4)));
+  const double direction = r.chance(0.5) ? -1.0 : 1.0;
+  f.somersaults = direction * r.integer(4, std::min(quarters, 8)) / 4.0;
+
+  const double g = kStandardGravity;
+  const Eigen::Vector3d velocity(r.uniform(-0.1, 0.1), g * duration / 2.0, r.uniform(-0.3, 0.3));
+  const Eigen::Vector3d position(0.0, r.uniform(1.0, 1.3), 0.0);
+
+  // Arms overhead at take-off; then the shape, with both arms in (twisting from the take-off)
+  // or one arm brought to the side early while the other stays up (twisting from the air).
+  Pose takeoff = takeoff_pose(r);
+  draw_arms(r, takeoff, -180, -160, 0, 10, -10, 0);
+  // A pike opens to a layout for the twist (a piked body hardly twists: its long-axis inertia).
+  Pose early = shape_pose(r, f.shape, from_takeoff);
+  Pose late = shape_pose(r, FlightShape::kStraight, from_takeoff);
+  if (!from_takeoff) {
+    const bool left_down = r.chance(0.5);
+    for (Pose* p : {&early, &late}) {
+      const double up = r.uniform(-178, -165), down = r.uniform(-25, -5);
+      (left_down ? p->shoulder_l : p->shoulder_r) = down;
+      (left_down ? p->shoulder_r : p->shoulder_l) = up;
+      p->abduct_l = p->abduct_r = r.uniform(0, 6);
     }
-    times.push_back(duration);
-    bool fine_enough = true;
-    for (std::size_t i = 0; i + 1 < times.size(); ++i)
-      fine_enough = fine_enough && times[i + 1] > times[i] + 0.005 &&
-                    (turn_at(times[i + 1]) - turn_at(times[i])) * kDegreesPerRadian <= 150.0;
-    if (fine_enough || count >= 40) break;
   }
-
-  const std::vector<BodyState<double>> at_keys =
-      simulate_free_flight(model, joint_motion, initial, times, flight_options);
-  f.motion.name = "exact flight " + std::to_string(seed);
-  f.motion.model = model.name;
-  f.motion.takeoff.com_position = initial.com_position;
-  f.motion.takeoff.com_velocity = initial.com_velocity;
-  f.motion.takeoff.angular_momentum = initial.angular_momentum;
-  for (std::size_t i = 0; i < times.size(); ++i) {
-    Keyframe k;
-    k.time = times[i];
-    for (const auto& joint : at_keys[i].joints)
-      k.rotations.push_back(joint.q);
-    f.motion.keyframes.push_back(std::move(k));
+  Motion source;
+  source.model = model.name;
+  source.keyframes = {pose_keyframe(model, 0.0, takeoff),
+                      pose_keyframe(model, duration * r.uniform(0.12, 0.22), early),
+                      pose_keyframe(model, duration * r.uniform(0.6, 0.75), late),
+                      pose_keyframe(model, duration, landing_pose(r))};
+  const Trajectory<double> joints = interpolate_keyframes(source, model);
+  const JointMotion joint_motion = [&joints](double t, BodyState<double>& s) {
+    for (int k = 1; k < joints.segment_count(); ++k) {
+      const auto q = joints.rotations[k].evaluate(t);
+      s.joints[k] = {q.q, q.omega, q.alpha};
+    }
+  };
+  FreeFlightOptions flight_options;
+  for (const Keyframe& k : source.keyframes)
+    flight_options.breakpoints.push_back(k.time);
+  FreeFlightInitialState initial;
+  initial.com_position = position;
+  initial.com_velocity = velocity;
+  std::vector<double> fine;
+  const int fine_count = static_cast<int>(std::ceil(duration / 0.005));
+  for (int i = 0; i <= fine_count; ++i)
+    fine.push_back(duration * i / fine_count);
+  // Somersault: L about x scaled twice by the turn it gives; then, twisting from the take-off,
+  // tilted from the somersault axis towards the body's long axis (upright at take-off: y), so
+  // that the long axis leans out of the plane the body somersaults in (a contact twist).
+  initial.angular_momentum = Eigen::Vector3d(30.0 * direction, 0.0, 0.0);
+  for (int pass = 0; pass < 2; ++pass) {
+    const double turned =
+        accumulated_turn(simulate_free_flight(model, joint_motion, initial, fine, flight_options))
+            .back();
+    initial.angular_momentum.x() *= std::abs(f.somersaults) * 2.0 * kPi / turned;
   }
+  if (from_takeoff) {
+    // A twist count in halves, 1 to 3 as the time allows; the tilt that gives it (twists grow
+    // nearly like sin(tilt)), within 5-30°.
+    const double wanted =
+        r.integer(2, std::max(2, std::min(6, static_cast<int>(4 * duration) - 2))) / 2.0;
+    const double sign = r.chance(0.5) ? 1.0 : -1.0;
+    const double L = initial.angular_momentum.x();
+    const auto tilted = [&](double deg) {
+      const double a = deg / kDegreesPerRadian;
+      return Eigen::Vector3d(L * std::cos(a), sign * std::abs(L) * std::sin(a), 0.0);
+    };
+    double deg = 15.0;
+    for (int pass = 0; pass < 3; ++pass) {
+      initial.angular_momentum = tilted(deg);
+      std::vector<Eigen::Quaterniond> roots;
+      for (const BodyState<double>& state :
+           simulate_free_flight(model, joint_motion, initial, fine, flight_options))
+        roots.push_back(state.joints[0].q);
+      const double got = std::abs(yeadon_summary(roots).twists);
+      const double scaled = std::asin(
+          std::min(1.0, std::sin(deg / kDegreesPerRadian) * wanted / std::max(got, 1e-3)));
+      deg = std::clamp(scaled * kDegreesPerRadian, 5.0, 30.0);
+    }
+    f.takeoff_tilt_deg = sign * deg;
+    initial.angular_momentum = tilted(deg);
+  }
+  keyframe_flight(model, r, joint_motion, flight_options, initial, duration, fine, f);
+  std::vector<Eigen::Quaterniond> roots;
+  for (const BodyState<double>& state :
+       simulate_free_flight(model, joint_motion, initial, fine, flight_options))
+    roots.push_back(state.joints[0].q);
+  f.flown_twists = yeadon_summary(roots).twists;
+  f.twists = std::abs(f.flown_twists);
+  f.motion.name = "twisting exact flight " + std::to_string(seed);
   return f;
 }
 

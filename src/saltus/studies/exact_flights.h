@@ -21,11 +21,17 @@ enum class FlightShape { kTucked, kPiked, kStraight };
 struct ExactFlight {
   std::uint64_t seed = 0;
   FlightShape shape = FlightShape::kStraight;
-  bool platform = false;            ///< platform take-off (lands lower), else trampoline
-  double drop_m = 0.0;              ///< take-off CoM height above the landing CoM height
-  double somersaults = 0.0;         ///< asked for, turns (negative: backwards)
-  double twists = 0.0;              ///< asked for, turns about the body's long axis
-  double root_turn_deg = 0.0;       ///< the root's accumulated turn over the flight, as flown
+  bool platform = false;       ///< platform take-off (lands lower), else trampoline
+  double drop_m = 0.0;         ///< take-off CoM height above the landing CoM height
+  double somersaults = 0.0;    ///< asked for, turns (negative: backwards)
+  double twists = 0.0;         ///< asked for, turns about the body's long axis
+  double root_turn_deg = 0.0;  ///< the root's accumulated turn over the flight, as flown
+  /// Twisting flights (make_twisting_flight): where the twist comes from, "take-off" (angular
+  /// momentum tilted from the somersault axis by takeoff_tilt_deg) or "arm" (one arm brought
+  /// down early while the other stays overhead); "" for make_exact_flight's.
+  std::string twist_source;
+  double takeoff_tilt_deg = 0.0;
+  double flown_twists = 0.0;        ///< Yeadon's twists of the flight as flown (revolutions)
   Motion motion;                    ///< keyframes read off the flight, its exact take-off state
   std::string description() const;  ///< "seed 7: tucked, 2.0 somersaults backwards, ..."
 };
@@ -34,6 +40,13 @@ struct ExactFlight {
 /// thoracic, shoulders, elbows, hips, knees). Deterministic: the same seed, the same flight, on
 /// any machine (its own random numbers, not the standard library's distributions).
 ExactFlight make_exact_flight(const BodyModel& model, std::uint64_t seed);
+
+/// The twisting flight drawn from `seed`: a layout (or, twisting from an arm, a pike opening to a
+/// layout) of 1.0-2.0 s with at least one
+/// somersault, whose twist comes from the take-off (angular momentum tilted 5-30° from the
+/// somersault axis towards the body's long axis) or from the air (one arm adducting early, the other overhead). Deterministic
+/// like make_exact_flight, from a stream of its own.
+ExactFlight make_twisting_flight(const BodyModel& model, std::uint64_t seed);
 
 /// `motion` with each interior keyframe time moved by up to ±max_shift (s), drawn from `seed`,
 /// each move limited to 40 % of the gap towards its neighbours so the order stays; first and last

@@ -97,5 +97,40 @@ TEST(ExactFlights, DisturbedTimesStayInOrderAndTyped) {
   }
 }
 
+TEST(ExactFlights, TwistingFlightsTwistFromWhereTheySay) {
+  const BodyModel model = test::bundled_model();
+  int from_takeoff = 0, from_arm = 0;
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    const ExactFlight f = make_twisting_flight(model, seed);
+    SCOPED_TRACE(f.description());
+    EXPECT_EQ(make_twisting_flight(model, seed).description(), f.description());
+    const double duration = f.motion.flight_time();
+    EXPECT_GE(duration, 1.0);
+    EXPECT_LE(duration, 2.0);
+    EXPECT_GE(std::abs(f.somersaults), 1.0);
+    ASSERT_TRUE(f.motion.takeoff.angular_momentum);
+    const Eigen::Vector3d L = *f.motion.takeoff.angular_momentum;
+    // The momentum's tilt from the somersault axis is the one drawn, and only the take-off
+    // twists have one.
+    const double tilt = std::atan2(L.y(), std::abs(L.x())) * kDegreesPerRadian;
+    if (f.twist_source == "take-off") {
+      ++from_takeoff;
+      EXPECT_NEAR(tilt, f.takeoff_tilt_deg, 1e-9);
+      EXPECT_GE(std::abs(tilt), 5.0 - 1e-9);
+      EXPECT_LE(std::abs(tilt), 30.0 + 1e-9);
+    } else {
+      ++from_arm;
+      EXPECT_EQ(f.twist_source, "arm");
+      EXPECT_EQ(L.y(), 0.0);
+      EXPECT_EQ(L.z(), 0.0);
+    }
+    // They twist: from the take-off at least the one twist asked for nearly (the tilt is bounded
+    // by 30°), from one arm a little at least.
+    EXPECT_GE(std::abs(f.flown_twists), f.twist_source == "take-off" ? 0.75 : 0.05);
+  }
+  EXPECT_GT(from_takeoff, 0);
+  EXPECT_GT(from_arm, 0);
+}
+
 }  // namespace
 }  // namespace saltus
