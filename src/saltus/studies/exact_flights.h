@@ -42,10 +42,10 @@ struct ExactFlight {
 ExactFlight make_exact_flight(const BodyModel& model, std::uint64_t seed);
 
 /// The twisting flight drawn from `seed`: a layout (or, twisting from an arm, a pike opening to a
-/// layout) of 1.0-2.0 s with at least one
-/// somersault, whose twist comes from the take-off (angular momentum tilted 5-30° from the
-/// somersault axis towards the body's long axis) or from the air (one arm adducting early, the
-/// other overhead). Deterministic like make_exact_flight, from a stream of its own.
+/// layout) of 1.0-2.0 s with at least one somersault, whose twist comes from the take-off
+/// (angular momentum tilted 5-30° from the somersault axis towards the body's long axis) or from
+/// the air (one arm adducting early, the other overhead). Deterministic like make_exact_flight,
+/// from a stream of its own.
 ExactFlight make_twisting_flight(const BodyModel& model, std::uint64_t seed);
 
 /// `motion` with each interior keyframe time moved by up to ±max_shift (s), drawn from `seed`,
