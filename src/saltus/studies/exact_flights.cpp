@@ -160,6 +160,43 @@ std::vector<double> accumulated_turn(const std::vector<BodyState<double>>& state
   return out;
 }
 
+/// The joints of a C² spline through the poses of `source`, as the free flight moves them, and
+/// the flight's breakpoints at the poses' times.
+struct PosedJoints {
+  Trajectory<double> joints;
+  FreeFlightOptions flight_options;
+  PosedJoints(const Motion& source, const BodyModel& model)
+      : joints(interpolate_keyframes(source, model)) {
+    for (const Keyframe& k : source.keyframes)
+      flight_options.breakpoints.push_back(k.time);
+  }
+  JointMotion motion() const {
+    return [this](double t, BodyState<double>& s) {
+      for (int k = 1; k < joints.segment_count(); ++k) {
+        const auto q = joints.rotations[k].evaluate(t);
+        s.joints[k] = {q.q, q.omega, q.alpha};
+      }
+    };
+  }
+};
+
+/// The flight's fine grid: 5 ms apart, both ends included.
+std::vector<double> fine_times(double duration) {
+  std::vector<double> fine;
+  const int count = static_cast<int>(std::ceil(duration / 0.005));
+  for (int i = 0; i <= count; ++i)
+    fine.push_back(duration * i / count);
+  return fine;
+}
+
+/// Yeadon's twists of a flown flight (revolutions).
+double flown_twists(const std::vector<BodyState<double>>& flown) {
+  std::vector<Eigen::Quaterniond> roots;
+  for (const BodyState<double>& state : flown)
+    roots.push_back(state.joints[0].q);
+  return yeadon_summary(roots).twists;
+}
+
 /// Flies the joints from `initial`, records the root's turn in `f`, keyframes the flight at
 /// times a user would type (two decimals, roughly even, no more than 150° of root turn between
 /// neighbours and at least 0.06 s apart where the time allows) and stores the exact motion.
@@ -275,26 +312,16 @@ ExactFlight make_exact_flight(const BodyModel& model, std::uint64_t seed) {
       pose_keyframe(model, duration * r.uniform(0.12, 0.3), shape_pose(r, f.shape, f.twists > 0)),
       pose_keyframe(model, duration * r.uniform(0.6, 0.8), shape_pose(r, f.shape, f.twists > 0)),
       pose_keyframe(model, duration, landing_pose(r))};
-  const Trajectory<double> joints = interpolate_keyframes(source, model);
-  const JointMotion joint_motion = [&joints](double t, BodyState<double>& s) {
-    for (int k = 1; k < joints.segment_count(); ++k) {
-      const auto q = joints.rotations[k].evaluate(t);
-      s.joints[k] = {q.q, q.omega, q.alpha};
-    }
-  };
-  FreeFlightOptions flight_options;
-  for (const Keyframe& k : source.keyframes)
-    flight_options.breakpoints.push_back(k.time);
+  const PosedJoints posed(source, model);
+  const JointMotion joint_motion = posed.motion();
+  const FreeFlightOptions& flight_options = posed.flight_options;
 
   FreeFlightInitialState initial;
   initial.com_position = position;
   initial.com_velocity = velocity;
   initial.root_orientation = Eigen::Quaterniond(
       Eigen::AngleAxisd(r.uniform(-15.0, 15.0) / kDegreesPerRadian, Eigen::Vector3d::UnitX()));
-  std::vector<double> fine;
-  const int fine_count = static_cast<int>(std::ceil(duration / 0.005));
-  for (int i = 0; i <= fine_count; ++i)
-    fine.push_back(duration * i / fine_count);
+  const std::vector<double> fine = fine_times(duration);
   // Somersault: L about x scaled twice by the turn it gives (the turn is nearly proportional
   // to L; the joints' own movement adds a little).
   if (f.somersaults != 0.0) {
@@ -356,23 +383,13 @@ ExactFlight make_twisting_flight(const BodyModel& model, std::uint64_t seed) {
                       pose_keyframe(model, duration * r.uniform(0.12, 0.22), early),
                       pose_keyframe(model, duration * r.uniform(0.6, 0.75), late),
                       pose_keyframe(model, duration, landing_pose(r))};
-  const Trajectory<double> joints = interpolate_keyframes(source, model);
-  const JointMotion joint_motion = [&joints](double t, BodyState<double>& s) {
-    for (int k = 1; k < joints.segment_count(); ++k) {
-      const auto q = joints.rotations[k].evaluate(t);
-      s.joints[k] = {q.q, q.omega, q.alpha};
-    }
-  };
-  FreeFlightOptions flight_options;
-  for (const Keyframe& k : source.keyframes)
-    flight_options.breakpoints.push_back(k.time);
+  const PosedJoints posed(source, model);
+  const JointMotion joint_motion = posed.motion();
+  const FreeFlightOptions& flight_options = posed.flight_options;
   FreeFlightInitialState initial;
   initial.com_position = position;
   initial.com_velocity = velocity;
-  std::vector<double> fine;
-  const int fine_count = static_cast<int>(std::ceil(duration / 0.005));
-  for (int i = 0; i <= fine_count; ++i)
-    fine.push_back(duration * i / fine_count);
+  const std::vector<double> fine = fine_times(duration);
   // Somersault: L about x scaled twice by the turn it gives; then, twisting from the take-off,
   // tilted from the somersault axis towards the body's long axis (upright at take-off: y), so
   // that the long axis leans out of the plane the body somersaults in (a contact twist).
@@ -397,11 +414,8 @@ ExactFlight make_twisting_flight(const BodyModel& model, std::uint64_t seed) {
     double deg = 15.0;
     for (int pass = 0; pass < 3; ++pass) {
       initial.angular_momentum = tilted(deg);
-      std::vector<Eigen::Quaterniond> roots;
-      for (const BodyState<double>& state :
-           simulate_free_flight(model, joint_motion, initial, fine, flight_options))
-        roots.push_back(state.joints[0].q);
-      const double got = std::abs(yeadon_summary(roots).twists);
+      const double got = std::abs(
+          flown_twists(simulate_free_flight(model, joint_motion, initial, fine, flight_options)));
       const double scaled = std::asin(
           std::min(1.0, std::sin(deg / kDegreesPerRadian) * wanted / std::max(got, 1e-3)));
       deg = std::clamp(scaled * kDegreesPerRadian, 5.0, 30.0);
@@ -410,11 +424,8 @@ ExactFlight make_twisting_flight(const BodyModel& model, std::uint64_t seed) {
     initial.angular_momentum = tilted(deg);
   }
   keyframe_flight(model, r, joint_motion, flight_options, initial, duration, fine, f);
-  std::vector<Eigen::Quaterniond> roots;
-  for (const BodyState<double>& state :
-       simulate_free_flight(model, joint_motion, initial, fine, flight_options))
-    roots.push_back(state.joints[0].q);
-  f.flown_twists = yeadon_summary(roots).twists;
+  f.flown_twists =
+      flown_twists(simulate_free_flight(model, joint_motion, initial, fine, flight_options));
   f.twists = std::abs(f.flown_twists);
   f.motion.name = "twisting exact flight " + std::to_string(seed);
   return f;
