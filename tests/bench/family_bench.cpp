@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "saltus/evaluation/joint_loads.h"
 #include "saltus/evaluation/simulate.h"
 #include "saltus/formats/model_file.h"
 #include "saltus/formats/motion_file.h"
@@ -35,14 +36,16 @@ double percentile(std::vector<double> values, double p) {
 /// and the median wall time per second of flight, the worst angle between the free flight of the
 /// optimised motion and the optimised motion itself at landing (°) and, with moved times, how
 /// much of the total timing error the optimisation removed (%): over the family, and the mean of
-/// each flight's own cut.
+/// each flight's own cut; and the joint loads: the largest rise of a joint's peak load against
+/// the interpolated input's (evaluation/joint_loads.h), median and worst, and the share of
+/// flights where no joint's peak rose past 1.5×.
 void sweep_family(benchmark::State& bench, ExactFlight (*make)(const BodyModel&, std::uint64_t)) {
   const int count = static_cast<int>(bench.range(0));
   const bool moved = bench.range(1) != 0;
   const BodyModel model =
       load_body_model(std::string(SALTUS_RESOURCES_DIR) + "/models/zatsiorsky-66kg.json");
   for (auto _ : bench) {
-    std::vector<double> forces, seconds, per_flight_second;
+    std::vector<double> forces, seconds, per_flight_second, joint_rises;
     int solved = 0, near_zero = 0;
     double error_before = 0.0, error_after = 0.0, cut_sum = 0.0, worst_landing = 0.0;
     int cut_count = 0;
@@ -58,6 +61,7 @@ void sweep_family(benchmark::State& bench, ExactFlight (*make)(const BodyModel&,
       per_flight_second.push_back(seconds.back() / motion.flight_time());
       const double force = r.after.metrics.avg_root_force;
       forces.push_back(force);
+      joint_rises.push_back(largest_joint_load_rise(model, r.before.check, r.after.check).ratio());
       solved += r.solve.solved;
       near_zero += r.solve.solved && force <= 0.5;
       worst_landing =
@@ -83,6 +87,12 @@ void sweep_family(benchmark::State& bench, ExactFlight (*make)(const BodyModel&,
     bench.counters["p95_s"] = percentile(seconds, 0.95);
     bench.counters["median_s_per_flight_s"] = percentile(per_flight_second, 0.5);
     bench.counters["worst_landing_vs_motion_deg"] = worst_landing;
+    bench.counters["median_joint_rise"] = percentile(joint_rises, 0.5);
+    bench.counters["worst_joint_rise"] = *std::max_element(joint_rises.begin(), joint_rises.end());
+    bench.counters["joint_rise_at_most_1.5_pct"] =
+        100.0 *
+        std::count_if(joint_rises.begin(), joint_rises.end(), [](double r) { return r <= 1.5; }) /
+        count;
     if (moved) {
       bench.counters["timing_error_cut_pct"] = 100.0 * (1.0 - error_after / error_before);
       bench.counters["mean_flight_cut_pct"] = 100.0 * cut_sum / std::max(1, cut_count);
