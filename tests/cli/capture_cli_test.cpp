@@ -129,6 +129,34 @@ TEST(CaptureCli, BadInputExitsWithTwoNamesTheProblemAndWritesNothing) {
   }
 }
 
+TEST(CaptureCli, ExportWritesOnlyNewFiles) {
+  // --out FILE is never replaced (Saltus cannot tell its own BVH from a user's file), nothing is
+  // written through a link, and a refusal leaves the folder as it was.
+  const TempDir dir;
+  write_text(dir / "thesis.tex", "\\chapter{Mine}\n");
+  const auto refused =
+      run_cli("export " + m1_path() + " --format bvh --out " + (dir / "thesis.tex"));
+  EXPECT_EQ(refused.status, 2) << refused.output;
+  EXPECT_NE(refused.output.find("thesis.tex: exists"), std::string::npos) << refused.output;
+  EXPECT_EQ(read_text(dir / "thesis.tex"), "\\chapter{Mine}\n");
+  fs::create_symlink(dir / "thesis.tex", dir / "link.bvh");
+  EXPECT_EQ(run_cli("export " + m1_path() + " --format bvh --out " + (dir / "link.bvh")).status, 2);
+  EXPECT_EQ(read_text(dir / "thesis.tex"), "\\chapter{Mine}\n");
+  const auto first = run_cli("export " + m1_path() + " --format bvh --out " + (dir / "m1.bvh"));
+  ASSERT_EQ(first.status, 0) << first.output;
+  const std::string written = read_text(dir / "m1.bvh");
+  EXPECT_EQ(
+      run_cli("export " + m1_path() + " --format bvh --fps 10 --out " + (dir / "m1.bvh")).status,
+      2);
+  EXPECT_EQ(read_text(dir / "m1.bvh"), written);
+  EXPECT_EQ(test::names_in(dir.path()),
+            (std::set<std::string>{"link.bvh", "m1.bvh", "thesis.tex"}));
+  // A folder where the file's folder should be: the system refuses, exit 4.
+  EXPECT_EQ(
+      run_cli("export " + m1_path() + " --format bvh --out " + (dir / "thesis.tex/m1.bvh")).status,
+      4);
+}
+
 TEST(CaptureCli, AMappingFileMapsNamesNoConventionKnows) {
   const TempDir dir;
   // M1 on the model's skeleton, then every joint renamed.

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "saltus/base/input_error.h"
+#include "saltus/formats/output_folder.h"
 
 namespace saltus {
 
@@ -344,30 +345,7 @@ std::string bvh_text(const MocapClip& clip) {
 }
 
 void save_bvh_file(const std::string& path, const MocapClip& clip) {
-  const std::string text = bvh_text(clip);
-  namespace fs = std::filesystem;
-  const fs::path target(path);
-  const fs::path temporary =
-      target.parent_path() / ("." + target.filename().string() + ".saltus-tmp");
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    if (!out) throw std::runtime_error(path + ": cannot open for writing");
-    out << text;
-    out.flush();
-    if (!out) {
-      std::error_code ignored;
-      fs::remove(temporary, ignored);
-      throw std::runtime_error(path + ": writing failed");
-    }
-  }
-  std::error_code error;
-  fs::rename(temporary, target, error);
-  if (error) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    throw std::runtime_error(path +
-                             ": cannot move the written file into place: " + error.message());
-  }
+  write_new_file(path, bvh_text(clip));
 }
 
 }  // namespace saltus

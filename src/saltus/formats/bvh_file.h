@@ -23,8 +23,9 @@ MocapClip load_bvh_file(const std::string& path);
 /// Throws std::invalid_argument if the clip is not valid (validate_clip).
 std::string bvh_text(const MocapClip& clip);
 
-/// Writes bvh_text(clip) to `path` atomically (a temporary file renamed into place); throws
-/// std::runtime_error naming the file if it cannot be written.
+/// Writes bvh_text(clip) as the new file `path` (write_new_file: never over an existing file,
+/// complete or absent at every instant). Throws InputError if `path` exists, OutputError if the
+/// system refuses.
 void save_bvh_file(const std::string& path, const MocapClip& clip);
 
 }  // namespace saltus

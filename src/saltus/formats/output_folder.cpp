@@ -667,4 +667,83 @@ void write_text(const std::string& path, const std::string& text) {
   if (::close(fd) != 0) throw fail(errno);
 }
 
+namespace {
+
+/// Writes all of `text` to `fd`; false with errno set on failure.
+bool write_all(int fd, const std::string& text) {
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return false;
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+}  // namespace
+
+void write_new_file(const std::string& path, const std::string& text) {
+  if (path.empty()) throw InputError("--out", "", "the output file path is empty");
+  std::error_code ec;
+  const fs::path target = fs::absolute(path, ec).lexically_normal();
+  if (ec) throw OutputError("cannot resolve " + path + ": " + ec.message(), false);
+  if (target.filename().empty() || target.filename() == "." || target.filename() == "..")
+    throw InputError(path, "", "names no file Saltus can write");
+  const auto exists = [&] {
+    struct stat info {};
+    return ::lstat(target.c_str(), &info) == 0;
+  };
+  const std::string refusal =
+      "exists; Saltus writes a file only where there is none (it cannot tell a file it wrote "
+      "from one it did not): remove it or choose another name";
+  if (exists()) throw InputError(path, "", refusal);
+  const fs::path parent = target.parent_path();
+  fs::create_directories(parent, ec);
+  if (ec)
+    throw OutputError("cannot create the folder " + parent.string() + ": " + ec.message(), false);
+
+  install_interrupt_handlers();
+  std::string temporary;
+  int fd = -1;
+  for (int attempt = 0; fd < 0; ++attempt) {
+    temporary =
+        (parent / ("." + target.filename().string() + ".saltus-tmp-" + run_suffix())).string();
+    fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+    if (fd < 0 && !(errno == EEXIST && attempt < 16))
+      throw OutputError(
+          "cannot write " + path + ": " + system_reason(errno) + "; nothing was changed", false);
+  }
+  const int slot = register_slot(temporary, target.string(), "");
+  const auto fail = [&](int error, const std::string& what) {
+    ::unlink(temporary.c_str());
+    unregister_slot(slot);
+    return OutputError(what + " " + path + ": " + system_reason(error) + "; nothing was changed",
+                       false);
+  };
+  if (!write_all(fd, text)) {
+    const int error = errno;
+    ::close(fd);
+    throw fail(error, "cannot write");
+  }
+  if (::close(fd) != 0) throw fail(errno, "cannot write");
+  if (::renameat2(AT_FDCWD, temporary.c_str(), AT_FDCWD, target.c_str(), RENAME_NOREPLACE) != 0) {
+    int error = errno;
+    if (error == EINVAL || error == ENOSYS) {
+      // No RENAME_NOREPLACE here: a hard link fails as well when the name is taken.
+      error = ::link(temporary.c_str(), target.c_str()) == 0 ? 0 : errno;
+      ::unlink(temporary.c_str());
+    }
+    if (error == EEXIST) {
+      ::unlink(temporary.c_str());
+      unregister_slot(slot);
+      throw InputError(path, "", refusal);
+    }
+    if (error != 0) throw fail(error, "cannot move into place");
+  }
+  unregister_slot(slot);
+}
+
 }  // namespace saltus

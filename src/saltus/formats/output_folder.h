@@ -95,6 +95,16 @@ class OutputFolder {
   bool committed_ = false;
 };
 
+/// Writes `text` as the new file `path` (export --out FILE): a single file is never replaced, as
+/// Saltus cannot tell a file it wrote from one it did not. The text goes to a hidden sibling
+/// `.NAME.saltus-tmp-<pid>-<n>` created with O_EXCL and O_NOFOLLOW (no planted link is followed,
+/// no other run's file is reused) and is moved into place only if `path` still does not exist
+/// (renameat2 RENAME_NOREPLACE, or link + unlink where the file system lacks it), so at every
+/// instant `path` is absent or complete. Missing parent folders are created. Throws InputError
+/// when `path` exists (exit 2), OutputError when the system refuses (exit 4); either way
+/// nothing is left behind.
+void write_new_file(const std::string& path, const std::string& text);
+
 /// Writes `text` to `path`. Throws OutputError naming the file as it will
 /// be once its OutputFolder is committed (DIR/name, not the hidden temporary) and the reason.
 void write_text(const std::string& path, const std::string& text);

@@ -93,6 +93,54 @@ TEST(WriteText, WritesTheBytesOrNamesTheFile) {
 }
 
 // Hardening (issue 16).
+// write_new_file, the single file of export --out: new files only, nothing left behind.
+TEST(WriteNewFile, WritesANewFileAndNeverReplacesOne) {
+  test::TempDir dir;
+  const std::string path = dir / "sub/flight.bvh";
+  write_new_file(path, "first\n");
+  EXPECT_EQ(test::read_text(path), "first\n");
+  EXPECT_EQ(names_in(dir / "sub"), std::set<std::string>{"flight.bvh"});
+  // Saltus cannot tell its own file from a user's thesis: an existing file is never replaced.
+  EXPECT_THROW(write_new_file(path, "second\n"), InputError);
+  EXPECT_EQ(test::read_text(path), "first\n");
+  const std::string thesis = dir / "thesis.tex";
+  test::write_text(thesis, "\\chapter{Mine}\n");
+  try {
+    write_new_file(thesis, "HIERARCHY\n");
+    ADD_FAILURE() << "replaced";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("exists"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(test::read_text(thesis), "\\chapter{Mine}\n");
+  EXPECT_EQ(names_in(dir / "sub"), std::set<std::string>{"flight.bvh"});
+}
+
+TEST(WriteNewFile, FollowsNoPlantedLink) {
+  test::TempDir dir;
+  const std::string victim = dir / "victim.txt";
+  test::write_text(victim, "keep");
+  // A link at the output name, even a dangling one, is an existing entry.
+  std::filesystem::create_symlink(dir / "nowhere", dir / "dangling.bvh");
+  EXPECT_THROW(write_new_file(dir / "dangling.bvh", "x"), InputError);
+  EXPECT_FALSE(std::filesystem::exists(dir / "nowhere"));
+  // Links at the temporary names an earlier version used, and at the next ones this process
+  // would pick, are not written through: each temporary is created with O_EXCL | O_NOFOLLOW.
+  std::filesystem::create_symlink(victim, dir / ".out.bvh.saltus-tmp");
+  write_new_file(dir / "out.bvh", "new");
+  EXPECT_EQ(test::read_text(dir / "out.bvh"), "new");
+  EXPECT_EQ(test::read_text(victim), "keep");
+  EXPECT_EQ(names_in(dir.path()), (std::set<std::string>{".out.bvh.saltus-tmp", "dangling.bvh",
+                                                         "out.bvh", "victim.txt"}));
+}
+
+TEST(WriteNewFile, ASystemRefusalIsAnOutputError) {
+  test::TempDir dir;
+  test::write_text(dir / "plain", "a file, not a folder");
+  EXPECT_THROW(write_new_file(dir / "plain/flight.bvh", "x"), OutputError);
+  EXPECT_THROW(write_new_file("", "x"), InputError);
+  EXPECT_EQ(test::read_text(dir / "plain"), "a file, not a folder");
+}
+
 namespace hardening {
 
 namespace fs = std::filesystem;
