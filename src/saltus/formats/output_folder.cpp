@@ -248,6 +248,14 @@ void check_target(const fs::path& target, const std::string& shown) {
                      "is a symbolic link; give the folder it points to (Saltus replaces folders, "
                      "not links)");
   if (!S_ISDIR(info.st_mode)) throw InputError(shown, "", "exists and is not a folder");
+  // The swap would succeed, but the old result, now at the temporary name, could not be
+  // removed (and a root run would remove a folder its owner protected).
+  if (!(info.st_mode & S_IWUSR))
+    throw OutputError(shown +
+                          " is read-only (its mode has no write permission), so Saltus does "
+                          "not replace it; nothing was written. Make it writable or choose "
+                          "another --out",
+                      false);
   const std::string reason = foreign_content_at(target, 0);
   if (!reason.empty()) throw refusal(shown, reason);
 }
@@ -417,7 +425,46 @@ void install_interrupt_handlers() {
 /// Takes the lock `.NAME.lock` of a target: an flock, which the kernel drops when the process
 /// ends however it ends. The holder removes the file when it is done; a waiter that locked a
 /// file removed meanwhile (its inode no longer at the path) tries again.
-int acquire_lock(const std::string& lock_path, const std::string& shown) {
+/// Appends one line to the lock file: the names of the run's temporary folders are recorded
+/// there before they are created, so the next run removes only what a run of Saltus made.
+void record_in_lock(int fd, const std::string& line) {
+  struct stat info {};
+  if (fd < 0 || ::fstat(fd, &info) != 0) return;
+  const std::string text = line + "\n";
+  if (::pwrite(fd, text.data(), text.size(), info.st_size) < 0) {
+    // Unrecorded, the temporary is not removed by the next run: left, never lost.
+  }
+}
+
+/// What a lock file of Saltus holds: its holder's pid on the first line, then one line per
+/// temporary folder ("tmp NAME") and per old folder moved away ("old NAME"). Returns false for
+/// anything else (a user's own file of that name); `recorded` receives the names.
+bool read_lock_record(int fd, std::vector<std::string>& recorded) {
+  std::string text(65536, '\0');
+  const ssize_t n = ::pread(fd, text.data(), text.size(), 0);
+  if (n < 0 || n == static_cast<ssize_t>(text.size())) return false;
+  text.resize(static_cast<std::size_t>(n));
+  std::size_t start = 0;
+  for (int line = 0; start < text.size(); ++line) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string row = text.substr(start, end - start);
+    start = end + 1;
+    if (line == 0) {
+      if (row.empty() ||
+          !std::all_of(row.begin(), row.end(), [](char c) { return c >= '0' && c <= '9'; }))
+        return false;
+    } else if (row.rfind("tmp ", 0) == 0 || row.rfind("old ", 0) == 0) {
+      recorded.push_back(row);
+    } else {
+      return false;
+    }
+  }
+  return true;
+}
+
+int acquire_lock(const std::string& lock_path, const std::string& shown,
+                 std::vector<std::string>& recorded) {
   for (int attempt = 0; attempt < 64; ++attempt) {
     const int fd = ::open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
     if (fd < 0)
@@ -430,7 +477,8 @@ int acquire_lock(const std::string& lock_path, const std::string& shown) {
       const ssize_t n = ::pread(fd, text, sizeof text - 1, 0);
       ::close(fd);
       if (error == EWOULDBLOCK) {
-        const std::string pid = n > 0 ? std::string(text, static_cast<std::size_t>(n)) : "";
+        std::string pid = n > 0 ? std::string(text, static_cast<std::size_t>(n)) : "";
+        pid = pid.substr(0, pid.find('\n'));
         throw OutputError("another saltus run" + (pid.empty() ? "" : " (pid " + pid + ")") +
                               " is writing " + shown +
                               " right now; nothing was written. Wait for it to finish and run "
@@ -443,7 +491,14 @@ int acquire_lock(const std::string& lock_path, const std::string& shown) {
     struct stat at_path {};
     if (::fstat(fd, &held) == 0 && ::stat(lock_path.c_str(), &at_path) == 0 &&
         held.st_ino == at_path.st_ino && held.st_dev == at_path.st_dev) {
-      const std::string pid = std::to_string(::getpid());
+      recorded.clear();
+      if (!S_ISREG(held.st_mode) || (held.st_size > 0 && !read_lock_record(fd, recorded))) {
+        ::close(fd);  // a file of the user's that happens to have the name: left as it is
+        throw InputError(lock_path, "",
+                         "is not a lock file of Saltus's, and Saltus locks " + shown +
+                             " with a file of that name: move it away or choose another --out");
+      }
+      const std::string pid = std::to_string(::getpid()) + "\n";
       if (::ftruncate(fd, 0) == 0 && ::pwrite(fd, pid.data(), pid.size(), 0) < 0) {
         // The pid is only for the message of a run that waits; the lock is what counts.
       }
@@ -463,7 +518,7 @@ bool is_run_suffix(const std::string& s) {
 /// folders, and puts back a `.NAME.old-<pid>-<n>` the rename fallback had moved away if the
 /// target is missing. Called with the target's lock held, so no live run owns any of them: a
 /// live run holds the lock from before it creates its temporary until after it removes it.
-void remove_stale_temporaries(const fs::path& target) {
+void remove_stale_temporaries(const fs::path& target, const std::vector<std::string>& recorded) {
   const fs::path parent = target.parent_path();
   const std::string name = target.filename().string();
   const std::string temporary_prefix = "." + name + ".tmp-";
@@ -473,10 +528,14 @@ void remove_stale_temporaries(const fs::path& target) {
   std::vector<fs::path> moved_away;
   for (fs::directory_iterator it(parent, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string entry = it->path().filename().string();
-    if (entry.compare(0, temporary_prefix.size(), temporary_prefix) == 0 &&
+    const auto was_recorded = [&](const char* tag) {
+      return std::find(recorded.begin(), recorded.end(), std::string(tag) + " " + entry) !=
+             recorded.end();
+    };
+    if (entry.compare(0, temporary_prefix.size(), temporary_prefix) == 0 && was_recorded("tmp") &&
         is_run_suffix(entry.substr(temporary_prefix.size())))
       temporaries.push_back(it->path());
-    if (entry.compare(0, old_prefix.size(), old_prefix) == 0 &&
+    if (entry.compare(0, old_prefix.size(), old_prefix) == 0 && was_recorded("old") &&
         is_run_suffix(entry.substr(old_prefix.size())))
       moved_away.push_back(it->path());
   }
@@ -524,13 +583,15 @@ OutputFolder::OutputFolder(std::string final_path) {
     throw OutputError("cannot create the folder " + parent.string() + ": " + ec.message(), false);
   install_interrupt_handlers();
   lock_path_ = (parent / ("." + target.filename().string() + ".lock")).string();
-  lock_fd_ = acquire_lock(lock_path_, final_path_);
+  std::vector<std::string> recorded;
+  lock_fd_ = acquire_lock(lock_path_, final_path_, recorded);
   try {
-    remove_stale_temporaries(target);
+    remove_stale_temporaries(target, recorded);
     check_target(target, final_path_);
     for (int attempt = 0;; ++attempt) {
-      temporary_path_ =
-          (parent / ("." + target.filename().string() + ".tmp-" + run_suffix())).string();
+      const std::string name = "." + target.filename().string() + ".tmp-" + run_suffix();
+      temporary_path_ = (parent / name).string();
+      record_in_lock(lock_fd_, "tmp " + name);
       if (::mkdir(temporary_path_.c_str(), 0755) == 0) break;
       const int error = errno;
       if (error == EEXIST && attempt < 16) continue;
@@ -595,9 +656,9 @@ void OutputFolder::commit() {
       // Fallback where the file system cannot exchange (some network and FUSE file systems):
       // two renames. A kill between them leaves DIR missing and the old folder at
       // .DIR.old-<pid>-<n>, which the interrupt handler or the next run puts back.
-      const std::string old =
-          (target.parent_path() / ("." + target.filename().string() + ".old-" + run_suffix()))
-              .string();
+      const std::string old_name = "." + target.filename().string() + ".old-" + run_suffix();
+      const std::string old = (target.parent_path() / old_name).string();
+      record_in_lock(lock_fd_, "old " + old_name);
       set_moved_away(slot_, old);
       if (::rename(final_path_.c_str(), old.c_str()) != 0) {
         const int rename_error = errno;

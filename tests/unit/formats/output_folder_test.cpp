@@ -279,17 +279,54 @@ TEST(OutputFolder, RemovesWhatDeadRunsLeftAndRestoresAMovedAwayFolder) {
   fs::create_directories(dir.path() / ".out.tmp-4242-0/M1");
   test::write_text((dir.path() / ".out.tmp-4242-0/M1/trajectory.csv").string(), "partial");
   fs::create_directories(dir.path() / ".out.tmp-77-3");
-  // Not Saltus's: other names that merely look alike are left alone.
+  // Not Saltus's: other names that merely look alike are left alone, and so is a folder with a
+  // run's name that no run of Saltus recorded in the lock file (a user's own).
   fs::create_directories(dir.path() / ".out.tmp-backup");
   fs::create_directories(dir.path() / ".outer.tmp-1-1");
+  fs::create_directories(dir.path() / ".out.tmp-1-0");
+  test::write_text((dir.path() / ".out.tmp-1-0/notes.txt").string(), "mine");
+  fs::create_directories(dir.path() / ".out.old-2-0");
   // The rename fallback killed between its renames: DIR missing, the old folder moved away.
   fs::create_directories(dir.path() / ".out.old-4242-1");
   test::write_text((dir.path() / ".out.old-4242-1/result.json").string(),
                    R"({"format": "saltus-result/1", "status": "evaluated"})");
+  // What the dead runs recorded before they created those folders.
+  test::write_text((dir.path() / ".out.lock").string(),
+                   "4242\ntmp .out.tmp-4242-0\nold .out.old-4242-1\ntmp .out.tmp-77-3\n");
   { OutputFolder folder(out.string()); }  // not committed
-  EXPECT_EQ(names_in(dir.path()),
-            (std::set<std::string>{"out", ".out.tmp-backup", ".outer.tmp-1-1"}));
+  EXPECT_EQ(names_in(dir.path()), (std::set<std::string>{"out", ".out.tmp-backup", ".outer.tmp-1-1",
+                                                         ".out.tmp-1-0", ".out.old-2-0"}));
   EXPECT_TRUE(fs::exists(out / "result.json")) << "the old folder is back";
+  EXPECT_EQ(test::read_text((dir.path() / ".out.tmp-1-0/notes.txt").string()), "mine");
+}
+
+TEST(OutputFolder, LeavesAUsersFileWithTheLocksName) {
+  test::TempDir dir;
+  const std::string out = dir / "out";
+  test::write_text(dir / ".out.lock", "my notes\n");
+  EXPECT_THROW(OutputFolder folder(out), InputError);
+  EXPECT_EQ(test::read_text(dir / ".out.lock"), "my notes\n");
+  EXPECT_EQ(names_in(dir.path()), std::set<std::string>{".out.lock"});
+}
+
+TEST(OutputFolder, RefusesAReadOnlyFolderBeforeAnyWork) {
+  // Mode 555: the swap would work, but the old result could not be removed afterwards (and as
+  // root it could, against its owner's wish). Refused by the check the CLI runs before it
+  // computes, and by the constructor.
+  test::TempDir dir;
+  const std::string out = dir / "out";
+  {
+    OutputFolder first(out);
+    first.write("result.json", R"({"format": "saltus-result/1", "status": "evaluated"})");
+    first.commit();
+  }
+  fs::permissions(out, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                           fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
+  EXPECT_THROW(check_output_folder(out), OutputError);
+  EXPECT_THROW(OutputFolder again(out), OutputError);
+  fs::permissions(out, fs::perms::owner_write, fs::perm_options::add);
+  EXPECT_EQ(names_in(dir.path()), std::set<std::string>{"out"});
+  EXPECT_EQ(names_in(out), std::set<std::string>{"result.json"});
 }
 
 TEST(OutputFolder, FailedWritesNameTheFinalPathAndTheReason) {
