@@ -15,11 +15,12 @@ cd "$root"
 packages=(build-essential cmake ninja-build pkg-config clang-format
           libeigen3-dev coinor-libipopt-dev libopenblas0-serial nlohmann-json3-dev libcli11-dev
           libgtest-dev libbenchmark-dev
-          libvtk9-qt-dev libvtk9-dev qtbase5-dev xvfb xauth libgl1-mesa-dri ffmpeg)
+          libvtk9-qt-dev libvtk9-dev qtbase5-dev xvfb xauth libgl1-mesa-dri ffmpeg libjs-three)
 # The test form also builds under AddressSanitizer and UndefinedBehaviorSanitizer with clang and
 # runs the readers' libFuzzer targets (llvm-symbolizer, from llvm, makes the reports readable).
 # The cluster tests start a private Slurm on this machine and run a study through GNU parallel.
-[ "$mode" = test ] && packages+=(clang libclang-rt-14-dev llvm slurm-wlm munge parallel)
+# The flight page's test opens it in headless Chromium.
+[ "$mode" = test ] && packages+=(clang libclang-rt-14-dev llvm slurm-wlm munge parallel chromium)
 
 # Each stage's wall time, so CI logs show where the time goes (CI's limit is 60 minutes).
 stage_start=$SECONDS

@@ -15,6 +15,7 @@
 #include <QSettings>
 #include <QStatusBar>
 #include <QStyle>
+#include <QTemporaryDir>
 #include <QToolBar>
 #include <exception>
 #include <fstream>
@@ -32,6 +33,7 @@
 #include "saltus/formats/motion_file.h"
 #include "saltus/formats/readable_formats.h"
 #include "saltus/use_cases/captures.h"
+#include "saltus/use_cases/flight_page.h"
 
 namespace saltus::gui {
 
@@ -135,7 +137,13 @@ void FileController::fill_menu(QMenu* file, const std::vector<QAction*>& more_ex
         tr("PNG (*.png)"));
     if (!path.isEmpty()) export_window_png(path);
   });
-  need_motion_.insert(need_motion_.end(), {view_png, plots_png, window_png});
+  QAction* web_page = file->addAction(tr("Export web page…"), this, [this] {
+    const QString path = QFileDialog::getSaveFileName(
+        context_.window(), tr("Export web page"), QDir(context_.last_dir()).filePath("flight.html"),
+        tr("Web page (*.html)"));
+    if (!path.isEmpty()) export_web_page(path);
+  });
+  need_motion_.insert(need_motion_.end(), {view_png, plots_png, window_png, web_page});
   for (QAction* a : more_exports) {
     file->addAction(a);
     need_motion_.push_back(a);
@@ -365,6 +373,37 @@ bool FileController::export_view_png(const QString& path, QString* error) {
   if (image.isNull() || !image.save(path, "PNG"))
     return context_.fail(tr("Cannot export"), tr("%1: cannot write the image").arg(path), error);
   context_.set_last_dir_from(path);
+  return true;
+}
+
+bool FileController::export_web_page(const QString& path, QString* error) {
+  Workspace& ws = context_.workspace();
+  if (!ws.loaded())
+    return context_.fail(tr("Nothing to export"), tr("Open a motion first."), error);
+  try {
+    const QTemporaryDir folder;
+    if (!folder.isValid()) throw std::runtime_error("cannot create a temporary folder");
+    const Document& d = ws.document();
+    std::string source;
+    if (d.has_optimization()) {
+      source = folder.filePath("run").toStdString();
+      d.save_result(source);
+    } else {
+      Motion motion = d.file().motion;
+      motion.model = "model.json";
+      source = folder.filePath("motion.motion.json").toStdString();
+      std::ofstream(folder.filePath("model.json").toStdString())
+          << body_model_to_json(d.file().model).dump() << '\n';
+      std::ofstream(source) << motion_to_json(motion, d.file().model).dump() << '\n';
+    }
+    export_flight_page(source, path.toStdString());
+  } catch (const InputError& e) {
+    return context_.fail(tr("Cannot export web page"), qstr(e.what()), error);
+  } catch (const std::exception& e) {
+    return context_.fail(tr("Cannot export web page"), path + ": " + qstr(e.what()), error);
+  }
+  context_.set_last_dir_from(path);
+  context_.status(tr("Wrote %1").arg(path));
   return true;
 }
 

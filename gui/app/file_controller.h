@@ -52,6 +52,10 @@ class FileController : public QObject, public RemembersSettings {
   /// Writes the model in use as a model file (named after the file) and reads it back.
   bool save_model(const QString& path, QString* error = nullptr);
   bool export_view_png(const QString& path, QString* error = nullptr);
+  /// File > Export web page…: the flight shown (the run's before and after, or the motion as
+  /// given) as one self-contained HTML page, made by the library (use_cases/flight_page.h)
+  /// from the files `saltus export --format html` reads, written here to a temporary folder.
+  bool export_web_page(const QString& path, QString* error = nullptr);
   bool export_window_png(const QString& path, QString* error = nullptr);
 
   /// What the user answers when unsaved work would be dropped.

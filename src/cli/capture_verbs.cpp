@@ -7,6 +7,7 @@
 
 #include "saltus/base/input_error.h"
 #include "saltus/use_cases/captures.h"
+#include "saltus/use_cases/flight_page.h"
 
 namespace saltus_cli {
 
@@ -110,7 +111,20 @@ int run_import(const ImportArgs& args) {
   return 0;
 }
 
+int run_export_html(const ExportArgs& args) {
+  if (args.fps > 0) throw saltus::InputError("--fps", "", "applies to --format bvh only");
+  const saltus::FlightPageSummary page = saltus::export_flight_page(args.source, args.out_path);
+  if (!args.quiet)
+    std::printf(
+        "saltus export: %s\n  a web page of %s (model %s), %s, %d frames, %.2f MB\n  wrote %s\n",
+        args.source.c_str(), page.motion.c_str(), page.model.c_str(),
+        page.optimised ? "before and after optimisation" : "as given", page.frames,
+        static_cast<double>(page.bytes) / 1e6, absolute(args.out_path).c_str());
+  return 0;
+}
+
 int run_export(const ExportArgs& args) {
+  if (args.format == "html") return run_export_html(args);
   const saltus::MotionFile source = saltus::load_export_source(args.source);
   const double fps = args.fps > 0 ? args.fps : saltus::default_export_fps(source.motion);
   const saltus::MocapClip clip = saltus::export_motion_bvh(source, args.out_path, fps);
@@ -157,18 +171,22 @@ void add_capture_verbs(CLI::App& app, CaptureVerbs& verbs) {
   CLI::App* exp = app.add_subcommand(
       "export",
       "Write a motion as a BVH file on the body model's skeleton (cm, y up, ZXY channels) for "
-      "Blender and other animation tools");
+      "Blender and other animation tools, or a flight as one self-contained web page (the "
+      "athlete in 3D, the root force before and after) that opens offline in any browser");
   exp->add_option("SOURCE", ex.source,
                   "motion file, capture, or result folder of optimize (optimized.motion.json) or "
                   "import (capture.motion.json)")
       ->required();
-  exp->add_option("--format", ex.format, "output format")
+  exp->add_option("--format", ex.format, "output format: bvh, or html (a web page)")
       ->required()
-      ->check(CLI::IsMember({"bvh"}));
-  exp->add_option("--out", ex.out_path, "output file (*.bvh)")->required();
+      ->check(CLI::IsMember({"bvh", "html"}));
+  exp->add_option("--out", ex.out_path,
+                  "output file (*.bvh, *.html); an existing page is replaced only if Saltus "
+                  "wrote it")
+      ->required();
   exp->add_option("--fps", ex.fps,
-                  "frames per second; default: the keyframes' rate when they are evenly spaced "
-                  "(a captured flight), else 60")
+                  "bvh: frames per second; default: the keyframes' rate when they are evenly "
+                  "spaced (a captured flight), else 60")
       ->check(CLI::PositiveNumber);
   exp->add_flag("--quiet,-q", ex.quiet, "print nothing on success");
   verbs.export_command = exp;

@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// `saltus import` (a BVH capture onto the body model) and `saltus export --format bvh`: their
+/// `saltus import` (a BVH capture onto the body model) and `saltus export --format bvh|html`: their
 /// options, and running them. main.cpp registers them and dispatches to them.
 
 #include <CLI/CLI.hpp>

@@ -1,0 +1,181 @@
+#include "saltus/formats/flight_page.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "saltus/base/input_error.h"
+#include "saltus/formats/flight_page_assets.h"
+#include "saltus/formats/output_folder.h"
+
+namespace saltus {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// The template's placeholders, each replaced once.
+constexpr const char* kThreePlaceholder = "/*SALTUS_THREE_JS*/";
+constexpr const char* kOrbitPlaceholder = "/*SALTUS_ORBIT_CONTROLS_JS*/";
+constexpr const char* kDataPlaceholder = "/*SALTUS_DATA*/";
+constexpr const char* kVersionPlaceholder = "SALTUS_VERSION";
+/// How the data's script element opens, in the template and so in every page.
+constexpr const char* kDataOpening = "<script id=\"flight-data\" type=\"application/json\">";
+/// A page names its generator within this many bytes of its start.
+constexpr std::size_t kHeadBytes = 4096;
+
+void replace_once(std::string& text, const std::string& placeholder, const std::string& value) {
+  const std::size_t at = text.find(placeholder);
+  if (at == std::string::npos)
+    throw std::logic_error("the flight page template has no " + placeholder);
+  text.replace(at, placeholder.size(), value);
+}
+
+/// The first non-finite number's JSON pointer, or "".
+std::string non_finite_at(const nlohmann::json& value, const std::string& pointer) {
+  if (value.is_number_float()) return std::isfinite(value.get<double>()) ? "" : pointer;
+  if (value.is_array()) {
+    for (std::size_t i = 0; i < value.size(); ++i) {
+      std::string at = non_finite_at(value[i], pointer + "/" + std::to_string(i));
+      if (!at.empty()) return at;
+    }
+  }
+  if (value.is_object()) {
+    for (const auto& [key, item] : value.items()) {
+      std::string at = non_finite_at(item, pointer + "/" + key);
+      if (!at.empty()) return at;
+    }
+  }
+  return "";
+}
+
+std::string page_system_reason(int error) {
+  return std::strerror(error);
+}
+
+}  // namespace
+
+std::string embedded_text(const char* const chunks[]) {
+  std::string out;
+  for (int i = 0; chunks[i] != nullptr; ++i)
+    out += chunks[i];
+  return out;
+}
+
+std::string flight_page_html(const nlohmann::json& data) {
+  const std::string bad = non_finite_at(data, "");
+  if (!bad.empty()) throw std::invalid_argument("flight page data: " + bad + " is not finite");
+  // JSON inside a script element: '<' only occurs in strings, where \u003c means the same.
+  std::string json;
+  for (char c : data.dump())
+    json += c == '<' ? std::string("\\u003c") : std::string(1, c);
+  // The placeholders are found in the template before anything is put in, so no inserted text
+  // is searched.
+  std::string page = embedded_text(kFlightPageTemplate);
+  replace_once(page, kVersionPlaceholder, kSaltusVersion);
+  const std::size_t three = page.find(kThreePlaceholder);
+  const std::size_t orbit = page.find(kOrbitPlaceholder);
+  const std::size_t data_at = page.find(kDataPlaceholder);
+  if (three == std::string::npos || orbit == std::string::npos || data_at == std::string::npos ||
+      !(three < orbit && orbit < data_at))
+    throw std::logic_error("the flight page template lacks its placeholders, in order");
+  std::string out;
+  out.reserve(page.size() + json.size() + 1000000);
+  out.append(page, 0, three);
+  out += embedded_text(kThreeJs);
+  out.append(page, three + std::strlen(kThreePlaceholder),
+             orbit - three - std::strlen(kThreePlaceholder));
+  out += embedded_text(kOrbitControlsJs);
+  out.append(page, orbit + std::strlen(kOrbitPlaceholder),
+             data_at - orbit - std::strlen(kOrbitPlaceholder));
+  out += json;
+  out.append(page, data_at + std::strlen(kDataPlaceholder), std::string::npos);
+  return out;
+}
+
+nlohmann::json read_flight_page_data(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "", "cannot be read");
+  std::ostringstream text;
+  text << in.rdbuf();
+  const std::string page = text.str();
+  const std::size_t open = page.find(kDataOpening);
+  const std::size_t start = open == std::string::npos ? open : open + std::strlen(kDataOpening);
+  const std::size_t end = start == std::string::npos ? start : page.find("</script>", start);
+  if (end == std::string::npos) throw InputError(path, "", "holds no flight data");
+  try {
+    return nlohmann::json::parse(page.substr(start, end - start));
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(path, "", std::string("its flight data is not JSON: ") + e.what());
+  }
+}
+
+bool is_flight_page(const std::string& path) {
+  struct stat info {};
+  if (::lstat(path.c_str(), &info) != 0 || !S_ISREG(info.st_mode)) return false;
+  std::ifstream in(path, std::ios::binary);
+  std::string head(kHeadBytes, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  return head.find(std::string("<meta name=\"generator\" content=\"") + kFlightPageGenerator) !=
+         std::string::npos;
+}
+
+void save_flight_page(const std::string& path, const std::string& html) {
+  const fs::path target(path);
+  if (target.filename().empty()) throw InputError(path, "", "names a folder, not a file");
+  struct stat info {};
+  if (::lstat(path.c_str(), &info) == 0) {
+    if (S_ISLNK(info.st_mode))
+      throw InputError(path, "", "is a symbolic link; Saltus writes only to a file of its own");
+    if (S_ISDIR(info.st_mode)) throw InputError(path, "", "is a folder; give a file name");
+    if (!is_flight_page(path))
+      throw InputError(path, "",
+                       "exists and is not a flight page Saltus wrote; it is left as it is "
+                       "(remove it or choose another --out)");
+  }
+  const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+  if (!fs::is_directory(parent))
+    throw InputError(path, "", "its folder " + parent.string() + " does not exist");
+  const fs::path temporary =
+      parent / ("." + target.filename().string() + ".saltus-tmp-" + std::to_string(::getpid()));
+  const auto fail = [&](int error) {
+    ::unlink(temporary.c_str());
+    return OutputError(
+        "cannot write " + path + ": " + page_system_reason(error) + "; nothing was changed", false);
+  };
+  const int fd =
+      ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0644);
+  if (fd < 0) throw OutputError("cannot write " + path + ": " + page_system_reason(errno), false);
+  std::size_t done = 0;
+  while (done < html.size()) {
+    const ssize_t n = ::write(fd, html.data() + done, html.size() - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      const int error = errno;
+      ::close(fd);
+      throw fail(error);
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  const bool synced = ::fsync(fd) == 0;
+  const int sync_error = errno;
+  if (::close(fd) != 0) throw fail(errno);
+  if (!synced) throw fail(sync_error);
+  // The target may have become someone else's file while the page was written.
+  if (::lstat(path.c_str(), &info) == 0 && (!S_ISREG(info.st_mode) || !is_flight_page(path))) {
+    ::unlink(temporary.c_str());
+    throw InputError(path, "", "appeared meanwhile and is not a flight page Saltus wrote");
+  }
+  if (::rename(temporary.c_str(), path.c_str()) != 0) throw fail(errno);
+}
+
+}  // namespace saltus

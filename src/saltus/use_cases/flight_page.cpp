@@ -1,0 +1,288 @@
+#include "saltus/use_cases/flight_page.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+
+#include "saltus/base/constants.h"
+#include "saltus/base/input_error.h"
+#include "saltus/body/drawing_colours.h"
+#include "saltus/evaluation/apparatus.h"
+#include "saltus/evaluation/evaluate.h"
+#include "saltus/formats/finite_check.h"
+#include "saltus/formats/flight_page.h"
+#include "saltus/formats/flight_page_assets.h"
+#include "saltus/formats/motion_file.h"
+#include "saltus/formats/result_json.h"
+#include "saltus/motion/interpolate.h"
+#include "saltus/use_cases/captures.h"
+
+namespace saltus {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Points of the drawn CoM parabola.
+constexpr int kParabolaPoints = 81;
+
+/// `value` rounded to `digits` significant digits: the page's trajectories need no more (0.1 mm
+/// at 5 m for 6 digits), and short numbers keep the page small. The figures of the title block
+/// are copied from result.json unrounded.
+double rounded(double value, int digits) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.*g", digits, value);
+  return std::strtod(text, nullptr);
+}
+
+nlohmann::json page_vector(const Eigen::Vector3d& v, int digits = 17) {
+  return {rounded(v.x(), digits), rounded(v.y(), digits), rounded(v.z(), digits)};
+}
+
+/// Height of the body standing with every joint at rest (rotations identity): from the lowest
+/// to the highest point of the drawing shapes, m. The page's cameras frame this height.
+double standing_height(const BodyModel& model) {
+  std::vector<Eigen::Vector3d> origin(model.segments.size(), Eigen::Vector3d::Zero());
+  double top = -1e9, bottom = 1e9;
+  auto extend = [&](double y) {
+    top = std::max(top, y);
+    bottom = std::min(bottom, y);
+  };
+  for (std::size_t i = 0; i < model.segments.size(); ++i) {
+    const Segment& s = model.segments[i];
+    if (s.parent >= 0) origin[i] = origin[static_cast<std::size_t>(s.parent)] + s.joint_position;
+    const double y = origin[i].y();
+    if (s.shape.parts.empty()) {
+      extend(y + std::min(0.0, s.shape.length) - s.shape.radius);
+      extend(y + std::max(0.0, s.shape.length) + s.shape.radius);
+    }
+    for (const ShapePart& p : s.shape.parts) {
+      const double half = p.type == "capsule" ? 0.5 * std::abs(p.length) + p.radius : p.radii.y();
+      extend(y + p.center.y() - half);
+      extend(y + p.center.y() + half);
+    }
+  }
+  return top > bottom ? top - bottom : 1.8;
+}
+
+/// Every segment's drawing as a list of parts (a segment without parts is one capsule from its
+/// origin along y, as the app draws it), each with its colour.
+nlohmann::json model_json(const BodyModel& model) {
+  nlohmann::json segments = nlohmann::json::array();
+  for (const Segment& s : model.segments) {
+    nlohmann::json parts = nlohmann::json::array();
+    if (s.shape.parts.empty()) {
+      parts.push_back({{"name", s.name},
+                       {"type", "capsule"},
+                       {"center", page_vector(Eigen::Vector3d(0, 0.5 * s.shape.length, 0))},
+                       {"length", std::abs(s.shape.length)},
+                       {"radius", std::max(s.shape.radius, 0.01)},
+                       {"colour", hex_colour(segment_colour(s))}});
+    }
+    for (const ShapePart& part : s.shape.parts) {
+      nlohmann::json p = {{"name", part.name},
+                          {"type", part.type},
+                          {"center", page_vector(part.center)},
+                          {"colour", hex_colour(part_colour(s, part))}};
+      if (part.type == "capsule") {
+        p["length"] = std::abs(part.length);
+        p["radius"] = part.radius;
+      } else {
+        p["radii"] = page_vector(part.radii);
+      }
+      parts.push_back(p);
+    }
+    segments.push_back({{"name", s.name}, {"parent", s.parent}, {"parts", parts}});
+  }
+  return {{"name", model.name},
+          {"mass_kg", model.total_mass()},
+          {"standing_height_m", standing_height(model)},
+          {"segments", segments}};
+}
+
+/// The indices of at most kFlightPageMaxFrames samples, evenly spread, first and last kept.
+std::vector<std::size_t> kept_frames(std::size_t count) {
+  std::vector<std::size_t> out;
+  const std::size_t limit = static_cast<std::size_t>(kFlightPageMaxFrames);
+  if (count <= limit) {
+    for (std::size_t i = 0; i < count; ++i)
+      out.push_back(i);
+    return out;
+  }
+  for (std::size_t k = 0; k < limit; ++k)
+    out.push_back((k * (count - 1)) / (limit - 1));
+  return out;
+}
+
+/// One trajectory: per frame its time, every segment's origin (x, y, z) and world-from-segment
+/// rotation (w, x, y, z), the CoM, the residual (world force and moment about the CoM, for the
+/// arrows), and |F1..3| and |F4..6| of the root wrench (root frame, root origin: what the app
+/// plots); all flat arrays, frame after frame.
+nlohmann::json stage_json(const std::string& label, const std::vector<SampleRecord>& samples,
+                          const std::vector<double>& keyframe_times) {
+  nlohmann::json t = nlohmann::json::array(), pos = nlohmann::json::array(),
+                 quat = nlohmann::json::array(), com = nlohmann::json::array(),
+                 res = nlohmann::json::array(), force = nlohmann::json::array(),
+                 moment = nlohmann::json::array();
+  for (std::size_t i : kept_frames(samples.size())) {
+    const SampleRecord& s = samples[i];
+    t.push_back(s.time);
+    for (std::size_t k = 0; k < s.segment_position.size(); ++k) {
+      for (int c = 0; c < 3; ++c)
+        pos.push_back(rounded(s.segment_position[k][c], 6));
+      const Eigen::Quaterniond& q = s.segment_rotation[k];
+      for (double v : {q.w(), q.x(), q.y(), q.z()})
+        quat.push_back(rounded(v, 6));
+    }
+    for (int c = 0; c < 3; ++c)
+      com.push_back(rounded(s.com[c], 6));
+    for (int c = 0; c < 6; ++c)
+      res.push_back(rounded(s.residual[c], 5));
+    force.push_back(rounded(s.root_wrench.head<3>().norm(), 6));
+    moment.push_back(rounded(s.root_wrench.tail<3>().norm(), 6));
+  }
+  return {{"label", label},
+          {"t", t},
+          {"pos", pos},
+          {"quat", quat},
+          {"com", com},
+          {"res", res},
+          {"force_N", force},
+          {"moment_Nm", moment},
+          {"keyframes", keyframe_times}};
+}
+
+nlohmann::json parabola_json(const Takeoff& takeoff, double duration) {
+  nlohmann::json points = nlohmann::json::array();
+  for (int i = 0; i < kParabolaPoints; ++i) {
+    const double t = duration * i / (kParabolaPoints - 1);
+    for (double v : page_vector(ballistic_com(takeoff, t), 6))
+      points.push_back(v);
+  }
+  return points;
+}
+
+nlohmann::json apparatus_json(const BodyModel& model, const Takeoff& takeoff,
+                              const std::vector<SampleRecord>& samples) {
+  const Apparatus a = apparatus_for(model, takeoff, samples);
+  return {{"kind", a.kind == ApparatusKind::kPlatform ? "platform" : "trampoline"},
+          {"takeoff_height_m", a.takeoff_height},
+          {"landing_height_m", a.landing_height},
+          {"takeoff_point", page_vector(a.takeoff_point)},
+          {"direction", page_vector(a.direction)}};
+}
+
+/// The settings of result.json the title block lists, those present.
+nlohmann::json settings_json(const nlohmann::json& result) {
+  nlohmann::json out = nlohmann::json::object();
+  for (const char* key :
+       {"status", "formulation", "epsilon", "knots_per_interval", "timing_optimized", "samples",
+        "keyframes", "flight_time_s", "iterations", "solve_seconds"})
+    if (result.contains(key) && !result[key].is_null()) out[key] = result[key];
+  return out;
+}
+
+nlohmann::json read_result_document(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, "", "cannot be read");
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(path, "", std::string("not JSON: ") + e.what());
+  }
+}
+
+/// The page's data from a `saltus optimize` folder: its files as written.
+nlohmann::json optimize_folder_data(const std::string& dir) {
+  const ResultFolder folder = read_result_folder(dir);
+  if (!folder.after)
+    throw InputError((fs::path(dir) / "result.json").string(), "/after",
+                     "the folder holds no optimised motion");
+  const std::string motion_path = (fs::path(dir) / "optimized.motion.json").string();
+  const MotionFile after = load_motion_file(motion_path);
+  const nlohmann::json result = read_result_document((fs::path(dir) / "result.json").string());
+  for (const TrajectoryCsv* csv : {&folder.before, &*folder.after})
+    if (csv->segments.size() != after.model.segments.size())
+      throw InputError((fs::path(dir) / "trajectory_before.csv").string(), "",
+                       "its segments are not those of the folder's model.json");
+  nlohmann::json data;
+  data["kind"] = "optimize";
+  data["motion"] = folder.result.motion;
+  data["model"] = model_json(after.model);
+  data["settings"] = settings_json(result);
+  data["residual"] = {{"before", result.at("before")}, {"after", result.at("after")}};
+  data["body_weight_N"] =
+      folder.result.body_weight_N.value_or(after.model.total_mass() * kStandardGravity);
+  data["duration_s"] = folder.result.flight_time_s;
+  data["stages"] = {
+      stage_json("before", folder.before.samples, folder.result.keyframe_times_before),
+      stage_json("after", folder.after->samples, folder.result.optimization->keyframe_times_after)};
+  data["parabola"] = parabola_json(after.motion.takeoff, folder.result.flight_time_s);
+  data["apparatus"] = apparatus_json(after.model, after.motion.takeoff, folder.after->samples);
+  return data;
+}
+
+/// The page's data from a motion, a capture or an `import` folder, evaluated as `evaluate` does.
+nlohmann::json motion_data(const std::string& source) {
+  const MotionFile file = load_export_source(source);
+  const MotionEvaluation evaluation = evaluate_motion(file.motion, file.model);
+  nlohmann::json data;
+  data["kind"] = "motion";
+  data["motion"] = file.motion.name;
+  data["model"] = model_json(file.model);
+  data["settings"] = {{"status", "evaluated"},
+                      {"knots_per_interval", EvaluateOptions{}.interpolation.knots_per_interval},
+                      {"samples", evaluation.samples.size()},
+                      {"keyframes", file.motion.keyframes.size()},
+                      {"flight_time_s", file.motion.flight_time()}};
+  data["residual"] = {{"before", force_metrics_to_json(evaluation.metrics)}, {"after", nullptr}};
+  data["body_weight_N"] = file.model.total_mass() * kStandardGravity;
+  data["duration_s"] = file.motion.flight_time();
+  data["stages"] = {stage_json("before", evaluation.samples, evaluation.keyframe_times)};
+  data["parabola"] = parabola_json(file.motion.takeoff, file.motion.flight_time());
+  data["apparatus"] = apparatus_json(file.model, file.motion.takeoff, evaluation.samples);
+  return data;
+}
+
+std::string today_utc() {
+  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  std::tm parts{};
+  gmtime_r(&now, &parts);
+  char text[16];
+  std::strftime(text, sizeof text, "%Y-%m-%d", &parts);
+  return text;
+}
+
+}  // namespace
+
+nlohmann::json flight_page_data(const std::string& source, const std::string& date) {
+  const bool optimize_folder =
+      fs::is_directory(source) && fs::is_regular_file(fs::path(source) / "optimized.motion.json");
+  nlohmann::json data = optimize_folder ? optimize_folder_data(source) : motion_data(source);
+  data["format"] = kFlightPageFormat;
+  data["source"] = source;
+  data["date"] = date;
+  data["saltus_version"] = kSaltusVersion;
+  return data;
+}
+
+FlightPageSummary export_flight_page(const std::string& source, const std::string& out_path) {
+  const nlohmann::json data = flight_page_data(source, today_utc());
+  require_finite(data, source);
+  const std::string html = flight_page_html(data);
+  save_flight_page(out_path, html);
+  FlightPageSummary summary;
+  summary.motion = data["motion"].get<std::string>();
+  summary.model = data["model"]["name"].get<std::string>();
+  summary.optimised = data["stages"].size() > 1;
+  summary.frames = static_cast<int>(data["stages"][0]["t"].size());
+  summary.bytes = html.size();
+  return summary;
+}
+
+}  // namespace saltus

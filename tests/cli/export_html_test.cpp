@@ -1,0 +1,155 @@
+// `saltus export --format html` (use_cases/flight_page.h): the program writes one page and never
+// over a file it did not write; the page of an optimised M7 opened in headless Chromium (software
+// WebGL, SwiftShader) runs its own self-test (#selftest) and the test reads the findings back
+// from the DOM: no error and no refused request, a picture that is not blank and changes from
+// t = 0 to t = T and from before to after, the plot's cursor drawn at the slider's time, a click
+// on the plot moving the time, and the title block's numbers equal to result.json's.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "support/cli_runner.h"
+
+namespace saltus::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string page_m1_path() {
+  return m1_path();
+}
+
+TEST(ExportHtml, WritesOnePageAndNeverOverAnotherFile) {
+  TempDir dir;
+  const std::string page = dir / "flight.html";
+  CliRun run = run_cli("export " + page_m1_path() + " --format html --out " + page);
+  ASSERT_EQ(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find("as given"), std::string::npos) << run.output;
+  EXPECT_EQ(read_text(page).rfind("<!DOCTYPE html>", 0), 0u);
+  run = run_cli("export " + page_m1_path() + " --format html --quiet --out " + page);
+  EXPECT_EQ(run.status, 0) << "its own page is replaced: " << run.output;
+  EXPECT_EQ(run.output, "");
+
+  const std::string notes = dir / "notes.html";
+  write_text(notes, "<html>my notes</html>");
+  run = run_cli("export " + page_m1_path() + " --format html --out " + notes);
+  EXPECT_EQ(run.status, 2) << run.output;
+  EXPECT_NE(run.output.find(notes + ": exists and is not a flight page"), std::string::npos)
+      << run.output;
+  EXPECT_EQ(read_text(notes), "<html>my notes</html>");
+
+  run = run_cli("export " + page_m1_path() + " --format html --fps 30 --out " + (dir / "b.html"));
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.output.find("--fps"), std::string::npos) << run.output;
+  run = run_cli("export " + (dir / "absent.motion.json") + " --format html --out " +
+                (dir / "c.html"));
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.output.find("absent.motion.json"), std::string::npos) << run.output;
+  EXPECT_EQ(names_in(dir.path()), (std::set<std::string>{"flight.html", "notes.html"}))
+      << "nothing else written, no temporary left";
+}
+
+/// Chromium headless with software WebGL (SwiftShader through ANGLE), its profile in `profile`.
+std::string chromium_command(const std::string& profile) {
+  return "timeout 60 chromium --headless --no-sandbox --disable-gpu --use-angle=swiftshader "
+         "--enable-unsafe-swiftshader --hide-scrollbars --mute-audio --no-first-run "
+         "--disable-extensions --disable-background-networking --user-data-dir=" +
+         profile;
+}
+
+std::string unescape_html(std::string text) {
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{"&lt;", "<"},
+                                 {"&gt;", ">"},
+                                 {"&quot;", "\""},
+                                 {"&amp;", "&"}}) {
+    for (std::size_t at = text.find(from); at != std::string::npos;
+         at = text.find(from, at + to.size()))
+      text.replace(at, from.size(), to);
+  }
+  return text;
+}
+
+TEST(ExportHtmlBrowser, TheOptimisedM7PageRunsOfflineAndShowsTheResult) {
+  ASSERT_EQ(run_command("command -v chromium").status, 0)
+      << "chromium is needed for this test: tools/bootstrap.sh test installs it";
+  TempDir dir;
+  const std::string m7 = std::string(SALTUS_EXAMPLES_DIR) +
+                         "/motions/M7-double-front-one-and-a-half-twists.motion.json";
+  CliRun run = run_cli("optimize " + m7 + " --quiet --out " + (dir / "m7"));
+  ASSERT_EQ(run.status, 0) << run.output;
+  const std::string page = dir / "m7.html";
+  run = run_cli("export " + (dir / "m7") + " --format html --out " + page);
+  ASSERT_EQ(run.status, 0) << run.output;
+  EXPECT_LE(fs::file_size(page), 3000000u) << "the issue's bound for M7";
+
+  run = run_command(chromium_command(dir / "profile") +
+                    " --virtual-time-budget=10000 --dump-dom 'file://" + page + "#selftest'");
+  ASSERT_EQ(run.status, 0) << run.output;
+  EXPECT_EQ(run.output.find("Uncaught"), std::string::npos) << run.output;
+  const std::string open = "<pre id=\"selftest-result\">";
+  const std::size_t start = run.output.find(open);
+  ASSERT_NE(start, std::string::npos) << run.output;
+  const std::size_t end = run.output.find("</pre>", start);
+  const nlohmann::json found = nlohmann::json::parse(
+      unescape_html(run.output.substr(start + open.size(), end - start - open.size())));
+  SCOPED_TRACE(found.dump());
+
+  EXPECT_EQ(found["problems"], nlohmann::json::array()) << "errors or refused requests";
+  EXPECT_TRUE(found["webgl"].get<bool>());
+  EXPECT_GT(found["non_background_fraction"].get<double>(), 0.05) << "the canvas is not blank";
+  EXPECT_GT(found["start_end_difference_fraction"].get<double>(), 0.002)
+      << "t = 0 and t = T look different";
+  EXPECT_GT(found["before_after_difference_fraction"].get<double>(), 0.0);
+  EXPECT_EQ(found["stages"], 2);
+
+  const double pixel = found["cursor"]["pixel_seconds"].get<double>();
+  EXPECT_GE(found["cursor"]["columns"].get<int>(), 1) << "the cursor is drawn";
+  EXPECT_NEAR(found["cursor"]["slider_time"].get<double>(),
+              found["cursor"]["requested_time"].get<double>(), 0.002)
+      << "the slider keeps the time it was moved to";
+  EXPECT_NEAR(found["cursor"]["cursor_time"].get<double>(),
+              found["cursor"]["slider_time"].get<double>(), 1.5 * pixel);
+  EXPECT_NEAR(found["click"]["slider_time"].get<double>(),
+              found["click"]["target_time"].get<double>(), 1.5 * pixel);
+  EXPECT_NEAR(found["click"]["slider_time"].get<double>(),
+              found["click"]["state_time"].get<double>(), 1e-9);
+
+  // The numbers shown (4 significant digits) against result.json.
+  const nlohmann::json result = read_json(dir / "m7/result.json");
+  const nlohmann::json& shown = found["shown"];
+  int compared = 0;
+  for (const char* stage : {"before", "after"})
+    for (const char* key : {"avg_root_force", "max_force_N", "max_moment_Nm"}) {
+      const std::string field = std::string(stage) + "." + key;
+      ASSERT_TRUE(shown.contains(field)) << field;
+      const double expected = result[stage][key].get<double>();
+      EXPECT_NEAR(std::stod(shown[field].get<std::string>()), expected,
+                  5e-4 * std::abs(expected) + 1e-12)
+          << field;
+      ++compared;
+    }
+  EXPECT_EQ(compared, 6);
+  EXPECT_NEAR(std::stod(shown["duration_s"].get<std::string>()),
+              result["flight_time_s"].get<double>(), 5e-4);
+
+  // Pictures to look at, laptop and phone sized, at 40 % of the flight.
+  const fs::path pictures = fs::path(SALTUS_BIN_DIR).parent_path() / "flight-page";
+  fs::create_directories(pictures);
+  const double t = 0.4 * result["flight_time_s"].get<double>();
+  for (const auto& [name, size] :
+       {std::pair<std::string, std::string>{"laptop", "1280,720"}, {"phone", "390,844"}}) {
+    const fs::path png = pictures / (name + ".png");
+    fs::remove(png);
+    run = run_command(chromium_command(dir / "profile") + " --virtual-time-budget=5000 " +
+                      "--window-size=" + size + " --screenshot=" + png.string() + " 'file://" +
+                      page + "#t=" + std::to_string(t) + "'");
+    ASSERT_EQ(run.status, 0) << run.output;
+    ASSERT_TRUE(fs::exists(png)) << run.output;
+    EXPECT_GT(fs::file_size(png), 20000u) << png << ": a blank page compresses to less";
+  }
+}
+
+}  // namespace
+}  // namespace saltus::test

@@ -1,0 +1,159 @@
+// The flight page's data (use_cases/flight_page.h), checked against what it was made from by
+// other paths: the optimiser's samples in memory (the page reads the written CSVs), result.json
+// parsed here, the take-off parabola by its closed form, the model's shapes; the page of an
+// optimised M7 stays under 3 MB; bad sources name the file.
+
+#include "saltus/use_cases/flight_page.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "saltus/base/input_error.h"
+#include "saltus/formats/finite_check.h"
+#include "saltus/formats/flight_page.h"
+#include "saltus/formats/motion_file.h"
+#include "saltus/use_cases/result_folders.h"
+#include "support/cli_runner.h"
+
+namespace saltus {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string bundled_motion(const std::string& name) {
+  return std::string(SALTUS_EXAMPLES_DIR) + "/motions/" + name + ".motion.json";
+}
+
+/// An optimise folder of `name` after a few iterations (the page does not care how far).
+OptimizationResult optimised_folder(const std::string& name, const std::string& dir, int samples,
+                                    int iterations) {
+  const MotionFile file = load_motion_file(bundled_motion(name));
+  OptimizeOptions options;
+  options.nlp.samples = samples;
+  options.solver.max_iterations = iterations;
+  OptimizationResult result = optimize_motion(file.motion, file.model, options);
+  write_optimization_outputs(dir, file, result, options);
+  return result;
+}
+
+TEST(FlightPageData, AnOptimiseFolderGivesBothStagesAsComputed) {
+  test::TempDir tmp;
+  const std::string dir = tmp / "m7";
+  const OptimizationResult run =
+      optimised_folder("M7-double-front-one-and-a-half-twists", dir, 101, 3);
+  const nlohmann::json data = flight_page_data(dir, "2026-11-26");
+  EXPECT_EQ(data["format"], kFlightPageFormat);
+  EXPECT_EQ(data["kind"], "optimize");
+  EXPECT_EQ(data["date"], "2026-11-26");
+  EXPECT_NO_THROW(require_finite(data, dir));
+
+  const nlohmann::json result = test::read_json(dir + "/result.json");
+  EXPECT_EQ(data["residual"]["before"], result["before"]);
+  EXPECT_EQ(data["residual"]["after"], result["after"]);
+  EXPECT_EQ(data["settings"]["formulation"], result["formulation"]);
+  EXPECT_EQ(data["body_weight_N"], result["body_weight_N"]);
+
+  ASSERT_EQ(data["stages"].size(), 2u);
+  const int segments = static_cast<int>(run.after.samples[0].segment_position.size());
+  for (int stage = 0; stage < 2; ++stage) {
+    const nlohmann::json& s = data["stages"][stage];
+    const std::vector<SampleRecord>& samples = stage ? run.after.samples : run.before.samples;
+    ASSERT_EQ(s["t"].size(), samples.size());
+    ASSERT_EQ(s["pos"].size(), samples.size() * segments * 3);
+    ASSERT_EQ(s["quat"].size(), samples.size() * segments * 4);
+    for (std::size_t i = 0; i < samples.size(); i += 10) {
+      EXPECT_NEAR(s["t"][i].get<double>(), samples[i].time, 1e-12);
+      for (int k = 0; k < segments; ++k) {
+        for (int c = 0; c < 3; ++c)
+          EXPECT_NEAR(s["pos"][(i * segments + k) * 3 + c].get<double>(),
+                      samples[i].segment_position[k][c], 1e-5);
+        // The page's (w, x, y, z) is the sample's rotation, up to the sign the CSV normalises.
+        const Eigen::Quaterniond& q = samples[i].segment_rotation[k];
+        const double dot = s["quat"][(i * segments + k) * 4].get<double>() * q.w() +
+                           s["quat"][(i * segments + k) * 4 + 1].get<double>() * q.x() +
+                           s["quat"][(i * segments + k) * 4 + 2].get<double>() * q.y() +
+                           s["quat"][(i * segments + k) * 4 + 3].get<double>() * q.z();
+        EXPECT_NEAR(std::abs(dot), 1.0, 1e-5);
+      }
+      EXPECT_NEAR(s["force_N"][i].get<double>(), samples[i].root_wrench.head<3>().norm(),
+                  1e-5 * (1 + samples[i].root_wrench.head<3>().norm()));
+    }
+  }
+  EXPECT_EQ(data["stages"][1]["keyframes"], result["keyframe_times_after"]);
+
+  // The parabola by its closed form from the optimised motion's take-off.
+  const Takeoff takeoff = run.optimized_motion.takeoff;
+  const double duration = data["duration_s"].get<double>();
+  const nlohmann::json& p = data["parabola"];
+  const std::size_t last = p.size() - 3;
+  EXPECT_NEAR(p[1].get<double>(), takeoff.com_position.y(), 1e-5);
+  EXPECT_NEAR(p[last + 1].get<double>(),
+              takeoff.com_position.y() + takeoff.com_velocity.y() * duration -
+                  0.5 * 9.81 * duration * duration,
+              1e-4);
+  EXPECT_EQ(data["apparatus"]["kind"], "trampoline");
+
+  // The model's shapes: parts as in the model file, one capsule for a segment without parts.
+  const nlohmann::json model_file = test::read_json(dir + "/model.json");
+  ASSERT_EQ(data["model"]["segments"].size(), model_file["segments"].size());
+  for (std::size_t i = 0; i < model_file["segments"].size(); ++i) {
+    const nlohmann::json& shape = model_file["segments"][i]["shape"];
+    const std::size_t parts = shape.contains("parts") ? shape["parts"].size() : 1;
+    EXPECT_EQ(data["model"]["segments"][i]["parts"].size(), parts) << i;
+  }
+  const double height = data["model"]["standing_height_m"].get<double>();
+  EXPECT_GT(height, 1.5);
+  EXPECT_LT(height, 2.0);
+
+  // The whole page: within the bound the issue sets, and exactly what was written.
+  const std::string page = tmp / "m7.html";
+  const FlightPageSummary summary = export_flight_page(dir, page);
+  EXPECT_TRUE(summary.optimised);
+  EXPECT_EQ(summary.frames, 101);
+  EXPECT_EQ(summary.bytes, fs::file_size(page));
+  EXPECT_LE(summary.bytes, 3000000u);
+  EXPECT_EQ(read_flight_page_data(page)["residual"], data["residual"]);
+}
+
+TEST(FlightPageData, AMotionFileIsEvaluatedAndADiveHasItsPlatform) {
+  const nlohmann::json data =
+      flight_page_data(bundled_motion("dive-5m-front-one-and-a-half-twists"), "2026-11-26");
+  EXPECT_EQ(data["kind"], "motion");
+  EXPECT_EQ(data["stages"].size(), 1u);
+  EXPECT_TRUE(data["residual"]["after"].is_null());
+  EXPECT_GT(data["residual"]["before"]["avg_root_force"].get<double>(), 0.0);
+  EXPECT_EQ(data["apparatus"]["kind"], "platform");
+  EXPECT_GT(data["apparatus"]["takeoff_height_m"].get<double>() -
+                data["apparatus"]["landing_height_m"].get<double>(),
+            2.0);
+  EXPECT_EQ(data["stages"][0]["t"].size(), 101u) << "the default samples";
+}
+
+TEST(FlightPageData, ALongTrajectoryIsThinnedKeepingItsEnds) {
+  test::TempDir tmp;
+  const std::string dir = tmp / "m1";
+  optimised_folder("M1-straight-back-somersault", dir, 1501, 0);
+  const nlohmann::json data = flight_page_data(dir, "2026-11-26");
+  const nlohmann::json& t = data["stages"][1]["t"];
+  ASSERT_EQ(t.size(), static_cast<std::size_t>(kFlightPageMaxFrames));
+  EXPECT_EQ(t[0].get<double>(), 0.0);
+  EXPECT_NEAR(t[t.size() - 1].get<double>(), data["duration_s"].get<double>(), 1e-12);
+}
+
+TEST(FlightPageData, BadSourcesNameTheFile) {
+  test::TempDir tmp;
+  try {
+    flight_page_data(tmp / "absent.motion.json", "");
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("absent.motion.json"), std::string::npos) << e.what();
+  }
+  fs::create_directories(tmp / "empty");
+  EXPECT_THROW(flight_page_data(tmp / "empty", ""), InputError);
+}
+
+}  // namespace
+}  // namespace saltus
