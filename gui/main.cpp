@@ -6,7 +6,6 @@
 #include <QSurfaceFormat>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -16,6 +15,7 @@
 #include "app/run_controller.h"
 #include "core/command_line.h"
 #include "saltus/optim/solver_memory.h"
+#include "x_display.h"
 
 namespace {
 
@@ -31,13 +31,21 @@ void print_no_display_advice(const char* why) {
                why);
 }
 
-/// Whether Qt's default platform (X11, or Wayland) has a display to connect to. Another
-/// platform chosen in QT_QPA_PLATFORM (offscreen, vnc, ...) is left to Qt.
-bool display_configured() {
+/// The Qt platform chosen in QT_QPA_PLATFORM ("offscreen", "vnc", ...), "" for Qt's default.
+std::string qt_platform() {
   const char* platform = std::getenv("QT_QPA_PLATFORM");
-  if (platform && *platform && std::strncmp(platform, "xcb", 3) != 0 &&
-      std::strncmp(platform, "wayland", 7) != 0)
-    return true;
+  return platform ? std::string(platform) : std::string();
+}
+
+/// Whether Qt's own platform is X11 (the default here) or Wayland, which need a display of
+/// their own; other platforms (offscreen, vnc, ...) draw Qt's windows without one.
+bool qt_platform_needs_display() {
+  const std::string platform = qt_platform();
+  return platform.empty() || platform.rfind("xcb", 0) == 0 || platform.rfind("wayland", 0) == 0;
+}
+
+/// Whether Qt's default platform (X11, or Wayland) has a display to connect to.
+bool display_configured() {
   const char* x11 = std::getenv("DISPLAY");
   const char* wayland = std::getenv("WAYLAND_DISPLAY");
   return (x11 && *x11) || (wayland && *wayland);
@@ -79,8 +87,22 @@ int main(int argc, char** argv) {
     return 0;
   }
 
-  if (!display_configured()) {
+  if (qt_platform_needs_display() && !display_configured()) {
     print_no_display_advice("no display is set (DISPLAY is empty)");
+    return kExitNoDisplay;
+  }
+  if (!saltus::gui::x_display_reachable()) {
+    // Qt might run (offscreen, Wayland), but the first 3D view would abort: say so now.
+    const char* x11 = std::getenv("DISPLAY");
+    const std::string at = x11 && *x11 ? std::string(" at DISPLAY=") + x11 : " (DISPLAY is empty)";
+    const std::string why =
+        qt_platform_needs_display()
+            ? "no X server answers" + at + ", and the 3D view draws through X"
+            : "QT_QPA_PLATFORM=" + qt_platform() +
+                  " draws the window without a screen, but the 3D view needs an X display and "
+                  "no X server answers" +
+                  at;
+    print_no_display_advice(why.c_str());
     return kExitNoDisplay;
   }
   qInstallMessageHandler(on_qt_message);

@@ -1,7 +1,10 @@
 #include "app/edit_controller.h"
 
+#include <QAbstractSpinBox>
 #include <QAction>
 #include <QDateTime>
+#include <QKeyEvent>
+#include <QLineEdit>
 #include <QMainWindow>
 #include <QMenu>
 #include <QUndoCommand>
@@ -184,8 +187,10 @@ void EditController::on_workspace(WorkspaceChange change) {
   }
   if (change == WorkspaceChange::kOpened || change == WorkspaceChange::kEdited) {
     capture_panel_->set_document(ws.loaded() ? &ws.document() : nullptr);
+    // A motion just opened is shown from t = 0: its first keyframe is the one selected.
     keyframe_panel_->set_motion(ws.loaded() ? &ws.document().file().motion : nullptr,
-                                ws.loaded() ? &ws.document().file().model : nullptr);
+                                ws.loaded() ? &ws.document().file().model : nullptr,
+                                change == WorkspaceChange::kOpened);
     model_panel_->set_model(ws.loaded() ? &ws.document().loaded_model() : nullptr,
                             ws.loaded() ? &ws.document().file().model : nullptr);
   }
@@ -345,6 +350,49 @@ bool EditController::pick_capture_frames(bool every_frame, QString* error) {
                                          automatic_capture_frames(capture, every_frame)));
       },
       error);
+}
+
+namespace {
+
+/// The text field of a spin box or line edit (null for other widgets).
+QLineEdit* text_field_of(QObject* object) {
+  if (auto* edit = qobject_cast<QLineEdit*>(object)) return edit;
+  if (auto* box = qobject_cast<QAbstractSpinBox*>(object)) return box->findChild<QLineEdit*>();
+  return nullptr;
+}
+
+}  // namespace
+
+void EditController::route_undo_keys(QWidget* root) {
+  // A field's "modified" flag says a value is being typed; committing the value clears it.
+  for (QAbstractSpinBox* box : root->findChildren<QAbstractSpinBox*>()) {
+    box->installEventFilter(this);
+    connect(box, &QAbstractSpinBox::editingFinished, this, [box] {
+      if (QLineEdit* edit = text_field_of(box)) edit->setModified(false);
+    });
+  }
+  for (QLineEdit* edit : root->findChildren<QLineEdit*>()) {
+    if (qobject_cast<QAbstractSpinBox*>(edit->parentWidget())) continue;  // the box has it
+    edit->installEventFilter(this);
+    connect(edit, &QLineEdit::editingFinished, this, [edit] { edit->setModified(false); });
+  }
+}
+
+bool EditController::eventFilter(QObject* watched, QEvent* event) {
+  if (event->type() == QEvent::ShortcutOverride) {
+    const auto* key = static_cast<QKeyEvent*>(event);
+    const QKeySequence pressed(static_cast<int>(key->modifiers() & ~Qt::KeypadModifier) |
+                               key->key());
+    const bool undo_or_redo =
+        undo_->shortcuts().contains(pressed) || redo_->shortcuts().contains(pressed);
+    const QLineEdit* field = text_field_of(watched);
+    if (undo_or_redo && field && !field->isModified()) {
+      // Not claimed by the field: the window's Undo or Redo shortcut acts.
+      event->ignore();
+      return true;
+    }
+  }
+  return QObject::eventFilter(watched, event);
 }
 
 bool EditController::can_undo() const {

@@ -16,9 +16,11 @@
 #include "app/app_context.h"
 
 class QAction;
+class QEvent;
 class QMenu;
 class QUndoStack;
 class QUndoView;
+class QWidget;
 
 namespace saltus::gui {
 
@@ -58,6 +60,13 @@ class EditController : public QObject {
   /// The keyframes replaced by the library's automatic pick, or by every captured frame.
   bool pick_capture_frames(bool every_frame, QString* error = nullptr);
 
+  /// Makes Ctrl+Z and Ctrl+Shift+Z in the number fields under `root` (spin boxes, line edits)
+  /// the window's Undo and Redo once the typed value is committed (Enter, or leaving the
+  /// field). Qt's fields claim these keys for their own text history, so after typing a value
+  /// and pressing Enter the keys did nothing visible. While a value is being typed they stay the
+  /// field's own undo of the typing.
+  void route_undo_keys(QWidget* root);
+
   bool can_undo() const;
   bool can_redo() const;
   void undo();
@@ -66,6 +75,10 @@ class EditController : public QObject {
  signals:
   /// A keyframe was chosen in the Keyframes panel: show its time.
   void keyframe_chosen(double time);
+
+ protected:
+  /// Lets the Undo and Redo keys through to the window in committed fields (route_undo_keys).
+  bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
   /// The panel an edit comes from: it shows the edit's problem.

@@ -100,6 +100,10 @@ FileController::FileController(AppContext& context, ViewController& view,
            : answer == QMessageBox::Discard ? DiscardAnswer::kDiscard
                                             : DiscardAnswer::kCancel;
   };
+  save_chooser_ = [this](const QString& title, const QString& suggestion, const QString& filter) {
+    // Qt's dialog asks before it replaces an existing file.
+    return QFileDialog::getSaveFileName(context_.window(), title, suggestion, filter);
+  };
 }
 
 void FileController::fill_menu(QMenu* file, const std::vector<QAction*>& more_exports) {
@@ -270,20 +274,31 @@ bool FileController::ask_save_result() {
 
 bool FileController::ask_save_motion() {
   const Workspace& ws = context_.workspace();
+  if (!ws.loaded()) return report_save_failure(tr("Nothing to save"), tr("Open a motion first."));
   const QString suggestion =
       QDir(context_.last_dir())
           .filePath(motion_stem(ws.document().file().path) + "-edited.motion.json");
   const QString path =
-      QFileDialog::getSaveFileName(context_.window(), tr("Save motion"), suggestion,
-                                   qstr(save_dialog_filter(ReadableKind::kMotion)));
-  return !path.isEmpty() && save_motion(path);
+      save_chooser_(tr("Save motion"), suggestion, qstr(save_dialog_filter(ReadableKind::kMotion)));
+  if (path.isEmpty()) return false;
+  QString error;
+  return save_motion(path, &error) || report_save_failure(tr("Cannot save motion"), error);
 }
 
 bool FileController::ask_save_model() {
-  const QString path = QFileDialog::getSaveFileName(
-      context_.window(), tr("Save body model"),
-      QDir(context_.last_dir()).filePath("edited-model.json"), filter(ReadableKind::kModel));
-  return !path.isEmpty() && save_model(path);
+  if (!context_.workspace().loaded())
+    return report_save_failure(tr("Nothing to save"), tr("Open a motion first."));
+  const QString path =
+      save_chooser_(tr("Save body model"), QDir(context_.last_dir()).filePath("edited-model.json"),
+                    filter(ReadableKind::kModel));
+  if (path.isEmpty()) return false;
+  QString error;
+  return save_model(path, &error) || report_save_failure(tr("Cannot save model"), error);
+}
+
+bool FileController::report_save_failure(const QString& title, const QString& message) {
+  context_.status(tr("Not saved: %1").arg(message), 15000);
+  return context_.fail(title, message, nullptr);
 }
 
 bool FileController::save_result(const QString& dir, QString* error) {

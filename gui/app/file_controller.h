@@ -63,6 +63,18 @@ class FileController : public QObject, public RemembersSettings {
   using DiscardPrompt = std::function<DiscardAnswer(const QString& question)>;
   /// Replaces the question (tests); the default asks in a dialog, or discards without a user.
   void set_discard_prompt(DiscardPrompt prompt) { prompt_ = std::move(prompt); }
+  /// Where to save a file: the chosen path, or "" when the user cancels.
+  using SaveChooser = std::function<QString(const QString& title, const QString& suggestion,
+                                            const QString& filter)>;
+  /// Replaces the save dialog of the motion and the model (tests). The default is Qt's save
+  /// dialog, which asks before replacing an existing file.
+  void set_save_chooser(SaveChooser chooser) { save_chooser_ = std::move(chooser); }
+
+  /// Save motion as… (File menu, the Keyframes panel's button): asks where, then save_motion.
+  /// A failure is said in the status bar and a dialog. False if cancelled or failed.
+  bool ask_save_motion();
+  /// Save body model as… (File menu, the Model panel's button), likewise.
+  bool ask_save_model();
   /// Asks before `action` drops unsaved work; true to go on (saved, discarded or nothing to
   /// lose), false to keep it.
   bool confirm_discard(const QString& action);
@@ -82,16 +94,17 @@ class FileController : public QObject, public RemembersSettings {
   void add_recent(const QString& path);
   void rebuild_recent_menu();
   QString ask_open_file(const QString& title, const QString& filter);
-  /// The save dialogs behind Save (returns false if the user cancels one).
-  bool ask_save_motion();
-  bool ask_save_model();
+  /// The folder dialog behind Save result (returns false if the user cancels it).
   bool ask_save_result();
+  /// Says a failed save in the status bar and, with a user, in a dialog. Returns false.
+  bool report_save_failure(const QString& title, const QString& message);
 
   AppContext& context_;
   ViewController& view_;
   PlaybackController& playback_;
   PlotsPanel& plots_;
   DiscardPrompt prompt_;
+  SaveChooser save_chooser_;
   std::string model_override_;  ///< model file chosen with "Open model", else ""
   QStringList recent_;
   QLabel* status_line_ = nullptr;

@@ -96,8 +96,8 @@ KeyframePanel::KeyframePanel(QWidget* parent) : QWidget(parent) {
   set_motion(nullptr, nullptr);
 }
 
-void KeyframePanel::set_motion(const Motion* motion, const BodyModel* model) {
-  const int keyframe = selected_keyframe();
+void KeyframePanel::set_motion(const Motion* motion, const BodyModel* model, bool first_keyframe) {
+  const int keyframe = first_keyframe ? 0 : selected_keyframe();
   const int segment = selected_segment();
   motion_ = motion;
   model_ = model;

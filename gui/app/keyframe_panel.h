@@ -25,8 +25,10 @@ class KeyframePanel : public QWidget {
  public:
   explicit KeyframePanel(QWidget* parent = nullptr);
 
-  /// Shows a motion (null: none open), keeping the selected keyframe and joint where possible.
-  void set_motion(const Motion* motion, const BodyModel* model);
+  /// Shows a motion (null: none open), keeping the selected keyframe and joint where possible;
+  /// with `first_keyframe` (another motion opened, shown from t = 0) the first keyframe is
+  /// selected instead.
+  void set_motion(const Motion* motion, const BodyModel* model, bool first_keyframe = false);
   int selected_keyframe() const;
   int selected_segment() const;
   void select(int keyframe, int segment);

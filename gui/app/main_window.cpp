@@ -76,6 +76,11 @@ MainWindow::MainWindow(bool interactive, QWidget* parent) : QMainWindow(parent) 
   connect(edits_, &EditController::keyframe_chosen, this, &MainWindow::seek);
   connect(edits_->keyframe_panel(), &KeyframePanel::add_requested, this,
           [this] { edits_->add_keyframe(time()); });
+  // The panels' Save buttons do what File > Save motion / body model as… do.
+  connect(edits_->keyframe_panel(), &KeyframePanel::save_requested, files_,
+          [this] { files_->ask_save_motion(); });
+  connect(edits_->model_panel(), &ModelPanel::save_requested, files_,
+          [this] { files_->ask_save_model(); });
   // A click on a segment shows the loads at its joint and marks it; a click beside the body
   // unmarks it (the plot keeps its joint).
   connect(view_, &ViewController::segment_clicked, this, [this](int segment) {
@@ -102,6 +107,8 @@ MainWindow::MainWindow(bool interactive, QWidget* parent) : QMainWindow(parent) 
   setCentralWidget(splitter);
 
   build_menus();
+  // Ctrl+Z in a number field whose value was entered undoes that edit, as the Edit menu says.
+  edits_->route_undo_keys(this);
   resize(1600, 1000);
   if (interactive) load_settings();
   scene_->setFocus();

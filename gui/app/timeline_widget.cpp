@@ -6,6 +6,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPainter>
+#include <QProxyStyle>
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QStyle>
@@ -16,7 +17,19 @@ namespace saltus::gui {
 
 namespace {
 constexpr int kClockIntervalMs = 15;  ///< playback clock; the frame rate is what rendering allows
-}
+
+/// The application's style, except that a left click on the slider's groove jumps to the time
+/// under the mouse (and a drag goes on from there) instead of stepping a page towards it.
+class JumpToClickStyle : public QProxyStyle {
+ public:
+  int styleHint(StyleHint hint, const QStyleOption* option, const QWidget* widget,
+                QStyleHintReturn* returned) const override {
+    if (hint == QStyle::SH_Slider_AbsoluteSetButtons) return Qt::LeftButton | Qt::MiddleButton;
+    return QProxyStyle::styleHint(hint, option, widget, returned);
+  }
+};
+
+}  // namespace
 
 TickStrip::TickStrip(QSlider* slider, QWidget* parent) : QWidget(parent), slider_(slider) {
   setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
@@ -79,8 +92,13 @@ TimelineWidget::TimelineWidget(QWidget* parent) : QWidget(parent) {
                            QStyle::SP_MediaSeekForward);
 
   slider_ = new QSlider(Qt::Horizontal, this);
+  // Without a base style the proxy follows the application's; the slider owns it.
+  auto* jump = new JumpToClickStyle;
+  jump->setParent(slider_);
+  slider_->setStyle(jump);
   slider_->setToolTip(
-      tr("Scrub through the flight. Ticks: grey = given keyframe times, orange = optimised"));
+      tr("Click or drag to go to a time. Ticks: grey = given keyframe times, orange = "
+         "optimised"));
   ticks_ = new TickStrip(slider_, this);
 
   speed_ = new QComboBox(this);

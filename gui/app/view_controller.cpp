@@ -6,7 +6,6 @@
 #include <QGridLayout>
 #include <QMenu>
 #include <QSettings>
-#include <QSignalBlocker>
 #include <QToolBar>
 
 #include "app/scene_widget.h"
@@ -56,7 +55,9 @@ ViewController::ViewController(AppContext& context, SceneWidget* scene, QObject*
     a->setCheckable(true);
     a->setChecked(defaults.*info.field);
     a->setToolTip(tr(info.tip));
-    connect(a, &QAction::toggled, this, [this] { apply_options(); });
+    connect(a, &QAction::toggled, this, [this] {
+      if (!setting_options_) apply_options();
+    });
     options_.push_back(a);
   }
 
@@ -158,11 +159,13 @@ void ViewController::apply_options() {
 }
 
 void ViewController::set_scene_options(const SceneOptions& options) {
+  // The actions' signals stay on, so that the Display panel's boxes follow them (a settings
+  // load ticks both or neither); the scene is redrawn once, after the last.
   const std::vector<SceneOptionInfo>& table = scene_option_table();
-  for (std::size_t i = 0; i < table.size(); ++i) {
-    const QSignalBlocker block(options_[i]);
+  setting_options_ = true;
+  for (std::size_t i = 0; i < table.size(); ++i)
     options_[i]->setChecked(options.*table[i].field);
-  }
+  setting_options_ = false;
   apply_options();
 }
 

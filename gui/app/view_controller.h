@@ -63,7 +63,11 @@ class ViewController : public QObject, public RemembersSettings {
   QAction* after_ = nullptr;
   QAction* reset_ = nullptr;
   std::vector<QAction*> cameras_;  ///< in camera_presets() order
-  std::vector<QAction*> options_;  ///< in scene_option_table() order
+  /// One state per display option: the View menu's checkable actions, in
+  /// scene_option_table() order. The Display panel's boxes and the settings read and write
+  /// these, never a copy.
+  std::vector<QAction*> options_;
+  bool setting_options_ = false;  ///< set_scene_options is ticking several at once
 };
 
 }  // namespace saltus::gui

@@ -227,6 +227,11 @@ GlyphTypicals Document::glyph_typicals(Stage stage) const {
   return out;
 }
 
+GlyphTypicals Document::arrow_typicals() const {
+  const GlyphTypicals before = glyph_typicals(Stage::kBefore);
+  return has_optimization() ? before.max(glyph_typicals(Stage::kAfter)) : before;
+}
+
 void Document::save_result(const std::string& out_dir) const {
   if (!loaded()) throw std::logic_error("no motion loaded");
   if (has_optimization())

@@ -95,9 +95,13 @@ class Document {
   /// The ballistic CoM path of the take-off state over the flight.
   ParabolaSamples parabola(int count) const;
 
-  /// Typical arrow sizes of the stage shown: after optimisation the arrows are scaled to what
-  /// remains, so that the residual is seen, not drawn as a dot on a 1000 N scale.
+  /// Typical arrow sizes of one stage alone.
   GlyphTypicals glyph_typicals(Stage stage) const;
+  /// The arrows' sizes for both stages of the run shown: the larger stage's (before, in
+  /// practice), so that one scale draws before and after and the 0.5 N left after optimisation
+  /// is drawn a thousandth as long as the 500 N before, not as large and as red. Without a run,
+  /// the interpolated motion's.
+  GlyphTypicals arrow_typicals() const;
 
   /// The motion capture the motion was imported from, null for a motion file. Its frames can be
   /// picked as keyframes (core/capture_keyframes.h); it is drawn beside the motion.

@@ -16,7 +16,9 @@ void Workspace::open(const std::string& motion_path, const std::string& model_ov
   Document loaded;
   loaded.load(motion_path, model_override, samples);
   document_ = std::move(loaded);
-  runs_.clear();
+  // Another motion's runs start again at run 1 (an edit keeps counting: undo may bring back
+  // the runs before it).
+  runs_ = RunList();
   shown_.reset();
   stage_ = Stage::kBefore;
   ++generation_;

@@ -181,7 +181,7 @@ struct BodyScene::Impl {
     environment.build(apparatus, paths.flight_bounds());
     body.build_ghosts(file.model, d.keyframe_poses(stage), stage == Stage::kAfter);
     glyphs.build(file.model.size());
-    glyphs.set_scales(shared_typicals ? *shared_typicals : d.glyph_typicals(stage));
+    glyphs.set_scales(shared_typicals ? *shared_typicals : d.arrow_typicals());
     forward_sign = samples.empty() ? 1.0 : forward_somersault_sign(samples.front());
     // The cameras look at the athlete from its own take-off axes.
     Eigen::Vector3d forward =
@@ -237,9 +237,12 @@ struct BodyScene::Impl {
   }
 
   std::string legend_text() const {
+    // Say that the scale stays: a small arrow after optimisation is a small residual.
     std::string arrows = "Arrows at the yellow CoM: force " +
                          unbroken(glyphs.force_scale().legend("N")) + ", moment (two heads) " +
                          unbroken(glyphs.moment_scale().legend("N·m")) +
+                         (shared_typicals ? "; one scale in both views"
+                                          : "; one scale before and after optimisation") +
                          "; green small, red full scale.";
     if (options.joint_arrows)
       arrows += " At the joints: joint forces, " + unbroken(glyphs.joint_scale().legend("N")) + ".";
@@ -389,8 +392,20 @@ void BodyScene::set_glyph_typicals(std::optional<GlyphTypicals> typicals) {
   Impl& d = *impl_;
   d.shared_typicals = typicals;
   if (!d.document) return;
-  d.glyphs.set_scales(typicals ? *typicals : d.document->glyph_typicals(d.stage));
+  d.glyphs.set_scales(typicals ? *typicals : d.document->arrow_typicals());
   d.update_time();
+}
+
+double BodyScene::residual_force_arrow_length() const {
+  return impl_->document ? impl_->glyphs.force_length() : 0.0;
+}
+
+double BodyScene::residual_force_full_scale() const {
+  return impl_->glyphs.force_scale().full_scale();
+}
+
+std::string BodyScene::legend() const {
+  return impl_->document ? impl_->legend_text() : std::string();
 }
 
 void BodyScene::set_antialiasing(bool on) {

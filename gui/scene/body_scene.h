@@ -9,6 +9,7 @@
 
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "core/document.h"
 #include "core/scene_options.h"
@@ -49,8 +50,15 @@ class BodyScene {
   void reset_camera();
 
   /// Arrow scales from these typical sizes (compare: both views share the larger run's), or,
-  /// with nullopt, from the stage shown (the default).
+  /// with nullopt, the document's one scale for both stages of its run (the default,
+  /// Document::arrow_typicals).
   void set_glyph_typicals(std::optional<GlyphTypicals> typicals);
+  /// The residual force arrow as drawn now: its length in metres (0 when not drawn), and the
+  /// force its scale draws at full length (the legend's "0.6 m = 500 N").
+  double residual_force_arrow_length() const;
+  double residual_force_full_scale() const;
+  /// The legend's text (arrow scales, lines, figures) as the view shows it.
+  std::string legend() const;
   /// Anti-aliased edges (FXAA, a post-processing pass). Off by default: in software OpenGL the
   /// pass costs several frames' worth of time, so the app draws moving pictures without it and
   /// a still picture, an export or a video frame with it.

@@ -3,9 +3,11 @@
 #include <vtkAppendPolyData.h>
 #include <vtkArrowSource.h>
 #include <vtkConeSource.h>
+#include <vtkMatrix4x4.h>
 #include <vtkProperty.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "scene/vtk_util.h"
 
@@ -102,6 +104,13 @@ void GlyphLayer::update(const SampleRecord& s, bool residual, bool joints) {
     const Eigen::Vector3d f = s.segment_rotation[seg] * s.joint_wrench[seg].head<3>();
     place(joints_[i], s.segment_position[seg], f, joint_scale_, 0.45, joints);
   }
+}
+
+double GlyphLayer::force_length() const {
+  vtkMatrix4x4* m = force_->GetUserMatrix();
+  if (!force_->GetVisibility() || !m) return 0.0;
+  // The unit arrow points along +x: the first column is the arrow, scaled to its length.
+  return std::hypot(m->GetElement(0, 0), m->GetElement(1, 0), m->GetElement(2, 0));
 }
 
 void GlyphLayer::hide() {

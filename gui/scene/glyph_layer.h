@@ -32,6 +32,9 @@ class GlyphLayer {
   const GlyphScale& force_scale() const { return force_scale_; }
   const GlyphScale& moment_scale() const { return moment_scale_; }
   const GlyphScale& joint_scale() const { return joint_scale_; }
+  /// The residual force arrow as drawn: its length in metres, read off its actor (0 when
+  /// hidden).
+  double force_length() const;
   /// Places the arrows for a sample; hidden ones are not drawn.
   void update(const SampleRecord& sample, bool residual, bool joints);
   void hide();

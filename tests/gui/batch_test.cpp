@@ -155,6 +155,34 @@ TEST(GuiBatch, WithoutADisplayItSaysToUseXvfbRunAndDoesNotAbort) {
   }
 }
 
+TEST(GuiBatch, UnderTheOffscreenPlatformItRunsWithAnXServerAndAdvisesWithoutOne) {
+  // QT_QPA_PLATFORM=offscreen draws Qt's windows without a screen; the 3D view still draws
+  // through X. With this test's X server the picture is taken.
+  saltus::test::TempDir dir;
+  const std::string motion = " '" + test::gui_test_motion_path() + "'";
+  const saltus::test::CliRun run = saltus::test::run_command(
+      std::string("env QT_QPA_PLATFORM=offscreen ") + SALTUS_GUI_PATH + motion +
+      " --time 0.5 --size 1280x800 --screenshot-view '" + (dir / "view.png") + "'");
+  EXPECT_EQ(run.status, 0) << run.output;
+  expect_sane_png((dir.path() / "view.png").string(), 600, 300);
+  // Without one (none set, or none answering): the advice and status 1, never an abort (134),
+  // and no picture; the window alike.
+  for (const std::string& env :
+       {std::string("env -u DISPLAY -u WAYLAND_DISPLAY QT_QPA_PLATFORM=offscreen "),
+        std::string("env -u WAYLAND_DISPLAY DISPLAY=:97 QT_QPA_PLATFORM=offscreen ")}) {
+    for (const std::string& batch :
+         {" --screenshot-view '" + (dir / "none.png") + "'", std::string()}) {
+      const saltus::test::CliRun refused =
+          saltus::test::run_command(env + SALTUS_GUI_PATH + motion + batch);
+      EXPECT_EQ(refused.status, 1) << env << batch << refused.output;
+      EXPECT_NE(refused.output.find("QT_QPA_PLATFORM=offscreen"), std::string::npos)
+          << refused.output;
+      EXPECT_NE(refused.output.find("xvfb-run -a saltus-gui"), std::string::npos) << refused.output;
+      EXPECT_FALSE(std::filesystem::exists(dir.path() / "none.png"));
+    }
+  }
+}
+
 TEST(GuiBatch, BadInputAndUsageExitWithStatus2) {
   saltus::test::TempDir dir;
   const saltus::test::CliRun missing =

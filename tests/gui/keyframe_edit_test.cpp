@@ -121,6 +121,21 @@ TEST_F(KeyframeEditTest, BadEditsShowTheMessageAndChangeNothing) {
   EXPECT_EQ(motion().keyframes.size(), n);
 }
 
+TEST_F(KeyframeEditTest, AnotherMotionOpensWithItsFirstKeyframeSelected) {
+  KeyframePanel* panel = window_->edits().keyframe_panel();
+  const int last = static_cast<int>(motion().keyframes.size()) - 1;
+  panel->select(last, -1);
+  ASSERT_EQ(panel->selected_keyframe(), last);
+  QString error;
+  ASSERT_TRUE(window_->open_motion(
+      QString(SALTUS_EXAMPLES_DIR) + "/motions/M2-tucked-back-somersault.motion.json", &error))
+      << error.toStdString();
+  // The view shows t = 0: the panel shows the keyframe at t = 0, not the old selection.
+  EXPECT_DOUBLE_EQ(window_->time(), 0.0);
+  EXPECT_EQ(panel->selected_keyframe(), 0);
+  EXPECT_EQ(panel->findChild<QListWidget*>()->currentRow(), 0);
+}
+
 TEST_F(KeyframeEditTest, EditedMotionSavesAndLoadsBack) {
   saltus::test::TempDir dir;
   const int hip = window_->document().file().model.joint_index("hip_r");

@@ -1,30 +1,43 @@
 // The real main window under Xvfb: open the test motion, draw it, optimise it in the background
 // with a few iterations (the window keeps processing events), compare the 3D view with the
-// committed baselines, cancel, bad input, saving and exporting.
+// committed baselines, cancel, bad input, saving and exporting; one arrow scale before and after
+// a run; a click on the timeline; display options that agree after a restart.
 
 #include <gtest/gtest.h>
 
+#include <QAction>
 #include <QApplication>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
+#include <QDockWidget>
 #include <QDropEvent>
 #include <QElapsedTimer>
 #include <QFileInfo>
+#include <QMenu>
+#include <QMenuBar>
 #include <QMimeData>
 #include <QSettings>
+#include <QSlider>
 #include <QStandardPaths>
+#include <QStyle>
+#include <QStyleOptionSlider>
 #include <QTabWidget>
 #include <QTest>
 #include <QTimer>
 #include <QUrl>
+#include <algorithm>
 #include <filesystem>
 
 #include "app/compare_controller.h"
 #include "app/edit_controller.h"
 #include "app/file_controller.h"
 #include "app/main_window.h"
+#include "app/playback_controller.h"
 #include "app/plots_panel.h"
 #include "app/run_controller.h"
+#include "app/scene_widget.h"
+#include "app/timeline_widget.h"
 #include "app/view_controller.h"
 #include "gui/support/image_checks.h"
 #include "gui_core/test_motion.h"
@@ -134,6 +147,137 @@ TEST(MainWindowSettings, RemembersPanelValuesAndRecentFiles) {
   EXPECT_EQ(QFileInfo(recent.front()).fileName(), QFileInfo(motion_path()).fileName());
   QSettings().clear();
   QStandardPaths::setTestModeEnabled(false);
+}
+
+/// The View menu's entry labelled `label` (without its '&').
+QAction* view_menu_action(MainWindow& window, const QString& label) {
+  for (QAction* menu : window.menuBar()->actions())
+    if (menu->text().remove('&') == "View")
+      for (QAction* a : menu->menu()->actions())
+        if (a->text().remove('&') == label) return a;
+  return nullptr;
+}
+
+/// The Display panel's check box labelled `label`.
+QCheckBox* display_box(MainWindow& window, const QString& label) {
+  auto* dock = window.findChild<QDockWidget*>("display_dock");
+  if (!dock) return nullptr;
+  for (QCheckBox* box : dock->findChildren<QCheckBox*>())
+    if (box->text() == label) return box;
+  return nullptr;
+}
+
+TEST(MainWindowSettings, TheViewMenuAndTheDisplayPanelAgreeAfterARestart) {
+  QStandardPaths::setTestModeEnabled(true);
+  QSettings().clear();
+  const QString ghosts = "Keyframe poses";
+  const QString joints = "Joint force arrows";
+  {
+    MainWindow first(true);
+    first.show();
+    ASSERT_TRUE(first.open_motion(motion_path()));
+    // One by the View menu, one by the Display panel; each control shows the other's change.
+    QAction* ghosts_action = view_menu_action(first, ghosts);
+    QCheckBox* joints_box = display_box(first, joints);
+    ASSERT_NE(ghosts_action, nullptr);
+    ASSERT_NE(joints_box, nullptr);
+    ASSERT_FALSE(ghosts_action->isChecked());
+    ASSERT_FALSE(joints_box->isChecked());
+    ghosts_action->trigger();
+    joints_box->click();
+    EXPECT_TRUE(display_box(first, ghosts)->isChecked());
+    EXPECT_TRUE(view_menu_action(first, joints)->isChecked());
+    first.close();  // remembers the settings
+  }
+  MainWindow second(true);
+  second.show();
+  ASSERT_TRUE(second.open_motion(motion_path()));
+  const SceneOptions drawn = second.view().scene()->scene().options();
+  EXPECT_TRUE(drawn.ghosts);
+  EXPECT_TRUE(drawn.joint_arrows);
+  // Every option: the menu, the panel and the picture say the same.
+  for (const SceneOptionInfo& info : scene_option_table()) {
+    const QString label = QString(info.label).remove('&');
+    QAction* action = view_menu_action(second, label);
+    QCheckBox* box = display_box(second, label);
+    ASSERT_NE(action, nullptr) << info.label;
+    ASSERT_NE(box, nullptr) << info.label;
+    EXPECT_EQ(action->isChecked(), drawn.*info.field) << info.label;
+    EXPECT_EQ(box->isChecked(), drawn.*info.field) << info.label;
+  }
+  second.close();
+  QSettings().clear();
+  QStandardPaths::setTestModeEnabled(false);
+}
+
+TEST_F(MainWindowTest, AClickOnTheTimelineJumpsToTheTimeUnderTheMouse) {
+  QSlider* slider = window_->playback().timeline()->findChild<QSlider*>();
+  ASSERT_NE(slider, nullptr);
+  const double duration = window_->document().duration();
+  const double dt = duration / (window_->document().frame_count(window_->stage()) - 1);
+  window_->seek(0.0);
+  // The handle's centre runs from the groove's left plus half a handle to its right minus half.
+  QStyleOptionSlider option;
+  option.initFrom(slider);
+  option.orientation = Qt::Horizontal;
+  option.minimum = slider->minimum();
+  option.maximum = slider->maximum();
+  const QRect groove =
+      slider->style()->subControlRect(QStyle::CC_Slider, &option, QStyle::SC_SliderGroove, slider);
+  const QRect handle =
+      slider->style()->subControlRect(QStyle::CC_Slider, &option, QStyle::SC_SliderHandle, slider);
+  for (double fraction : {0.8, 0.3, 0.55}) {
+    const int x = groove.left() + handle.width() / 2 +
+                  static_cast<int>(std::lround(fraction * (groove.width() - handle.width())));
+    QTest::mouseClick(slider, Qt::LeftButton, Qt::NoModifier, QPoint(x, slider->height() / 2));
+    QApplication::processEvents();
+    // Within two frames of the time under the mouse (a pixel is about a frame here).
+    EXPECT_NEAR(window_->time(), fraction * duration, 2.0 * dt) << fraction;
+  }
+}
+
+TEST_F(MainWindowTest, ResidualArrowsKeepOneScaleBeforeAndAfterOptimisation) {
+  OptimizeSettings s;
+  s.set("max_iterations", 12);
+  s.set("samples", 31);
+  QString error;
+  ASSERT_TRUE(window_->runs().start(s, &error)) << error.toStdString();
+  ASSERT_TRUE(window_->runs().wait(300000));
+  ASSERT_EQ(window_->workspace().runs().size(), 1);
+  window_->runs().show_run(0);
+  ASSERT_TRUE(window_->document().has_optimization());
+  const Document& d = window_->document();
+  BodyScene& scene = window_->view().scene()->scene();
+  const double t = 0.5 * d.duration();
+
+  window_->set_stage(Stage::kBefore);
+  window_->seek(t);
+  const double before_length = scene.residual_force_arrow_length();
+  const double before_scale = scene.residual_force_full_scale();
+  const double before_force = d.sample_at(Stage::kBefore, t).residual.head<3>().norm();
+  const QImage before_view = window_->grab_view();
+  window_->set_stage(Stage::kAfter);
+  window_->seek(t);
+  const double after_length = scene.residual_force_arrow_length();
+  const double after_force = d.sample_at(Stage::kAfter, t).residual.head<3>().norm();
+  const QImage after_view = window_->grab_view();
+  QDir().mkpath(SALTUS_GUI_CANDIDATE_DIR);
+  before_view.save(QString(SALTUS_GUI_CANDIDATE_DIR) + "/arrows_before.png");
+  after_view.save(QString(SALTUS_GUI_CANDIDATE_DIR) + "/arrows_after.png");
+
+  // One scale for the run: the same full scale, lengths in proportion to the forces (the
+  // forces from the document's own samples, the lengths read off the drawn arrows).
+  EXPECT_DOUBLE_EQ(scene.residual_force_full_scale(), before_scale);
+  ASSERT_GT(before_length, 0.0);
+  ASSERT_LT(before_length, 1.2) << "capped: the proportion below would not hold";
+  EXPECT_NEAR(before_length / 0.6, before_force / before_scale, 1e-9);
+  EXPECT_NEAR(after_length / 0.6, after_force / before_scale, 1e-9);
+  // What remains after optimisation looks small beside what was there before.
+  ASSERT_LT(after_force, 0.1 * before_force) << "the run did not reduce the residual enough";
+  EXPECT_LT(after_length, 0.1 * before_length);
+  std::string legend = scene.legend();
+  std::replace(legend.begin(), legend.end(), '\n', ' ');  // wrapped to the view's width
+  EXPECT_NE(legend.find("one scale before and after optimisation"), std::string::npos) << legend;
 }
 
 TEST_F(MainWindowTest, DrawsTheBodyWithLeftAndRightColours) {

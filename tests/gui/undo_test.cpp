@@ -1,5 +1,6 @@
 // Work is never lost, in the real window: keyframe, mass and option edits undo and redo (Edit
-// menu, Ctrl+Z, Ctrl+Shift+Z); a slider drag is one step; undoing an edit brings back the
+// menu, Ctrl+Z, Ctrl+Shift+Z, also with the focus in the number field just typed into); a
+// slider drag is one step; undoing an edit brings back the
 // optimisation run it made stale; opening another motion with unsaved work asks first, and
 // messages of the previous motion are gone once another one opens.
 
@@ -7,6 +8,9 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QLocale>
 #include <QMenu>
 #include <QMenuBar>
 #include <QSlider>
@@ -14,6 +18,7 @@
 #include <QTableWidget>
 #include <QTest>
 #include <QUndoStack>
+#include <cmath>
 
 #include "app/edit_controller.h"
 #include "app/file_controller.h"
@@ -128,6 +133,67 @@ TEST_F(UndoTest, OptionEditsUndoToo) {
   EXPECT_EQ(samples->value(), before);
   window_->edits().redo();
   EXPECT_EQ(samples->value(), before + 2);
+}
+
+/// Focuses `field`, selects its text and types `text` (then Enter when `enter`), as a user does.
+void type_into(QAbstractSpinBox* field, const QString& text, bool enter) {
+  field->setFocus();
+  QApplication::processEvents();
+  ASSERT_TRUE(field->hasFocus());
+  field->selectAll();
+  QTest::keyClicks(field, text);
+  if (enter) QTest::keyClick(field, Qt::Key_Return);
+  QApplication::processEvents();
+}
+
+TEST_F(UndoTest, CtrlZInANumberFieldUndoesTheValueEnteredThere) {
+  QApplication::setActiveWindow(window_.get());
+  auto* samples = window_->runs().panel()->findChild<QSpinBox*>("samples");
+  ASSERT_NE(samples, nullptr);
+  const int before = samples->value();
+  const int typed = before == 77 ? 79 : 77;
+  type_into(samples, QString::number(typed), true);
+  ASSERT_EQ(samples->value(), typed);
+  ASSERT_EQ(stack()->count(), 1);
+  // The focus is still in the box: the keys undo and redo the edit, as the Edit menu does.
+  ASSERT_TRUE(samples->hasFocus());
+  QTest::keyClick(samples, Qt::Key_Z, Qt::ControlModifier);
+  EXPECT_EQ(samples->value(), before);
+  EXPECT_EQ(window_->runs().settings().integer("samples"), before);
+  EXPECT_EQ(stack()->index(), 0);
+  QTest::keyClick(samples, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+  EXPECT_EQ(samples->value(), typed);
+  EXPECT_EQ(stack()->index(), 1);
+
+  // A keyframe's time, typed and entered: undone from its own field too.
+  window_->findChild<QDockWidget*>("keyframe_dock")->raise();
+  KeyframePanel* panel = window_->edits().keyframe_panel();
+  panel->select(2, -1);
+  QDoubleSpinBox* time = nullptr;
+  for (QDoubleSpinBox* box : panel->findChildren<QDoubleSpinBox*>())
+    if (box->decimals() == 3) time = box;
+  ASSERT_NE(time, nullptr);
+  const double t0 = motion().keyframes[2].time;
+  const double t1 = std::round((t0 + 0.02) * 1000.0) / 1000.0;
+  type_into(time, QLocale().toString(t1, 'f', 3), true);
+  ASSERT_NEAR(motion().keyframes[2].time, t1, 1e-12);
+  ASSERT_TRUE(time->hasFocus());
+  QTest::keyClick(time, Qt::Key_Z, Qt::ControlModifier);
+  EXPECT_DOUBLE_EQ(motion().keyframes[2].time, t0);
+  QTest::keyClick(time, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+  EXPECT_NEAR(motion().keyframes[2].time, t1, 1e-12);
+}
+
+TEST_F(UndoTest, CtrlZWhileTypingUndoesTheTypingOnly) {
+  QApplication::setActiveWindow(window_.get());
+  auto* samples = window_->runs().panel()->findChild<QSpinBox*>("samples");
+  ASSERT_NE(samples, nullptr);
+  const QString shown = samples->text();
+  type_into(samples, "9", false);  // not entered yet
+  ASSERT_NE(samples->text(), shown);
+  QTest::keyClick(samples, Qt::Key_Z, Qt::ControlModifier);
+  EXPECT_EQ(samples->text(), shown);
+  EXPECT_EQ(stack()->count(), 0) << "nothing was entered, so nothing is on the undo stack";
 }
 
 TEST_F(UndoTest, UndoingAnEditBringsBackTheRunItMadeStale) {

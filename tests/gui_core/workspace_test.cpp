@@ -67,6 +67,17 @@ TEST_F(WorkspaceTest, ASolvedRunIsShownAndACancelledOneDoesNotReplaceIt) {
   EXPECT_EQ(ws_.unsaved_summary(), "2 optimisation runs were not saved");
 }
 
+TEST_F(WorkspaceTest, RunNumbersStartAtOneForEachMotionOpened) {
+  const double before = ws_.document().evaluation(Stage::kBefore).metrics.avg_root_force;
+  ws_.add_run(run("solved", 0.2 * before));
+  ws_.add_run(run("solved", 0.3 * before));
+  EXPECT_EQ(ws_.runs().at(1).number, 2);
+  ws_.open(std::string(SALTUS_EXAMPLES_DIR) + "/motions/M2-tucked-back-somersault.motion.json", "",
+           21);
+  ws_.add_run(run("solved", 0.2 * before));
+  EXPECT_EQ(ws_.runs().at(0).number, 1) << "numbers carried over from the other motion";
+}
+
 TEST_F(WorkspaceTest, AnEditDropsTheRunsAndASnapshotBringsThemBack) {
   const double before = ws_.document().evaluation(Stage::kBefore).metrics.avg_root_force;
   ws_.add_run(run("solved", 0.1 * before));
