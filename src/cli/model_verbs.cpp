@@ -76,6 +76,25 @@ int run_scale(const ModelArgs& args) {
   return 0;
 }
 
+int run_yeadon(const ModelArgs& args) {
+  const saltus::YeadonModel made =
+      saltus::yeadon_athlete_model(args.model, args.densities, args.mass, args.name);
+  saltus::write_athlete_model(args.out_path, made.model);
+  if (!args.quiet) {
+    print_written("yeadon", made.model, args.out_path);
+    std::printf("  %d solids, %.4f m³, %s densities", made.solids, made.volume,
+                args.densities.c_str());
+    if (made.density_scale != 1.0)
+      std::printf(" scaled by %.4f to the given mass", made.density_scale);
+    std::printf("\n");
+  }
+  std::fflush(stdout);
+  for (const std::string& warning : made.warnings)
+    std::fprintf(stderr, "saltus model yeadon: warning: %s: %s\n", args.model.c_str(),
+                 warning.c_str());
+  return 0;
+}
+
 void add_size(CLI::App* cmd, ModelArgs& a) {
   cmd->add_option("--height", a.height, "standing height (stature), m")->required();
   cmd->add_option("--mass", a.mass, "body mass, kg")->required();
@@ -95,7 +114,7 @@ void add_model_verbs(CLI::App& app, ModelVerbs& verbs) {
   CLI::App* model = app.add_subcommand(
       "model",
       "Body models of particular athletes: `model new` (from height, mass and sex), `model "
-      "info`, `model scale`");
+      "yeadon` (from 95 measurements), `model info`, `model scale`");
   model->require_subcommand(1);
 
   ModelArgs& n = verbs.new_args;
@@ -129,12 +148,29 @@ void add_model_verbs(CLI::App& app, ModelVerbs& verbs) {
   add_size(scale, s);
   add_out(scale, s);
   verbs.scale_command = scale;
+
+  ModelArgs& y = verbs.yeadon_args;
+  CLI::App* yeadon = model->add_subcommand(
+      "yeadon",
+      "Yeadon's 1990 geometric model of a person from 95 measurements (the `yeadon` package's "
+      "text format): 40 stadium solids and a semi-ellipsoid with segment densities, composed "
+      "onto the 13 segments");
+  yeadon->add_option("MEASUREMENTS", y.model, "measurement file (Key=value or Key: value lines)")
+      ->required();
+  yeadon->add_option("--densities", y.densities, "segment densities: dempster, chandler, clauser")
+      ->check(CLI::IsMember({"dempster", "chandler", "clauser"}));
+  yeadon->add_option("--mass", y.mass,
+                     "body mass, kg: scales every density to it (default: the file's totalmass, "
+                     "else the densities' own mass)");
+  add_out(yeadon, y);
+  verbs.yeadon_command = yeadon;
 }
 
 std::optional<int> run_model_verbs(const ModelVerbs& verbs) {
   if (verbs.new_command && verbs.new_command->parsed()) return run_new(verbs.new_args);
   if (verbs.info_command && verbs.info_command->parsed()) return run_info(verbs.info_args);
   if (verbs.scale_command && verbs.scale_command->parsed()) return run_scale(verbs.scale_args);
+  if (verbs.yeadon_command && verbs.yeadon_command->parsed()) return run_yeadon(verbs.yeadon_args);
   return std::nullopt;
 }
 

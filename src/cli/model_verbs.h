@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// `saltus model new|info|scale`: body models of particular athletes. Options and printing
+/// `saltus model new|info|scale|yeadon`: body models of particular athletes. Options and printing
 /// only; the models are built, checked and written by the library (use_cases/athlete_models.h).
 
 #include <CLI/CLI.hpp>
@@ -14,6 +14,7 @@ struct ModelArgs {
   double height = 0.0;
   double mass = 0.0;
   std::string sex;
+  std::string densities = "dempster";  ///< yeadon
   std::string name;
   std::string out_path;
   bool json = false;
@@ -24,7 +25,9 @@ struct ModelVerbs {
   ModelArgs new_args;
   ModelArgs info_args;
   ModelArgs scale_args;
+  ModelArgs yeadon_args;
   CLI::App* new_command = nullptr;
+  CLI::App* yeadon_command = nullptr;
   CLI::App* info_command = nullptr;
   CLI::App* scale_command = nullptr;
 };

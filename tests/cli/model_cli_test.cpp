@@ -70,5 +70,31 @@ TEST(CliModel, BadInputExits2NamingTheFlagAndWritesNothing) {
   EXPECT_EQ(test::names_in(dir.path()).size(), 1u);
 }
 
+TEST(CliModel, YeadonMeasurementsMakeAModelOrAreRefusedByKey) {
+  test::TempDir dir;
+  const std::string athletes = std::string(SALTUS_EXAMPLES_DIR) + "/athletes/";
+  const std::string male = dir / "male1.model.json";
+  const auto made = test::run_cli("model yeadon " + athletes + "yeadon-male1.txt --out " + male);
+  ASSERT_EQ(made.status, 0) << made.output;
+  EXPECT_NE(made.output.find("40 solids"), std::string::npos) << made.output;
+  // male1's left and right wrist-to-thumb lengths differ: a warning naming both keys.
+  EXPECT_NE(made.output.find("warning"), std::string::npos) << made.output;
+  EXPECT_NE(made.output.find("Lb5L"), std::string::npos) << made.output;
+  const auto sim = test::run_cli("simulate " + test::m1_path() + " --model " + male + " --out " +
+                                 (dir / "sim") + " -q");
+  EXPECT_EQ(sim.status, 0) << sim.output;
+
+  const std::string female = dir / "female1.model.json";
+  const auto refused =
+      test::run_cli("model yeadon " + athletes + "yeadon-female1.txt --out " + female);
+  EXPECT_EQ(refused.status, 2) << refused.output;
+  EXPECT_NE(refused.output.find("yeadon-female1.txt: Lb4p"), std::string::npos) << refused.output;
+  EXPECT_FALSE(std::filesystem::exists(female));
+  const auto densities = test::run_cli("model yeadon " + athletes +
+                                       "yeadon-male1.txt --densities average --out " + female);
+  EXPECT_EQ(densities.status, 2) << densities.output;
+  EXPECT_FALSE(std::filesystem::exists(female));
+}
+
 }  // namespace
 }  // namespace saltus

@@ -10,6 +10,7 @@
 #include "saltus/base/text_format.h"
 #include "saltus/formats/model_file.h"
 #include "saltus/formats/plausible_ranges.h"
+#include "saltus/formats/yeadon_measurements_file.h"
 
 namespace saltus {
 
@@ -85,6 +86,38 @@ BodyModel scaled_athlete_model(const BodyModel& model, double height_m, double m
   }
   return checked(
       scale_body_model(model, height_m / height, mass_kg / model.total_mass(), scaled_name));
+}
+
+YeadonModel yeadon_athlete_model(const std::string& path, const std::string& densities,
+                                 double mass_kg, const std::string& name) {
+  YeadonInput input;
+  if (densities == "dempster")
+    input.densities = YeadonDensities::kDempster;
+  else if (densities == "chandler")
+    input.densities = YeadonDensities::kChandler;
+  else if (densities == "clauser")
+    input.densities = YeadonDensities::kClauser;
+  else
+    throw InputError("--densities", "",
+                     "expected dempster, chandler or clauser, found \"" + densities + "\"");
+  if (mass_kg != 0.0 && !(mass_kg >= plausible::kMinBodyMass && mass_kg <= plausible::kMaxBodyMass))
+    throw InputError("--mass", "",
+                     "a mass of " + message_number(mass_kg) + " kg is outside the human range [" +
+                         message_number(plausible::kMinBodyMass) + ", " +
+                         message_number(plausible::kMaxBodyMass) + "] kg");
+  const YeadonMeasurementsFile file = load_yeadon_measurements(path);
+  input.file = path;
+  input.measured = file.measured;
+  input.total_mass = mass_kg > 0.0 ? mass_kg : file.total_mass;
+  input.name = name.empty() ? std::filesystem::path(path).stem().string() : name;
+  YeadonModel out = yeadon_model(input);
+  const StandingBody standing = standing_body(out.model);
+  check_person_size(standing.height(), out.model.total_mass(),
+                    path + " (the standing height it gives)",
+                    path + (input.total_mass > 0.0 ? " (--mass or totalmass)"
+                                                   : " (the mass its densities give)"));
+  out.model = checked(out.model);
+  return out;
 }
 
 void write_athlete_model(const std::string& path, const BodyModel& model) {

@@ -9,6 +9,7 @@
 #include "saltus/body/athlete_model.h"
 #include "saltus/body/body_model.h"
 #include "saltus/body/mass_properties.h"
+#include "saltus/body/yeadon_model.h"
 
 namespace saltus {
 
@@ -32,6 +33,14 @@ BodyModel load_model_argument(const std::string& model);
 /// "<model>-<H>m-<M>kg" when empty.
 BodyModel scaled_athlete_model(const BodyModel& model, double height_m, double mass_kg,
                                const std::string& name);
+
+/// Yeadon's model of the person measured in `path` (formats/yeadon_measurements_file.h):
+/// `densities` "dempster", "chandler" or "clauser" (else InputError naming --densities);
+/// `mass_kg` > 0 scales every density so the body weighs it (else the file's `totalmass`, if
+/// any); named `name`, or the file's name without its extension. The model must stand and weigh
+/// like a person (check_person_size, naming the file) and pass the model reader.
+YeadonModel yeadon_athlete_model(const std::string& path, const std::string& densities,
+                                 double mass_kg, const std::string& name);
 
 /// Writes a model file (save_body_model_file): atomic, never over a file Saltus did not write.
 void write_athlete_model(const std::string& path, const BodyModel& model);

@@ -73,5 +73,28 @@ TEST(AthleteModels, ABundledModelScalesToTheGivenHeightAndMass) {
   EXPECT_EQ(ath_error_of([&] { scaled_athlete_model(bundled, 1.85, 0.5, ""); }).file(), "--mass");
 }
 
+TEST(AthleteModels, YeadonModelsOfTheRealMeasurementFiles) {
+  const std::string dir = std::string(SALTUS_EXAMPLES_DIR) + "/athletes/";
+  const YeadonModel male = yeadon_athlete_model(dir + "yeadon-male1.txt", "dempster", 0.0, "");
+  EXPECT_EQ(male.model.name, "yeadon-male1");
+  EXPECT_EQ(male.model.size(), 13);
+  const YeadonModel heavier = yeadon_athlete_model(dir + "yeadon-male1.txt", "clauser", 80.0, "m");
+  EXPECT_NEAR(heavier.model.total_mass(), 80.0, 1e-9);
+  // female1's right wrist is 14.1 cm wide for a 14.6 cm perimeter (5.5 cm on the left).
+  const InputError female =
+      ath_error_of([&] { yeadon_athlete_model(dir + "yeadon-female1.txt", "dempster", 0.0, ""); });
+  EXPECT_NE(female.file().find("yeadon-female1.txt"), std::string::npos);
+  EXPECT_EQ(female.json_path(), "Lb4p");
+  EXPECT_NE(female.problem().find("La4w"), std::string::npos) << female.what();
+  EXPECT_EQ(ath_error_of([&] {
+              yeadon_athlete_model(dir + "yeadon-male1.txt", "average", 0.0, "");
+            }).file(),
+            "--densities");
+  EXPECT_EQ(ath_error_of([&] {
+              yeadon_athlete_model(dir + "yeadon-male1.txt", "dempster", 3000.0, "");
+            }).file(),
+            "--mass");
+}
+
 }  // namespace
 }  // namespace saltus
