@@ -15,6 +15,7 @@
 
 #include "capture_verbs.h"
 #include "flags/option_flags.h"
+#include "model_verbs.h"
 #include "saltus/base/constants.h"
 #include "saltus/base/input_error.h"
 #include "saltus/evaluation/evaluate.h"
@@ -350,6 +351,9 @@ int main(int argc, char** argv) {
   saltus_cli::CaptureVerbs capture_verbs;
   saltus_cli::add_capture_verbs(app, capture_verbs);
 
+  saltus_cli::ModelVerbs model_verbs;
+  saltus_cli::add_model_verbs(app, model_verbs);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -370,6 +374,7 @@ int main(int argc, char** argv) {
     if (twist->parsed()) return run_analyse_twist(twist_args);
     if (const auto status = study_verbs.run()) return *status;
     if (auto status = saltus_cli::run_capture_verbs(capture_verbs)) return *status;
+    if (auto status = saltus_cli::run_model_verbs(model_verbs)) return *status;
   } catch (const saltus::InputError& e) {
     std::fprintf(stderr, "saltus: error: %s\n", e.what());
     return kExitBadInput;

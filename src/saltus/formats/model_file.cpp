@@ -3,12 +3,16 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <cmath>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <unordered_map>
+
+#include <unistd.h>
 
 #include "saltus/base/input_error.h"
 #include "saltus/base/json_reader.h"
 #include "saltus/base/text_format.h"
+#include "saltus/formats/output_folder.h"
 #include "saltus/formats/plausible_ranges.h"
 
 namespace saltus {
@@ -316,6 +320,92 @@ nlohmann::json body_model_to_json(const BodyModel& model) {
   return {{"format", kModelFormat},
           {"name", model.name},
           {"source", model.source},
+          {"segments", std::move(segments)}};
+}
+
+namespace {
+
+/// Why an existing `path` may not be replaced by a model file: "" when it is a Saltus model.
+std::string foreign_model_file(const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status status = fs::symlink_status(path, ec);
+  if (fs::is_symlink(status)) return "is a symbolic link";
+  if (fs::is_directory(status)) return "is a folder";
+  if (!fs::is_regular_file(status)) return "is not a regular file";
+  try {
+    const nlohmann::json document = read_json_file(path.string());
+    if (document.is_object() && document.contains("format") && document["format"] == kModelFormat)
+      return "";
+  } catch (const InputError&) {
+  }
+  return "exists and is not a Saltus body model (\"format\": \"" + std::string(kModelFormat) +
+         "\")";
+}
+
+}  // namespace
+
+void save_body_model_file(const std::string& path, const BodyModel& model) {
+  namespace fs = std::filesystem;
+  if (path.empty()) throw InputError("--out", "", "the output file path is empty");
+  const fs::path target = fs::absolute(path).lexically_normal();
+  if (target.filename().empty()) throw InputError(path, "", "names a folder, not a file");
+  std::error_code ec;
+  if (fs::exists(fs::symlink_status(target, ec))) {
+    const std::string reason = foreign_model_file(target);
+    if (!reason.empty())
+      throw InputError(path, "",
+                       reason +
+                           "; Saltus replaces only model files it wrote: give a new file name "
+                           "or move this one away");
+  }
+  const std::string text = body_model_to_json(model).dump(2) + "\n";
+  fs::create_directories(target.parent_path(), ec);
+  if (ec)
+    throw OutputError(
+        "cannot create the folder " + target.parent_path().string() + ": " + ec.message(), false);
+  const fs::path temporary = target.parent_path() / ("." + target.filename().string() + ".tmp-" +
+                                                     std::to_string(::getpid()));
+  try {
+    write_text(temporary.string(), text);
+  } catch (const OutputError& e) {
+    fs::remove(temporary, ec);
+    throw OutputError(path + ": " + e.what(), false);
+  }
+  fs::rename(temporary, target, ec);
+  if (ec) {
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    throw OutputError(
+        "cannot move " + path + " into place: " + ec.message() + "; nothing was changed", false);
+  }
+}
+
+nlohmann::json model_summary_to_json(const ModelSummary& summary) {
+  auto vector3 = [](const Eigen::Vector3d& v) {
+    return nlohmann::json::array({v.x(), v.y(), v.z()});
+  };
+  nlohmann::json segments = nlohmann::json::array();
+  for (const SegmentSummary& s : summary.segments)
+    segments.push_back({{"name", s.name},
+                        {"label", s.label},
+                        {"mass_kg", s.mass},
+                        {"mass_percent", s.mass_percent},
+                        {"length_m", s.length},
+                        {"com_m", vector3(s.com)},
+                        {"principal_moments_kgm2", vector3(s.principal_moments)}});
+  const StandingBody& b = summary.standing;
+  const Eigen::Matrix3d& I = b.body.inertia;
+  return {{"format", "saltus-model-info/1"},
+          {"name", summary.name},
+          {"source", summary.source},
+          {"total_mass_kg", summary.total_mass},
+          {"standing_height_m", b.height()},
+          {"com_m", vector3(b.body.com)},
+          {"com_height_m", b.com_height()},
+          {"com_height_percent", 100.0 * b.com_height() / b.height()},
+          {"inertia_kgm2", {I(0, 0), I(1, 1), I(2, 2), I(0, 1), I(0, 2), I(1, 2)}},
+          {"principal_moments_kgm2", vector3(b.principal_moments)},
           {"segments", std::move(segments)}};
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "saltus/body/body_model.h"
+#include "saltus/body/mass_properties.h"
 
 namespace saltus {
 
@@ -28,5 +29,19 @@ BodyModel load_body_model(const std::string& path);
 
 /// Serialises to "saltus-model/1" (inertia written as 6 values). parse(to_json(m)) == m.
 nlohmann::json body_model_to_json(const BodyModel& model);
+
+/// Writes `model` to the file `path` (missing parent folders are created): first to a hidden
+/// temporary beside it, then renamed into place, so `path` is at every instant absent, the old
+/// file or the new complete one. An existing `path` is replaced only when it is a Saltus body
+/// model (a JSON file whose "format" is "saltus-model/1"); anything else (another file, a folder,
+/// a symbolic link) is refused with InputError naming `path`. OutputError when the system
+/// refuses (no permission, disk full); nothing is changed then.
+void save_body_model_file(const std::string& path, const BodyModel& model);
+
+/// "saltus-model-info/1": what `saltus model info --json` prints (docs/formats.md, "Model
+/// summary"): the model's name and source, total mass, standing height, whole-body CoM and
+/// inertia about it in the standing pose, and per segment its name for people, mass (kg and %),
+/// length, CoM and principal moments.
+nlohmann::json model_summary_to_json(const ModelSummary& summary);
 
 }  // namespace saltus

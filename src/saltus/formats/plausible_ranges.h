@@ -20,6 +20,19 @@ inline constexpr double kMaxRadiusOfGyration = 10.0;
 /// for a flat body) that rounding of printed numbers may need.
 inline constexpr double kInertiaTriangleSlack = 1e-6;
 
+// A person to model (`saltus model new`, `model scale`; docs/cli.md, "model").
+/// m: standing height. The shortest adults are about 0.6 m, the tallest 2.7 m; a child gymnast
+/// is over 1 m.
+inline constexpr double kMinStature = 0.5;
+inline constexpr double kMaxStature = 2.8;
+/// kg: body mass. A 1 m child weighs about 15 kg; 300 kg is beyond any athlete.
+inline constexpr double kMinBodyMass = 10.0;
+inline constexpr double kMaxBodyMass = 300.0;
+/// kg/m²: body mass index M/H². People range from about 12 (severe wasting) to 60; a 1.45 m,
+/// 38 kg junior is 18, a 1.85 m, 85 kg senior 25. Outside [8, 80] a number was mistyped.
+inline constexpr double kMinBodyMassIndex = 8.0;
+inline constexpr double kMaxBodyMassIndex = 80.0;
+
 // Motion (docs/formats.md, "Motion").
 /// s: the flight time T. Trampoline and diving flights last 1-3 s, a 27 m cliff dive 3 s.
 inline constexpr double kMaxFlightTime = 60.0;

@@ -23,6 +23,8 @@
 #include "saltus/base/input_error.h"
 #include "saltus/base/json_reader.h"
 #include "saltus/body/body_model.h"
+#include "saltus/body/mass_properties.h"
+#include "support/temp_path.h"
 
 namespace saltus {
 namespace {
@@ -526,6 +528,66 @@ TEST(BodyModelFile, MissingFile) {
     EXPECT_EQ(what.rfind(path + ": ", 0), 0u) << what;
     EXPECT_NE(what.find("cannot open"), std::string::npos) << what;
   }
+}
+
+// ----------------------------------------------------------------------------------------------
+// Writing a model file, and the summary `saltus model info --json` prints.
+
+TEST(BodyModelFile, SavesAtomicallyAndReplacesOnlyItsOwnModelFiles) {
+  const std::filesystem::path dir = test::temp_path("model-file-save");
+  std::filesystem::create_directories(dir);
+  const BodyModel model = load_body_model(kModelPath);
+  const std::string path = (dir / "sub" / "athlete.model.json").string();
+  save_body_model_file(path, model);  // creates the missing folder
+  const BodyModel read = load_body_model(path);
+  EXPECT_EQ(read.name, model.name);
+  EXPECT_EQ(read.segments.size(), model.segments.size());
+  // A Saltus model file is replaced; nothing else is left beside it.
+  BodyModel renamed = model;
+  renamed.name = "second";
+  save_body_model_file(path, renamed);
+  EXPECT_EQ(load_body_model(path).name, "second");
+  std::size_t entries = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "sub")) {
+    (void)entry;
+    ++entries;
+  }
+  EXPECT_EQ(entries, 1u);
+
+  // Someone else's file, a JSON of another format, a folder: refused, left as they were.
+  const std::string notes = (dir / "notes.txt").string();
+  std::ofstream(notes) << "my notes";
+  const std::string other = (dir / "other.json").string();
+  std::ofstream(other) << R"({"format": "saltus-motion/1"})";
+  for (const std::string& target : {notes, other, (dir / "sub").string()}) {
+    try {
+      save_body_model_file(target, model);
+      FAIL() << target;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.file(), target);
+      EXPECT_NE(std::string(e.what()).find("Saltus"), std::string::npos) << e.what();
+    }
+  }
+  std::ifstream in(notes);
+  std::string text;
+  std::getline(in, text);
+  EXPECT_EQ(text, "my notes");
+}
+
+TEST(BodyModelFile, SummaryJsonCarriesTheStandingWholeBody) {
+  const BodyModel model = load_body_model(kModelPath);
+  const ModelSummary summary = summarize_model(model);
+  const nlohmann::json j = model_summary_to_json(summary);
+  EXPECT_EQ(j["format"], "saltus-model-info/1");
+  EXPECT_EQ(j["name"], "zatsiorsky-66kg");
+  EXPECT_NEAR(j["total_mass_kg"].get<double>(), 65.5, 1e-12);
+  EXPECT_NEAR(j["standing_height_m"].get<double>(), 1.700, 5e-4);
+  EXPECT_EQ(j["segments"].size(), 13u);
+  EXPECT_EQ(j["segments"][2]["label"], "upper trunk and head");
+  EXPECT_EQ(j["inertia_kgm2"].size(), 6u);
+  EXPECT_NEAR(j["com_height_percent"].get<double>(),
+              100.0 * j["com_height_m"].get<double>() / j["standing_height_m"].get<double>(),
+              1e-12);
 }
 
 }  // namespace

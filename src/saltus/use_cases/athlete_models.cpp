@@ -1,0 +1,127 @@
+#include "saltus/use_cases/athlete_models.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "saltus/base/input_error.h"
+#include "saltus/base/resources.h"
+#include "saltus/base/text_format.h"
+#include "saltus/formats/model_file.h"
+#include "saltus/formats/plausible_ranges.h"
+#include "saltus/formats/yeadon_measurements_file.h"
+
+namespace saltus {
+
+namespace {
+
+/// The model through the reader's checks (the same as every verb's), so a model that a verb
+/// would refuse is never written.
+BodyModel checked(const BodyModel& model) {
+  return parse_body_model(body_model_to_json(model), model.name);
+}
+
+}  // namespace
+
+Sex parse_sex(const std::string& text, const std::string& field) {
+  if (text == "female") return Sex::kFemale;
+  if (text == "male") return Sex::kMale;
+  throw InputError(field, "", "expected \"female\" or \"male\", found \"" + text + "\"");
+}
+
+void check_person_size(double height_m, double mass_kg, const std::string& height_field,
+                       const std::string& mass_field) {
+  if (!(height_m >= plausible::kMinStature && height_m <= plausible::kMaxStature))
+    throw InputError(height_field, "",
+                     "a height of " + message_number(height_m) + " m is outside the human range [" +
+                         message_number(plausible::kMinStature) + ", " +
+                         message_number(plausible::kMaxStature) + "] m (the height is in metres)");
+  if (!(mass_kg >= plausible::kMinBodyMass && mass_kg <= plausible::kMaxBodyMass))
+    throw InputError(mass_field, "",
+                     "a mass of " + message_number(mass_kg) + " kg is outside the human range [" +
+                         message_number(plausible::kMinBodyMass) + ", " +
+                         message_number(plausible::kMaxBodyMass) + "] kg");
+  const double bmi = mass_kg / (height_m * height_m);
+  if (!(bmi >= plausible::kMinBodyMassIndex && bmi <= plausible::kMaxBodyMassIndex))
+    throw InputError(mass_field, "",
+                     message_number(mass_kg) + " kg at " + message_number(height_m) +
+                         " m is a body mass index of " + message_number(bmi) +
+                         " kg/m², outside the human range [" +
+                         message_number(plausible::kMinBodyMassIndex) + ", " +
+                         message_number(plausible::kMaxBodyMassIndex) +
+                         "]: is the height or the mass mistyped?");
+}
+
+BodyModel new_athlete_model(const AthleteSize& size) {
+  check_person_size(size.height_m, size.mass_kg, "--height", "--mass");
+  return checked(de_leva_model(size));
+}
+
+BodyModel load_model_argument(const std::string& model) {
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(model, ec)) return load_body_model(model);
+  const std::string bundled =
+      model.find('/') == std::string::npos ? resolve_model_path(model, "") : "";
+  if (bundled.empty())
+    throw InputError(model, "",
+                     "no such model file, and no bundled model of that name under "
+                     "resources/models/");
+  return load_body_model(bundled);
+}
+
+BodyModel scaled_athlete_model(const BodyModel& model, double height_m, double mass_kg,
+                               const std::string& name) {
+  check_person_size(height_m, mass_kg, "--height", "--mass");
+  const double height = standing_body(model).height();
+  if (!(height > 0.0))
+    throw InputError(model.name, "",
+                     "the model has no standing height (no drawing shapes or joint offsets "
+                     "along its segments), so it cannot be scaled to a height");
+  std::string scaled_name = name;
+  if (scaled_name.empty()) {
+    char text[64];
+    std::snprintf(text, sizeof text, "-%.2fm-%.1fkg", height_m, mass_kg);
+    scaled_name = model.name + text;
+  }
+  return checked(
+      scale_body_model(model, height_m / height, mass_kg / model.total_mass(), scaled_name));
+}
+
+YeadonModel yeadon_athlete_model(const std::string& path, const std::string& densities,
+                                 double mass_kg, const std::string& name) {
+  YeadonInput input;
+  if (densities == "dempster")
+    input.densities = YeadonDensities::kDempster;
+  else if (densities == "chandler")
+    input.densities = YeadonDensities::kChandler;
+  else if (densities == "clauser")
+    input.densities = YeadonDensities::kClauser;
+  else
+    throw InputError("--densities", "",
+                     "expected dempster, chandler or clauser, found \"" + densities + "\"");
+  if (mass_kg != 0.0 && !(mass_kg >= plausible::kMinBodyMass && mass_kg <= plausible::kMaxBodyMass))
+    throw InputError("--mass", "",
+                     "a mass of " + message_number(mass_kg) + " kg is outside the human range [" +
+                         message_number(plausible::kMinBodyMass) + ", " +
+                         message_number(plausible::kMaxBodyMass) + "] kg");
+  const YeadonMeasurementsFile file = load_yeadon_measurements(path);
+  input.file = path;
+  input.measured = file.measured;
+  input.total_mass = mass_kg > 0.0 ? mass_kg : file.total_mass;
+  input.name = name.empty() ? std::filesystem::path(path).stem().string() : name;
+  YeadonModel out = yeadon_model(input);
+  const StandingBody standing = standing_body(out.model);
+  check_person_size(standing.height(), out.model.total_mass(),
+                    path + " (the standing height it gives)",
+                    path + (input.total_mass > 0.0 ? " (--mass or totalmass)"
+                                                   : " (the mass its densities give)"));
+  out.model = checked(out.model);
+  return out;
+}
+
+void write_athlete_model(const std::string& path, const BodyModel& model) {
+  save_body_model_file(path, model);
+}
+
+}  // namespace saltus

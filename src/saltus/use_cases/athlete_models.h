@@ -1,0 +1,48 @@
+#pragma once
+/// @file
+/// `saltus model new|info|scale` (and the app's New athlete): body models of particular
+/// athletes, checked like any model file and written like every file Saltus writes.
+/// docs/cli.md, "model"; the method in docs/method.md, "Athletes' body models".
+
+#include <string>
+
+#include "saltus/body/athlete_model.h"
+#include "saltus/body/body_model.h"
+#include "saltus/body/mass_properties.h"
+#include "saltus/body/yeadon_model.h"
+
+namespace saltus {
+
+/// "female" or "male"; anything else is InputError naming `field` (e.g. "--sex").
+Sex parse_sex(const std::string& text, const std::string& field);
+
+/// Refuses, with InputError naming `height_field` or `mass_field`, a stature or a mass outside
+/// the human range (formats/plausible_ranges.h) or a pair whose body mass index no person has.
+void check_person_size(double height_m, double mass_kg, const std::string& height_field,
+                       const std::string& mass_field);
+
+/// de Leva's model of a person (de_leva_model), after check_person_size on "--height" and
+/// "--mass", and read back through the model reader's checks, so every verb accepts it.
+BodyModel new_athlete_model(const AthleteSize& size);
+
+/// A model file's path, or a bundled model's name (resources/models/); InputError if neither.
+BodyModel load_model_argument(const std::string& model);
+
+/// `model` scaled to a person `height_m` tall (its standing height, standing_body) weighing
+/// `mass_kg` (scale_body_model), after check_person_size; named `name`, or
+/// "<model>-<H>m-<M>kg" when empty.
+BodyModel scaled_athlete_model(const BodyModel& model, double height_m, double mass_kg,
+                               const std::string& name);
+
+/// Yeadon's model of the person measured in `path` (formats/yeadon_measurements_file.h):
+/// `densities` "dempster", "chandler" or "clauser" (else InputError naming --densities);
+/// `mass_kg` > 0 scales every density so the body weighs it (else the file's `totalmass`, if
+/// any); named `name`, or the file's name without its extension. The model must stand and weigh
+/// like a person (check_person_size, naming the file) and pass the model reader.
+YeadonModel yeadon_athlete_model(const std::string& path, const std::string& densities,
+                                 double mass_kg, const std::string& name);
+
+/// Writes a model file (save_body_model_file): atomic, never over a file Saltus did not write.
+void write_athlete_model(const std::string& path, const BodyModel& model);
+
+}  // namespace saltus

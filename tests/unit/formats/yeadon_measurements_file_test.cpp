@@ -1,0 +1,83 @@
+// Tests for reading Yeadon's measurement files (formats/yeadon_measurements_file.h): both real
+// files of examples/athletes (two syntaxes), and every kind of bad line named by line and key.
+
+#include "saltus/formats/yeadon_measurements_file.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "saltus/base/input_error.h"
+
+namespace saltus {
+namespace {
+
+std::string ymf_text(const std::string& name) {
+  std::ifstream in(std::string(SALTUS_EXAMPLES_DIR) + "/athletes/" + name);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// The InputError's JSON path (here: "line N: key" or the key) when parsing `text`, or "".
+std::string ymf_error_at(const std::string& text, std::string* problem = nullptr) {
+  try {
+    parse_yeadon_measurements(text, "m.txt");
+  } catch (const InputError& e) {
+    if (problem) *problem = e.problem();
+    return e.json_path();
+  }
+  return "";
+}
+
+TEST(YeadonMeasurementsFile, ReadsBothRealFilesInMetres) {
+  const YeadonMeasurementsFile male =
+      load_yeadon_measurements(std::string(SALTUS_EXAMPLES_DIR) + "/athletes/yeadon-male1.txt");
+  EXPECT_EQ(male.measured.size(), 95u);
+  EXPECT_DOUBLE_EQ(male.conversion_factor, 0.01);
+  EXPECT_NEAR(male.measured.at("Ls1L"), 0.049, 1e-15);  // Ls1L=4.9 (cm)
+  EXPECT_EQ(male.total_mass, 0.0);
+  const YeadonMeasurementsFile female = parse_yeadon_measurements(
+      ymf_text("yeadon-female1.txt"), "yeadon-female1.txt");  // "Key: value", totalmass: -1
+  EXPECT_EQ(female.measured.size(), 95u);
+  EXPECT_NEAR(female.measured.at("Lb4w"), 0.141, 1e-15);
+  EXPECT_EQ(female.total_mass, 0.0);
+}
+
+TEST(YeadonMeasurementsFile, BadLinesAreNamedByLineAndKey) {
+  const std::string good = ymf_text("yeadon-male1.txt");
+  std::string problem;
+  // A misspelled key: the nearest known one is suggested.
+  std::string text = good;
+  text.replace(text.find("Ls2L="), 5, "Ls2l=");
+  EXPECT_NE(ymf_error_at(text, &problem).find("Ls2l"), std::string::npos);
+  EXPECT_NE(problem.find("Ls2L"), std::string::npos) << problem;
+  // A missing key (the line removed).
+  text = good;
+  const auto at = text.find("Lk6d=");
+  text.erase(at, text.find('\n', at) - at);
+  EXPECT_EQ(ymf_error_at(text), "Lk6d");
+  // Negative or zero, not a number, twice, no conversion factor, an absurd total mass.
+  text = good + "\n";
+  EXPECT_EQ(ymf_error_at(std::string(good).replace(good.find("Ls3L=33.4"), 9, "Ls3L=-3.4"))
+                    .find("Ls3L") != std::string::npos,
+            true);
+  EXPECT_NE(ymf_error_at(good + "Ls0p=abc\n", &problem).find("Ls0p"), std::string::npos);
+  EXPECT_NE(problem.find("number"), std::string::npos);
+  EXPECT_NE(ymf_error_at(good + "Ls0p=80\n", &problem).find("Ls0p"), std::string::npos);
+  EXPECT_NE(problem.find("twice"), std::string::npos);
+  std::string no_factor = good;
+  no_factor.replace(no_factor.find("measurementconversionfactor"), 1, "#");
+  EXPECT_EQ(ymf_error_at(no_factor), "measurementconversionfactor");
+  EXPECT_NE(ymf_error_at(good + "totalmass = 900\n").find("totalmass"), std::string::npos);
+  EXPECT_NE(ymf_error_at(good + "just words\n").find("line"), std::string::npos);
+  // Values in mm read as cm: a 4.9 m hip-to-navel length.
+  std::string metres = good;
+  metres.replace(metres.find("= .01"), 5, "= 1.");
+  EXPECT_NE(ymf_error_at(metres, &problem), "");
+  EXPECT_NE(problem.find("measurementconversionfactor"), std::string::npos) << problem;
+}
+
+}  // namespace
+}  // namespace saltus
