@@ -17,17 +17,13 @@
 #include <cmath>
 #include <limits>
 
+#include "saltus/body/drawing_colours.h"
 #include "scene/vtk_util.h"
 
 namespace saltus::gui::scene {
 
 namespace {
 
-const Rgb kLeftColour{0.25, 0.47, 0.88};
-const Rgb kRightColour{0.93, 0.45, 0.18};
-const Rgb kTrunkColour{0.86, 0.82, 0.74};
-const Rgb kSkinColour{0.95, 0.78, 0.64};
-const Rgb kNoseColour{0.82, 0.52, 0.44};
 /// Pale cyan: no other part of the scene has it (sides blue and orange, arrows green to red).
 const Rgb kOutlineColour{0.45, 0.95, 1.0};
 /// The picked segment's rim: this share of its thickness, at least kOutlineMinWidth.
@@ -39,31 +35,9 @@ constexpr double kGhostRadiusFactor = 0.35;  ///< keyframe poses drawn as thin f
 constexpr int kRoundResolution = 28;         ///< around a capsule or an ellipsoid
 constexpr int kLengthResolution = 16;        ///< along them
 
-enum class Side { kLeft, kRight, kCentre };
-
-Side side_of(const std::string& name) {
-  if (name.size() > 2 && name.compare(name.size() - 2, 2, "_l") == 0) return Side::kLeft;
-  if (name.size() > 2 && name.compare(name.size() - 2, 2, "_r") == 0) return Side::kRight;
-  return Side::kCentre;
-}
-
-Rgb segment_colour(const Segment& s) {
-  switch (side_of(s.name)) {
-    case Side::kLeft:
-      return kLeftColour;
-    case Side::kRight:
-      return kRightColour;
-    case Side::kCentre:
-      break;
-  }
-  return kTrunkColour;
-}
-
-/// Skin for what is skin on an athlete in a leotard; the segment's colour otherwise.
-Rgb part_colour(const Segment& s, const ShapePart& part) {
-  if (part.name == "nose") return kNoseColour;
-  if (part.name == "head" || part.name == "neck" || part.name == "hand") return kSkinColour;
-  return segment_colour(s);
+/// The library's drawing colours (body/drawing_colours.h), which the flight page draws too.
+Rgb rgb(const DrawingColour& c) {
+  return Rgb{c.r, c.g, c.b};
 }
 
 vtkSmartPointer<vtkPolyData> placed(vtkAlgorithmOutput* source, vtkTransform* transform) {
@@ -136,14 +110,14 @@ vtkSmartPointer<vtkPolyData> segment_mesh(const Segment& s, const std::optional<
   if (s.shape.parts.empty()) {
     auto mesh = capsule(Eigen::Vector3d(0, 0.5 * s.shape.length, 0), s.shape.length,
                         std::max(s.shape.radius, 0.01), kRoundResolution);
-    paint(mesh, uniform ? *uniform : segment_colour(s));
+    paint(mesh, uniform ? *uniform : rgb(segment_colour(s)));
     all->AddInputData(mesh);
   }
   for (const ShapePart& part : s.shape.parts) {
     auto mesh = part.type == "capsule"
                     ? capsule(part.center, part.length, part.radius, kRoundResolution)
                     : ellipsoid(part.center, part.radii);
-    paint(mesh, uniform ? *uniform : part_colour(s, part));
+    paint(mesh, uniform ? *uniform : rgb(part_colour(s, part)));
     all->AddInputData(mesh);
   }
   all->Update();

@@ -24,6 +24,24 @@ OptimizeOptions quick_options() {
   return o;
 }
 
+TEST(OptimizerControl, ProgressCountsOnAcrossTheResolutionLevels) {
+  // The automatic resolution solves one problem per level; the progress a caller sees (the
+  // app's iteration counter, the CLI's lines) counts on across them instead of starting again.
+  const MotionFile file = load_motion_file(test::m1_path());
+  std::vector<int> seen;
+  std::vector<double> clock;
+  const OptimizationResult r =
+      optimize_motion(file.motion, file.model, {}, [&](const ProgressInfo& info) {
+        seen.push_back(info.iteration);
+        clock.push_back(info.elapsed_seconds);
+      });
+  ASSERT_GE(r.levels.size(), 2u) << "M1 is refined at least once";
+  ASSERT_FALSE(seen.empty());
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_TRUE(std::is_sorted(clock.begin(), clock.end()));
+  EXPECT_EQ(seen.back(), r.solve.iterations);
+}
+
 TEST(OptimizerControl, CancelStopsCleanlyWithACompleteResult) {
   const MotionFile file = load_motion_file(test::m1_path());
   std::atomic<bool> cancel{false};

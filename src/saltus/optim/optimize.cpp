@@ -220,6 +220,15 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
   bool have_best = false;
   int iterations = 0, restarts = 0;
   double seconds = 0.0;
+  // Each level's solver counts from 0: the caller sees one count and one clock over the levels
+  // (an app's iteration counter never goes backwards).
+  const ProgressCallback counted = progress ? ProgressCallback([&](const ProgressInfo& info) {
+    ProgressInfo over_levels = info;
+    over_levels.iteration += iterations;
+    over_levels.elapsed_seconds += seconds;
+    progress(over_levels);
+  })
+                                            : ProgressCallback();
   for (int level = 0;; ++level) {
     nlp_options.subdivisions = subdivisions;
     // A level that may still be refined only has to show where its residual lives, so it stops
@@ -233,7 +242,7 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       level_solver.objective_change_tolerance =
           std::max(solver.objective_change_tolerance, rules.coarse_objective_change);
     Solved solved = solve_level(motion, at_start, model, start_trajectory, nlp_options,
-                                level_solver, progress, cancel);
+                                level_solver, counted, cancel);
     iterations += solved.solve.iterations;
     restarts += solved.solve.restarts;
     seconds += solved.solve.seconds;
@@ -246,7 +255,7 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       SolverOptions finish = solver;
       finish.warm_start = true;
       Solved finished = solve_level(motion, solved.optimized, model, solved.trajectory, nlp_options,
-                                    finish, progress, cancel);
+                                    finish, counted, cancel);
       iterations += finished.solve.iterations;
       restarts += finished.solve.restarts;
       seconds += finished.solve.seconds;
