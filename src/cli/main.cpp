@@ -29,6 +29,7 @@
 #include "saltus/motion/motion.h"
 #include "saltus/optim/optimize.h"
 #include "saltus/optim/solver_memory.h"
+#include "saltus/use_cases/athlete_models.h"
 #include "saltus/use_cases/captures.h"
 #include "saltus/use_cases/result_folders.h"
 #include "study_verbs.h"
@@ -44,6 +45,7 @@ struct CommonArgs {
   std::string motion_path;
   std::string out_dir;
   std::string model_override;
+  std::string takeoff = "same-spin";  ///< simulate, analyse twist: with --model
   bool quiet = false;
   saltus::cli::OptionFlags options;  ///< the option table's flags of the verb
 };
@@ -63,6 +65,33 @@ void add_common(CLI::App* cmd, CommonArgs& args, saltus::OptionUse runs) {
   cmd->add_option("--model", args.model_override,
                   "body model (name under resources/models or path), overrides the motion's");
   cmd->add_flag("--quiet,-q", args.quiet, "print nothing on success");
+}
+
+/// --takeoff, for the verbs whose result depends on the take-off angular momentum.
+void add_takeoff(CLI::App* cmd, CommonArgs& args) {
+  cmd->add_option("--takeoff", args.takeoff,
+                  "with --model, how the take-off carries over to that athlete: same-spin (the "
+                  "same whole-body spin, so the angular momentum follows the athlete's inertia) "
+                  "or keep-momentum (the same angular momentum)")
+      ->capture_default_str();
+}
+
+/// The motion, on the --model athlete with the --takeoff rule when given.
+saltus::MotionFile load_for(const CommonArgs& args) {
+  return saltus::load_motion_for_athlete(args.motion_path, args.model_override,
+                                         saltus::parse_takeoff_rule(args.takeoff, "--takeoff"));
+}
+
+/// One line saying how the take-off was carried over to another athlete, if it was.
+void print_takeoff_adaptation(const saltus::MotionFile& f) {
+  if (!f.takeoff_adaptation) return;
+  const saltus::TakeoffAdaptation& a = *f.takeoff_adaptation;
+  std::printf(
+      "  flown by %s instead of %s: %s at take-off, angular momentum (%.3g, %.3g, %.3g) -> "
+      "(%.3g, %.3g, %.3g) kg·m²/s\n",
+      f.model.name.c_str(), a.own_model.c_str(), a.rule.c_str(), a.own_angular_momentum.x(),
+      a.own_angular_momentum.y(), a.own_angular_momentum.z(), a.angular_momentum.x(),
+      a.angular_momentum.y(), a.angular_momentum.z());
 }
 
 saltus::EvaluateOptions options_from(const CommonArgs& args) {
@@ -132,8 +161,7 @@ int run_evaluate(const CommonArgs& args) {
 int run_simulate(const CommonArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   saltus::check_output_folder(args.out_dir);
-  const saltus::MotionFile file =
-      saltus::load_motion_or_capture(args.motion_path, args.model_override);
+  const saltus::MotionFile file = load_for(args);
   const saltus::EvaluateOptions options = options_from(args);
   const saltus::SimulationResult s = saltus::simulate_motion(file.motion, file.model, options);
   const nlohmann::json written = saltus::write_simulation_outputs(args.out_dir, file, s, options);
@@ -141,6 +169,7 @@ int run_simulate(const CommonArgs& args) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!args.quiet) {
     print_header("simulate", file, options);
+    print_takeoff_adaptation(file);
     std::printf("  free flight, take-off angular momentum (%.3g, %.3g, %.3g) kg·m²/s from the %s\n",
                 s.angular_momentum.x(), s.angular_momentum.y(), s.angular_momentum.z(),
                 s.angular_momentum_from_file
@@ -279,8 +308,7 @@ int run_optimize(const CommonArgs& args) {
 int run_analyse_twist(const CommonArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   saltus::check_output_folder(args.out_dir);
-  const saltus::MotionFile file =
-      saltus::load_motion_or_capture(args.motion_path, args.model_override);
+  const saltus::MotionFile file = load_for(args);
   const saltus::EvaluateOptions options = options_from(args);
   const saltus::TwistSources sources = saltus::twist_sources(file.motion, file.model, options);
   const nlohmann::json written = saltus::write_twist_outputs(args.out_dir, file, sources);
@@ -288,6 +316,7 @@ int run_analyse_twist(const CommonArgs& args) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!args.quiet) {
     print_header("analyse twist", file, options);
+    print_takeoff_adaptation(file);
     std::printf("  %s\n", written.at("sentence").get<std::string>().c_str());
     for (const nlohmann::json& share : written.at("shares"))
       std::printf("  %-10s %7.1f deg of tilt at mid-flight (%.0f %%)\n",
@@ -325,6 +354,7 @@ int main(int argc, char** argv) {
       "Free flight: the joints follow the keyframed motion, the body's orientation and position "
       "follow Newton's laws; reports how far the landing is from the last keyframe");
   add_common(simulate, simulate_args, saltus::OptionUse::kEvaluation);
+  add_takeoff(simulate, simulate_args);
 
   CommonArgs optimize_args;
   CLI::App* optimize = app.add_subcommand(
@@ -345,6 +375,7 @@ int main(int argc, char** argv) {
       "the take-off's share and each aerial movement's (left arm, right arm, legs, trunk), by "
       "Yeadon's counterfactual free flights; writes result.json, twist.csv, twist.md");
   add_common(twist, twist_args, saltus::OptionUse::kEvaluation);
+  add_takeoff(twist, twist_args);
 
   saltus::cli::StudyVerbs study_verbs(app, argc, argv);  // study convergence|mass|merge, paper
 

@@ -69,6 +69,7 @@ ResultJson common_result(const MotionFile& file, ResultJson::Kind kind, const st
   r.knots_per_interval = knots_per_interval;
   r.flight_time_s = file.motion.flight_time();
   r.keyframes = static_cast<int>(file.motion.keyframes.size());
+  r.takeoff_adaptation = file.takeoff_adaptation;
   return r;
 }
 
@@ -247,6 +248,11 @@ nlohmann::json result_to_json(const ResultJson& r) {
   j["max_rotation_error_deg"] = e ? nlohmann::json(e->max_rotation_error_deg) : nullptr;
   if (r.takeoff_angular_momentum)
     j["takeoff_angular_momentum"] = vector_json(*r.takeoff_angular_momentum);
+  if (const auto& a = r.takeoff_adaptation)
+    j["takeoff_adaptation"] = {{"rule", a->rule},
+                               {"own_model", a->own_model},
+                               {"own_angular_momentum", vector_json(a->own_angular_momentum)},
+                               {"angular_momentum", vector_json(a->angular_momentum)}};
   if (r.body_weight_N) j["body_weight_N"] = *r.body_weight_N;
   if (!r.joint_loads.empty() && r.body_weight_N) {
     nlohmann::json loads = nlohmann::json::object();
@@ -342,6 +348,14 @@ ResultJson parse_result_json(const nlohmann::json& document, const std::string& 
   }
   if (const auto momentum = root.find("takeoff_angular_momentum"))
     r.takeoff_angular_momentum = momentum->as_vector3();
+  if (const auto adaptation = root.find("takeoff_adaptation")) {
+    TakeoffAdaptation a;
+    a.rule = adaptation->at("rule").as_string();
+    a.own_model = adaptation->at("own_model").as_string();
+    a.own_angular_momentum = adaptation->at("own_angular_momentum").as_vector3();
+    a.angular_momentum = adaptation->at("angular_momentum").as_vector3();
+    r.takeoff_adaptation = a;
+  }
   if (const auto weight = root.find("body_weight_N")) r.body_weight_N = weight->as_double();
   if (const auto rotation = root.find("rotation")) {
     rotation->require_object();

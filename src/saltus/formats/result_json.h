@@ -54,6 +54,9 @@ struct ResultJson {
   /// Of the evaluated or the optimised motion; none for simulations (null in the file).
   std::optional<KeyframeErrors> keyframe_errors;
   std::optional<Eigen::Vector3d> takeoff_angular_momentum;  ///< evaluations and simulations
+  /// The motion flown by another athlete than its own: how its take-off was carried over
+  /// (MotionFile::takeoff_adaptation); missing otherwise.
+  std::optional<TakeoffAdaptation> takeoff_adaptation;
   /// Body weight m·g (N), the scale of "% of body weight"; missing from files before it.
   std::optional<double> body_weight_N;
   /// The peak load at each joint on the dense check's points (force N, moment N·m about the

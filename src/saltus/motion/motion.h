@@ -59,10 +59,22 @@ struct Motion {
 };
 
 /// A motion with the body model it refers to.
+/// How a motion's take-off state was carried over to another athlete than its own (`--model`
+/// with `--takeoff`): the same keyframes and times, the same take-off CoM position and velocity,
+/// and the angular momentum by `rule`.
+struct TakeoffAdaptation {
+  std::string rule;       ///< "same spin" or "same angular momentum"
+  std::string own_model;  ///< the model the motion was made for
+  Eigen::Vector3d own_angular_momentum = Eigen::Vector3d::Zero();  ///< on it, kg·m²/s
+  Eigen::Vector3d angular_momentum = Eigen::Vector3d::Zero();      ///< on this athlete
+};
+
 struct MotionFile {
   std::string path;  ///< the motion file it came from ("" if built in memory)
   Motion motion;
   BodyModel model;
+  /// Set when the motion is flown by another athlete than its own (load_motion_for_athlete).
+  std::optional<TakeoffAdaptation> takeoff_adaptation;
 };
 
 }  // namespace saltus

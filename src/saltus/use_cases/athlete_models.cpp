@@ -6,11 +6,16 @@
 #include <nlohmann/json.hpp>
 
 #include "saltus/base/input_error.h"
+#include "saltus/base/json_reader.h"
 #include "saltus/base/resources.h"
 #include "saltus/base/text_format.h"
+#include "saltus/evaluation/evaluate.h"
+#include "saltus/evaluation/flight_state.h"
+#include "saltus/evaluation/rotation_metrics.h"
 #include "saltus/formats/model_file.h"
 #include "saltus/formats/plausible_ranges.h"
 #include "saltus/formats/yeadon_measurements_file.h"
+#include "saltus/use_cases/captures.h"
 
 namespace saltus {
 
@@ -122,6 +127,42 @@ YeadonModel yeadon_athlete_model(const std::string& path, const std::string& den
 
 void write_athlete_model(const std::string& path, const BodyModel& model) {
   save_body_model_file(path, model);
+}
+
+TakeoffRule parse_takeoff_rule(const std::string& text, const std::string& field) {
+  if (text == "same-spin") return TakeoffRule::kSameSpin;
+  if (text == "keep-momentum") return TakeoffRule::kKeepMomentum;
+  throw InputError(
+      field, "", "\"" + printable(text) + "\" is not a take-off rule: same-spin or keep-momentum");
+}
+
+MotionFile load_motion_for_athlete(const std::string& path, const std::string& model_override,
+                                   TakeoffRule rule) {
+  MotionFile athlete = load_motion_or_capture(path, model_override);
+  if (model_override.empty()) return athlete;
+  const MotionFile own = load_motion_or_capture(path, "");
+  const MotionEvaluation own_flight = evaluate_motion(own.motion, own.model);
+  TakeoffAdaptation adaptation;
+  adaptation.own_model = own.model.name;
+  adaptation.own_angular_momentum = own.motion.takeoff.angular_momentum
+                                        ? *own.motion.takeoff.angular_momentum
+                                        : fit_flight_state(own_flight.samples).angular_momentum;
+  if (rule == TakeoffRule::kKeepMomentum) {
+    adaptation.rule = "same angular momentum";
+    adaptation.angular_momentum = adaptation.own_angular_momentum;
+  } else {
+    adaptation.rule = "same spin";
+    const MotionEvaluation athlete_flight = evaluate_motion(athlete.motion, athlete.model);
+    const Eigen::Matrix3d own_inertia =
+        whole_body_inertia_about_com(own.model, own_flight.samples.front());
+    const Eigen::Matrix3d athlete_inertia =
+        whole_body_inertia_about_com(athlete.model, athlete_flight.samples.front());
+    adaptation.angular_momentum =
+        athlete_inertia * own_inertia.ldlt().solve(adaptation.own_angular_momentum);
+  }
+  athlete.motion.takeoff.angular_momentum = adaptation.angular_momentum;
+  athlete.takeoff_adaptation = adaptation;
+  return athlete;
 }
 
 }  // namespace saltus

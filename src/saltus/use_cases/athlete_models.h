@@ -10,6 +10,7 @@
 #include "saltus/body/body_model.h"
 #include "saltus/body/mass_properties.h"
 #include "saltus/body/yeadon_model.h"
+#include "saltus/motion/motion.h"
 
 namespace saltus {
 
@@ -41,6 +42,23 @@ BodyModel scaled_athlete_model(const BodyModel& model, double height_m, double m
 /// like a person (check_person_size, naming the file) and pass the model reader.
 YeadonModel yeadon_athlete_model(const std::string& path, const std::string& densities,
                                  double mass_kg, const std::string& name);
+
+/// How a motion's take-off carries over to another athlete (`--takeoff`): the same whole-body
+/// spin ω = I⁻¹·L at take-off, so the angular momentum follows the athlete's inertia (a coach's
+/// "the same take-off, done by this athlete"), or the same angular momentum L.
+enum class TakeoffRule { kSameSpin, kKeepMomentum };
+
+/// "same-spin" or "keep-momentum"; anything else is InputError naming `field`.
+TakeoffRule parse_takeoff_rule(const std::string& text, const std::string& field);
+
+/// The motion (or capture) at `path` flown by the athlete `model_override` (a model file or a
+/// bundled name; "" = the motion's own model, returned as loaded): the same keyframes, times and
+/// take-off CoM position and velocity, and the take-off angular momentum by `rule`, from the
+/// motion's own (its file's, or the constant nearest its L(t) on its own model): same spin,
+/// L' = I'·I⁻¹·L with I, I' the whole-body inertias about the CoM in the first keyframe's pose.
+/// The result's takeoff_adaptation says what was done (result.json "takeoff_adaptation").
+MotionFile load_motion_for_athlete(const std::string& path, const std::string& model_override,
+                                   TakeoffRule rule);
 
 /// Writes a model file (save_body_model_file): atomic, never over a file Saltus did not write.
 void write_athlete_model(const std::string& path, const BodyModel& model);
