@@ -64,12 +64,23 @@ class Builder {
            " m on the other side: a typing error?)";
   }
 
-  /// The stadium from `p_key` and `w_key`: p <= 2w is refused, p > πw becomes a circle.
+  /// The stadium from `p_key` and `w_key`; p > πw becomes a circle of perimeter p (as the
+  /// `yeadon` package does). p <= 2w fits no convex shape, so one of the two is wrong: when the
+  /// width differs from the other side's like a typing error (the example female1's right wrist,
+  /// 14.1 cm wide against 5.5 cm on the left), the width is the wrong one and the level becomes
+  /// a circle of perimeter p, with a warning naming both widths; otherwise it is refused.
   Stadium perimeter_width(const std::string& p_key, const std::string& w_key,
                           bool anterior_posterior = false) {
     const double p = m(p_key), w = m(w_key);
     int status = 0;
     Stadium s = stadium_from_perimeter_width(p, w, &status);
+    if (status < 0 && !pair_note(w_key).empty()) {
+      warnings_.push_back(p_key + " " + message_number(p) + " m is too small for the width " +
+                          w_key + " " + message_number(w) + " m" + pair_note(w_key) +
+                          ": taken as a circle of perimeter " + message_number(p) + " m");
+      s = circle_from_perimeter(p);
+      status = 0;
+    }
     if (status < 0)
       throw InputError(in_.file, p_key,
                        "perimeter " + message_number(p) + " m is too small for the width " + w_key +
