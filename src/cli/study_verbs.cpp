@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -335,7 +336,12 @@ int StudyVerbs::State::run_job(const StudyJob& job, const StudyArgs& common, con
                  "saltus: interrupted (%s): the finished cases are kept in %s; run the same "
                  "command with --resume to run the others\n",
                  strsignal(result.interrupt_signal), result.partial_dir.c_str());
-    return 128 + result.interrupt_signal;
+    // End the way the signal would have ended a program without handlers (docs/safety.md):
+    // the shell then knows the run was interrupted, as it does for every other verb.
+    std::fflush(nullptr);
+    std::signal(result.interrupt_signal, SIG_DFL);
+    std::raise(result.interrupt_signal);
+    return 128 + result.interrupt_signal;  // a signal that does not end the process
   }
   if (result.already_complete) {
     if (!common.quiet)

@@ -218,6 +218,9 @@ BodyModel parse_body_model(const nlohmann::json& document, const std::string& fi
   const JsonNode segments = root.at("segments");
   segments.require_array();
   if (segments.size() == 0) segments.fail("segments must be a non-empty array");
+  if (segments.size() > plausible::kMaxSegments)
+    segments.fail(std::to_string(segments.size()) + " segments; a body model has at most " +
+                  std::to_string(plausible::kMaxSegments));
 
   const std::vector<std::string> all_names = peek_segment_names(segments.value());
   std::unordered_map<std::string, std::size_t> segment_of_name;

@@ -5,6 +5,8 @@
 /// motion is refused, while numbers that are typos, garbage or attacks (1e308, 1e-320) are
 /// refused with a message naming the field instead of turning into NaN downstream.
 
+#include <cstddef>
+
 namespace saltus::plausible {
 
 // Body model (docs/formats.md, "Body model").
@@ -13,6 +15,9 @@ inline constexpr double kMinSegmentMass = 1e-3;
 inline constexpr double kMaxSegmentMass = 1e3;
 /// m: |joint_position|, |com| and shape sizes per coordinate. Human segments are under 1 m.
 inline constexpr double kMaxSegmentLength = 10.0;
+/// Segments of a body model: a human model has a few dozen; every verb's cost grows with them
+/// (a 200-segment model took 61 s and 1.6 GB to optimise, 1000 ended in bad_alloc).
+inline constexpr std::size_t kMaxSegments = 64;
 /// m: radius of gyration sqrt(I/m) of each principal moment. A thigh's is about 0.06-0.15 m.
 inline constexpr double kMinRadiusOfGyration = 1e-4;
 inline constexpr double kMaxRadiusOfGyration = 10.0;

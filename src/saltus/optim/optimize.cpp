@@ -172,6 +172,12 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
     throw std::invalid_argument("knots per interval must be at least 1");
   const int n_key = static_cast<int>(motion.keyframes.size());
   if (n_key < 2) throw std::invalid_argument("a motion needs at least two keyframes");
+  if (n_key > kMaxOptimizedKeyframes)
+    throw std::invalid_argument(
+        "the motion has " + std::to_string(n_key) + " keyframes; optimize takes at most " +
+        std::to_string(kMaxOptimizedKeyframes) +
+        " (its cost grows faster than their count: 100 took 3.6 min and 1 GB): pick fewer, "
+        "e.g. with import --keyframes N");
   const AutomaticResolution rules;
   OptimizationResult result;
   const bool automatic = options.resolution_is_automatic();

@@ -144,5 +144,24 @@ TEST(OptimizeMotion, RejectsKnotsPerIntervalBelowOne) {
   EXPECT_THROW(optimize_motion(test::tuck_motion(model), model, options), std::invalid_argument);
 }
 
+TEST(OptimizeMotion, RefusesMoreKeyframesThanItsCostAllows) {
+  const BodyModel model = test::bundled_model();
+  Motion motion = test::tuck_motion(model);
+  const Keyframe first = motion.keyframes.front();
+  const double duration = motion.flight_time();
+  motion.keyframes.clear();
+  for (int i = 0; i <= kMaxOptimizedKeyframes; ++i) {
+    Keyframe k = first;
+    k.time = duration * i / kMaxOptimizedKeyframes;
+    motion.keyframes.push_back(k);
+  }
+  try {
+    optimize_motion(motion, model, {});
+    ADD_FAILURE() << "accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("at most 64"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace saltus
