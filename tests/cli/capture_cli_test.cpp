@@ -163,6 +163,22 @@ TEST(CaptureCli, HostileCapturesAreRefusedAtOnceWithOneLine) {
   write_text(dir / "far.bvh",
              backflip_with("OFFSET 0.000000 0.000000 8.488700", "OFFSET 0.000000 1e6 8.488700"));
   write_text(dir / "good.bvh", read_text(bundled_capture("deepmimic-backflip.bvh")));
+  {
+    // The clip's 29 frames over and over at 120 Hz: 8000 frames with no ground contact, a
+    // 67 s "flight" (picking its keyframes took minutes; a motion lasts at most 60 s).
+    const std::string text = read_text(bundled_capture("deepmimic-backflip.bvh"));
+    std::istringstream data(text.substr(text.find("Frame Time:")));
+    std::string line;
+    std::getline(data, line);
+    std::vector<std::string> frames;
+    while (std::getline(data, line))
+      if (!line.empty()) frames.push_back(line);
+    std::string long_clip =
+        text.substr(0, text.find("MOTION")) + "MOTION\nFrames: 8000\nFrame Time: 0.008333\n";
+    for (int f = 0; f < 8000; ++f)
+      long_clip += frames[f % frames.size()] + "\n";
+    write_text(dir / "long.bvh", long_clip);
+  }
   write_text(dir / "huge-unit.json",
              R"({"format": "saltus-capture-mapping/1", "unit": 1e308, "joints": {}})");
   write_text(dir / "crossed.json", R"({"format": "saltus-capture-mapping/1",
@@ -183,6 +199,9 @@ TEST(CaptureCli, HostileCapturesAreRefusedAtOnceWithOneLine) {
        "(capture.motion.json: /takeoff/com_velocity/1: -1463.36 m/s is outside the plausible "
        "range [-100, 100] m/s); it comes from the root's position channels and OFFSETs in the "
        "capture's unit, over the Frame Time (line 89); nothing was written"},
+      {dir / "long.bvh",
+       "long.bvh: the flight (no ground contact: frames 0-7999) lasts 66.6557 s, longer than a "
+       "motion may (60 s); give the flight with --flight START:END"},
       {good + " --mapping " + (dir / "huge-unit.json"),
        "huge-unit.json: /unit: 1e+308 metres per unit is outside the plausible range"},
       {good + " --mapping " + (dir / "crossed.json"),

@@ -172,6 +172,7 @@ CaptureFile import_capture_file(const std::string& path, const CaptureFileOption
     }
     CaptureImportOptions import_options = options.import;
     if (import_options.name.empty()) import_options.name = fs::path(path).stem().string();
+    if (!import_options.max_flight_time) import_options.max_flight_time = plausible::kMaxFlightTime;
     capture.import = import_capture(capture.clip, capture.model, mapping, import_options);
   } catch (const MappingError& e) {
     // A mapping key the mapping file gave is named there (/joints/<key>); one guessed by name,
