@@ -202,6 +202,8 @@ TEST(CaptureCli, HostileCapturesAreRefusedAtOnceWithOneLine) {
       {dir / "long.bvh",
        "long.bvh: the flight (no ground contact: frames 0-7999) lasts 66.6557 s, longer than a "
        "motion may (60 s); give the flight with --flight START:END"},
+      {good + " --keyframes '3\n\x1B[2J'",
+       "--keyframes: expected a number, found \"3\\x0A\\x1B[2J\""},
       {good + " --mapping " + (dir / "huge-unit.json"),
        "huge-unit.json: /unit: 1e+308 metres per unit is outside the plausible range"},
       {good + " --mapping " + (dir / "crossed.json"),
