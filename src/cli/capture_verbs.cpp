@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "saltus/base/input_error.h"
+#include "saltus/base/text_format.h"
 #include "saltus/use_cases/captures.h"
 #include "saltus/use_cases/flight_page.h"
 
@@ -22,7 +23,8 @@ double parse_number(const std::string& text, const std::string& option) {
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
   if (text.empty() || *end != '\0' || !std::isfinite(v))
-    throw saltus::InputError(option, "", "expected a number, found \"" + text + "\"");
+    throw saltus::InputError(option, "",
+                             "expected a number, found \"" + saltus::message_text(text) + "\"");
   return v;
 }
 
@@ -35,20 +37,23 @@ saltus::CaptureFileOptions import_options(const ImportArgs& args) {
   } else if (!args.keyframes.empty()) {
     const double n = parse_number(args.keyframes, "--keyframes");
     if (n < 2 || n != static_cast<int>(n))
-      throw saltus::InputError(
-          "--keyframes", "",
-          "expected a whole number >= 2 or \"all\", found \"" + args.keyframes + "\"");
+      throw saltus::InputError("--keyframes", "",
+                               "expected a whole number >= 2 or \"all\", found \"" +
+                                   saltus::message_text(args.keyframes) + "\"");
     o.import.keyframe_count = static_cast<int>(n);
   }
   if (!args.flight.empty()) {
     const std::size_t colon = args.flight.find(':');
     if (colon == std::string::npos)
-      throw saltus::InputError("--flight", "",
-                               "expected START:END in seconds, found \"" + args.flight + "\"");
+      throw saltus::InputError(
+          "--flight", "",
+          "expected START:END in seconds, found \"" + saltus::message_text(args.flight) + "\"");
     const double start = parse_number(args.flight.substr(0, colon), "--flight");
     const double end = parse_number(args.flight.substr(colon + 1), "--flight");
     if (!(start < end))
-      throw saltus::InputError("--flight", "", "START must be before END: \"" + args.flight + "\"");
+      throw saltus::InputError(
+          "--flight", "",
+          "START must be before END: \"" + saltus::message_text(args.flight) + "\"");
     o.import.flight = std::make_pair(start, end);
   }
   if (args.frame_time > 0) o.import.frame_time = args.frame_time;

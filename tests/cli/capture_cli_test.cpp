@@ -3,6 +3,10 @@
 // verbs reading a .bvh, the export/import round trip, and optimising a real capture's keyframes.
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <chrono>
 
 #include <filesystem>
 #include <fstream>
@@ -107,7 +111,7 @@ TEST(CaptureCli, BadInputExitsWithTwoNamesTheProblemAndWritesNothing) {
   const std::string out = " --out " + (dir / "out");
   const std::vector<std::pair<std::string, std::string>> cases{
       {"import " + (dir / "broken.bvh"), "broken.bvh: line 5: joint \"root\": unknown channel"},
-      {"import " + (dir / "missing.bvh"), "missing.bvh: cannot open the file"},
+      {"import " + (dir / "missing.bvh"), "missing.bvh: cannot open file for reading"},
       {"import " + (dir / "good.bvh") + " --keyframes 1", "--keyframes: expected a whole number"},
       {"import " + (dir / "good.bvh") + " --keyframes 30",
        "good.bvh: the keyframe count must be 2 to 8"},
@@ -155,6 +159,96 @@ TEST(CaptureCli, ExportWritesOnlyNewFiles) {
   EXPECT_EQ(
       run_cli("export " + m1_path() + " --format bvh --out " + (dir / "thesis.tex/m1.bvh")).status,
       4);
+}
+
+/// The bundled DeepMimic clip with `from` replaced by `to` (the first occurrence).
+std::string backflip_with(const std::string& from, const std::string& to) {
+  std::string text = read_text(bundled_capture("deepmimic-backflip.bvh"));
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+TEST(CaptureCli, HostileCapturesAreRefusedAtOnceWithOneLine) {
+  // Issue 28 items 1-4: each ended in a crash, a hang, gigabytes, NaN written with exit 0 or a
+  // motion file Saltus then refused to read. Now: exit 2, one line naming the file and the line
+  // or field, nothing written, in well under a second each.
+  const TempDir dir;
+  std::string deep = "HIERARCHY\nROOT j0\n{\nOFFSET 0 0 0\nCHANNELS 0\n";
+  for (int j = 1; j < 12000; ++j)
+    deep += "JOINT j" + std::to_string(j) + "\n{\nOFFSET 0 1 0\nCHANNELS 0\n";
+  for (int j = 0; j < 12000; ++j)
+    deep += "}\n";
+  deep += "MOTION\nFrames: 1\nFrame Time: 0.01\n\n";
+  write_text(dir / "deep.bvh", deep);
+  ASSERT_EQ(mkfifo((dir / "x.bvh").c_str(), 0600), 0);
+  fs::create_symlink("/dev/zero", dir / "zero.bvh");
+  write_text(dir / "frames.bvh", backflip_with("Frames: 29", "Frames: 1000000"));
+  write_text(dir / "slow.bvh", backflip_with("Frame Time: 0.062500", "Frame Time: 100"));
+  write_text(dir / "hour.bvh", backflip_with("Frame Time: 0.062500", "Frame Time: 3600"));
+  // The right hip 10 km below the root: the take-off CoM at 1463 m/s.
+  write_text(dir / "far.bvh",
+             backflip_with("OFFSET 0.000000 0.000000 8.488700", "OFFSET 0.000000 1e6 8.488700"));
+  write_text(dir / "good.bvh", read_text(bundled_capture("deepmimic-backflip.bvh")));
+  {
+    // The clip's 29 frames over and over at 120 Hz: 8000 frames with no ground contact, a
+    // 67 s "flight" (picking its keyframes took minutes; a motion lasts at most 60 s).
+    const std::string text = read_text(bundled_capture("deepmimic-backflip.bvh"));
+    std::istringstream data(text.substr(text.find("Frame Time:")));
+    std::string line;
+    std::getline(data, line);
+    std::vector<std::string> frames;
+    while (std::getline(data, line))
+      if (!line.empty()) frames.push_back(line);
+    std::string long_clip =
+        text.substr(0, text.find("MOTION")) + "MOTION\nFrames: 8000\nFrame Time: 0.008333\n";
+    for (int f = 0; f < 8000; ++f)
+      long_clip += frames[f % frames.size()] + "\n";
+    write_text(dir / "long.bvh", long_clip);
+  }
+  write_text(dir / "huge-unit.json",
+             R"({"format": "saltus-capture-mapping/1", "unit": 1e308, "joints": {}})");
+  write_text(dir / "crossed.json", R"({"format": "saltus-capture-mapping/1",
+      "joints": {"upper_arm_l": "left_shoulder", "forearm_l": "right_elbow"}})");
+  const std::string good = dir / "good.bvh";
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {dir / "deep.bvh", "deep.bvh: line 1026: the hierarchy is deeper than 256 joints"},
+      {dir / "x.bvh", "x.bvh: is not a regular file (a device, pipe or socket)"},
+      {dir / "zero.bvh", "zero.bvh: is not a regular file"},
+      {dir / "frames.bvh", "frames.bvh: line 88: Frames: 1000000 frames; Saltus reads at most"},
+      {good + " --frame-time 1e-300", "--frame-time: 1e-300 s per frame is outside [0.001, 1] s"},
+      {good + " --frame-time 1e300", "--frame-time: 1e+300 s per frame is outside [0.001, 1] s"},
+      {good + " --frame-time 3600", "--frame-time: 3600 s per frame is outside"},
+      {dir / "slow.bvh", "slow.bvh: line 89: Frame Time: 100 s per frame is outside [0.001, 1] s"},
+      {dir / "hour.bvh", "hour.bvh: line 89: Frame Time: 3600 s per frame is outside"},
+      {dir / "far.bvh",
+       "far.bvh: the imported flight would be a motion Saltus refuses to read "
+       "(capture.motion.json: /takeoff/com_velocity/1: -1463.36 m/s is outside the plausible "
+       "range [-100, 100] m/s); it comes from the root's position channels and OFFSETs in the "
+       "capture's unit, over the Frame Time (line 89); nothing was written"},
+      {dir / "long.bvh",
+       "long.bvh: the flight (no ground contact: frames 0-7999) lasts 66.6557 s, longer than a "
+       "motion may (60 s); give the flight with --flight START:END"},
+      {good + " --keyframes '3\n\x1B[2J'",
+       "--keyframes: expected a number, found \"3\\x0A\\x1B[2J\""},
+      {good + " --mapping " + (dir / "huge-unit.json"),
+       "huge-unit.json: /unit: 1e+308 metres per unit is outside the plausible range"},
+      {good + " --mapping " + (dir / "crossed.json"),
+       "crossed.json: /joints/forearm_l: the mapping's forearm_l joint \"right_elbow\" is not "
+       "below the upper_arm_l joint \"left_shoulder\""}};
+  for (const auto& [arguments, message] : cases) {
+    const auto start = std::chrono::steady_clock::now();
+    const auto run = test::run_command("timeout 20 " + std::string(SALTUS_CLI_PATH) + " import " +
+                                       arguments + " --out " + (dir / "out"));
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(run.status, 2) << arguments << "\n" << run.output;
+    EXPECT_NE(run.output.find(message), std::string::npos) << arguments << "\n" << run.output;
+    EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
+    EXPECT_FALSE(fs::exists(dir / "out")) << arguments;
+    EXPECT_LT(seconds, 3.0) << arguments;
+  }
 }
 
 TEST(CaptureCli, AMappingFileMapsNamesNoConventionKnows) {

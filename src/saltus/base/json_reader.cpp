@@ -1,17 +1,12 @@
 #include "saltus/base/json_reader.h"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <climits>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 
+#include "saltus/base/input_file.h"
 #include "saltus/base/text_format.h"
 
 namespace saltus {
@@ -187,10 +182,6 @@ class TrackingSax {
   std::vector<std::string> keys_;  ///< per open container: the current key (objects)
 };
 
-std::string system_error_text(int error) {
-  return std::strerror(error);
-}
-
 }  // namespace
 
 bool is_valid_utf8(const std::string& text) {
@@ -259,54 +250,7 @@ nlohmann::json parse_json_text(const std::string& text, const std::string& file)
 }
 
 nlohmann::json read_json_file(const std::string& path) {
-  if (!is_valid_utf8(path))
-    throw InputError(printable(path), "",
-                     "the file name is not valid UTF-8; rename the file (Saltus writes file "
-                     "names into its results, which are UTF-8 JSON)");
-  // O_NONBLOCK: opening a named pipe must not wait for a writer; fstat then refuses it.
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY | O_NONBLOCK);
-  if (fd < 0) {
-    const int error = errno;
-    throw InputError(path, "", "cannot open file for reading: " + system_error_text(error));
-  }
-  struct Closer {
-    int fd;
-    ~Closer() { ::close(fd); }
-  } closer{fd};
-  struct stat info {};
-  if (::fstat(fd, &info) != 0) {
-    const int error = errno;
-    throw InputError(path, "", "cannot read the file: " + system_error_text(error));
-  }
-  if (S_ISDIR(info.st_mode)) throw InputError(path, "", "is a folder, not a file");
-  if (!S_ISREG(info.st_mode))
-    throw InputError(path, "",
-                     "is not a regular file (a device, pipe or socket); Saltus reads model and "
-                     "motion files only");
-  if (static_cast<std::uintmax_t>(info.st_size) > kMaxJsonFileBytes)
-    throw InputError(path, "",
-                     "the file is " +
-                         message_number(static_cast<double>(info.st_size) / 1048576.0) +
-                         " MiB; Saltus reads files of at most " +
-                         std::to_string(kMaxJsonFileBytes / 1048576) + " MiB");
-  std::string text;
-  text.reserve(static_cast<std::size_t>(info.st_size));
-  char buffer[65536];
-  for (;;) {
-    const ssize_t n = ::read(fd, buffer, sizeof buffer);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      const int error = errno;
-      throw InputError(path, "", "cannot read the file: " + system_error_text(error));
-    }
-    if (n == 0) break;
-    text.append(buffer, static_cast<std::size_t>(n));
-    if (text.size() > kMaxJsonFileBytes)  // it grew while being read
-      throw InputError(path, "",
-                       "the file is larger than " + std::to_string(kMaxJsonFileBytes / 1048576) +
-                           " MiB, the most Saltus reads");
-  }
-  return parse_json_text(text, path);
+  return parse_json_text(read_input_file(path, kMaxJsonFileBytes, "model and motion files"), path);
 }
 
 std::string json_pointer_escape(const std::string& key) {

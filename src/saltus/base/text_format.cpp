@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "saltus/base/json_reader.h"
+
 namespace saltus {
 
 std::string format_number(const char* pattern, double value) {
@@ -20,6 +22,23 @@ std::string message_number(double value) {
   std::ostringstream out;
   out << value;
   return out.str();
+}
+
+std::string message_text(const std::string& text, std::size_t max_bytes) {
+  std::string out = printable(text);
+  if (out.size() <= max_bytes) return out;
+  std::size_t cut = max_bytes;
+  // Not inside a UTF-8 sequence (continuation bytes are 10xxxxxx) ...
+  while (cut > 0 && (static_cast<unsigned char>(out[cut]) & 0xC0) == 0x80)
+    --cut;
+  // ... nor inside a \xNN escape.
+  for (std::size_t back = 1; back <= 3 && back <= cut; ++back)
+    if (out.compare(cut - back, 2, "\\x") == 0) {
+      cut -= back;
+      break;
+    }
+  out.resize(cut);
+  return out + "... (" + std::to_string(text.size()) + " bytes)";
 }
 
 }  // namespace saltus

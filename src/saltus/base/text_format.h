@@ -1,8 +1,10 @@
 #pragma once
 /// @file
-/// Numbers as text for people: a printf pattern for tables, reports and the app's labels, and the
-/// stream default for error messages. (Data files write the shortest exact form, trajectory_csv.)
+/// Numbers and user text for people: a printf pattern for tables, reports and the app's labels,
+/// the stream default for numbers in error messages, and user strings made safe to quote in a
+/// one-line message. (Data files write the shortest exact form, trajectory_csv.)
 
+#include <cstddef>
 #include <string>
 
 namespace saltus {
@@ -13,5 +15,14 @@ std::string format_number(const char* pattern, double value);
 /// Six significant digits (the stream default): what a person compares against a file in an
 /// error message.
 std::string message_number(double value);
+
+/// The most bytes of a user string message_text keeps: a joint name or a token is a few dozen.
+inline constexpr std::size_t kMaxMessageTextBytes = 80;
+
+/// A string from a user's file or command line, fit to quote in a one-line message: control
+/// characters (a newline would split the message, an ESC would reach the terminal) and bytes
+/// that are not UTF-8 written as \xNN (printable()), then cut to at most `max_bytes` at a
+/// character boundary with "..." and the full length appended ("abc... (5000 bytes)").
+std::string message_text(const std::string& text, std::size_t max_bytes = kMaxMessageTextBytes);
 
 }  // namespace saltus

@@ -190,6 +190,13 @@ CaptureImport import_capture(const MocapClip& clip, const BodyModel& model,
                                                options.flight->second)
                               : detect_flight(out.frames, dt, options.contact);
   const FlightPhase& flight = out.flight;
+  const double flight_span = (flight.last_frame - flight.first_frame) * dt;
+  if (options.max_flight_time && flight_span > *options.max_flight_time)
+    throw std::invalid_argument(
+        "the flight (" + flight.method + ": frames " + std::to_string(flight.first_frame) + "-" +
+        std::to_string(flight.last_frame) + ") lasts " + format("%.6g", flight_span) +
+        " s, longer than a motion may (" + format("%.6g", *options.max_flight_time) +
+        " s); give the flight with --flight START:END");
 
   // Heading: the somersault axis (the horizontal part of the flight's angular momentum) onto
   // x, the sign chosen so that the body's left at take-off points to +x as nearly as it can.
@@ -312,6 +319,13 @@ CaptureImport import_capture(const MocapClip& clip, const BodyModel& model,
     out.pick.rule = "--keyframes all: every captured frame of the flight";
   } else {
     out.pick = pick_keyframes(out.captured, model, options.keyframe_count);
+    if (!options.keyframe_count &&
+        out.pick.max_quaternion_error > out.captured.tolerances.quaternion)
+      out.warnings.push_back(
+          "the interpolation through " + std::to_string(out.pick.frames.size()) +
+          " keyframes (the most picked) still misses a captured frame's joint rotation by " +
+          format("%.3g", out.pick.max_rotation_error_deg) +
+          " deg; keyframes.motion.json keeps them (--keyframes all keeps every frame)");
   }
   out.keyframes = keep_keyframes(out.captured, out.pick.frames);
   out.keyframes_metrics = evaluate_motion(out.keyframes, model).metrics;

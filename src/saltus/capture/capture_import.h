@@ -36,6 +36,10 @@ struct CaptureImportOptions {
   /// Warn when the gravity implied by the CoM's flight is off 9.81 m/s² by more than this
   /// fraction (a wrong frame time, or not a free flight).
   double gravity_warning_fraction = 0.2;
+  /// The longest flight imported (s from its first to its last frame); longer is refused
+  /// before the flight is fitted (std::invalid_argument). Unset: no limit. `saltus import` sets
+  /// the motion reader's flight-time limit.
+  std::optional<double> max_flight_time;
   /// Samples of the capture's residual per captured frame interval (trajectory.csv).
   int samples_per_frame = 10;
   std::string name;  ///< motion name ("" = "captured flight")

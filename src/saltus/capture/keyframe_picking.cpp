@@ -42,9 +42,11 @@ KeyframePick pick_keyframes(const Motion& captured, const BodyModel& model,
                             std::optional<int> count) {
   const int n = static_cast<int>(captured.keyframes.size());
   if (n < 2) throw std::invalid_argument("a captured motion needs at least 2 frames");
-  if (count && (*count < 2 || *count > n))
-    throw std::invalid_argument("the keyframe count must be 2 to " + std::to_string(n) +
-                                " (the captured flight's frames), found " + std::to_string(*count));
+  const int most = std::min(n, kMaxPickedKeyframes);
+  if (count && (*count < 2 || *count > most))
+    throw std::invalid_argument("the keyframe count must be 2 to " + std::to_string(most) +
+                                (most == n ? " (the captured flight's frames)" : " (or all)") +
+                                ", found " + std::to_string(*count));
   if (static_cast<int>(captured.keyframes.front().rotations.size()) != model.size())
     throw std::invalid_argument("pick_keyframes: the motion does not fit the model");
   const double tolerance = captured.tolerances.quaternion;
@@ -53,7 +55,7 @@ KeyframePick pick_keyframes(const Motion& captured, const BodyModel& model,
   for (;;) {
     const bool done =
         count ? static_cast<int>(frames.size()) >= *count : pick.max_quaternion_error <= tolerance;
-    if (done || static_cast<int>(frames.size()) == n) break;
+    if (done || static_cast<int>(frames.size()) == most) break;
     int next = pick.worst_frame;
     if (std::find(frames.begin(), frames.end(), next) != frames.end()) {
       // The worst frame is already a keyframe (the fit cannot meet it exactly): take the
@@ -81,7 +83,7 @@ KeyframePick pick_keyframes(const Motion& captured, const BodyModel& model,
         "flight, the frame the interpolation misses most is added) such that the interpolation "
         "through them reproduces every captured frame's joint rotations within the keyframe "
         "tolerance (quaternion distance <= " +
-        std::to_string(tolerance) + ")";
+        std::to_string(tolerance) + "), at most " + std::to_string(kMaxPickedKeyframes);
   }
   return pick;
 }

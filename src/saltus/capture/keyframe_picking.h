@@ -22,10 +22,17 @@ struct KeyframePick {
   std::string rule;     ///< the rule used, in words, for result.json
 };
 
+/// The most keyframes pick_keyframes picks. Each step refits the curves through every picked
+/// frame, so picking K costs about K² fits: a flight that no few keyframes reproduce (500
+/// frames of a jerky clip took 81 s) stops here; every frame is `--keyframes all`.
+inline constexpr int kMaxPickedKeyframes = 100;
+
 /// Greedy refinement: start from the first and last frame; while the interpolation through the
 /// picked frames misses some captured frame's joint rotation by more than the motion's
 /// quaternion tolerance ε2 (or, when `count` is given, until there are `count` keyframes), add
-/// the frame it misses most. `count` must be in [2, number of frames] (std::invalid_argument).
+/// the frame it misses most, up to kMaxPickedKeyframes (the pick's max_quaternion_error then
+/// says how far the tolerance is missed). `count` must be in [2, min(number of frames,
+/// kMaxPickedKeyframes)] (std::invalid_argument).
 KeyframePick pick_keyframes(const Motion& captured, const BodyModel& model,
                             std::optional<int> count = std::nullopt);
 

@@ -24,8 +24,8 @@ const std::map<std::string, std::string>& limb_ends() {
 int require_joint(const MocapClip& clip, const std::string& key, const std::string& name) {
   const int j = clip.joint_index(name);
   if (j < 0)
-    throw std::invalid_argument("the mapping's joint \"" + name + "\" (for " + key +
-                                ") is not in the file");
+    throw MappingError(key,
+                       "the mapping's joint \"" + name + "\" (for " + key + ") is not in the file");
   return j;
 }
 
@@ -194,7 +194,7 @@ Retargeting plan_retargeting(const MocapClip& clip, const BodyModel& model,
   for (const char* key : {"pelvis", "upper_arm_l", "upper_arm_r", "forearm_l", "forearm_r",
                           "thigh_l", "thigh_r", "shank_l", "shank_r"})
     if (joints[key].size() != 1)
-      throw std::invalid_argument(std::string("the mapping must give one source joint for ") + key);
+      throw MappingError(key, std::string("the mapping must give one source joint for ") + key);
   plan.pelvis_joint = joints["pelvis"][0];
   plan.hip_joints = {joints["thigh_l"][0], joints["thigh_r"][0]};
 
@@ -314,17 +314,18 @@ Retargeting plan_retargeting(const MocapClip& clip, const BodyModel& model,
     Eigen::Vector3d d;
     if (!end.empty()) {
       if (!is_descendant(clip, end.front(), j))
-        throw std::invalid_argument("the mapping's " + limb_ends().at(name) + " joint \"" +
-                                    clip.joints[end.front()].name + "\" is not below the " + name +
-                                    " joint \"" + clip.joints[j].name + "\"");
+        throw MappingError(limb_ends().at(name), "the mapping's " + limb_ends().at(name) +
+                                                     " joint \"" + clip.joints[end.front()].name +
+                                                     "\" is not below the " + name + " joint \"" +
+                                                     clip.joints[j].name + "\"");
       d = rest.world_position[end.front()] - rest.world_position[j];
       drive.rest_direction_to = clip.joints[end.front()].name;
     } else {
       std::tie(d, drive.rest_direction_to) = longest_bone(clip, j);
     }
     if (d.norm() < 1e-9)
-      throw std::invalid_argument("the " + name + " bone (joint \"" + clip.joints[j].name +
-                                  "\") has no length in the rest pose");
+      throw MappingError(name, "the " + name + " bone (joint \"" + clip.joints[j].name +
+                                   "\") has no length in the rest pose");
     drive.along_bone = true;
     drive.rest_direction = d.normalized();
     drive.rest_correction =

@@ -13,6 +13,7 @@
 
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,18 @@ namespace saltus {
 
 /// The keys a mapping may give: the 13 model segments and the two wrist landmarks.
 const std::vector<std::string>& mapping_keys();
+
+/// A mapping that does not fit the skeleton, caused by the entry for `key` (a mapping key such as
+/// "forearm_l"): a front end names the mapping file's /joints/<key> when the key came from it.
+class MappingError : public std::invalid_argument {
+ public:
+  MappingError(std::string key, const std::string& problem)
+      : std::invalid_argument(problem), key_(std::move(key)) {}
+  const std::string& key() const { return key_; }
+
+ private:
+  std::string key_;
+};
 
 struct SkeletonMapping {
   /// "Saltus", "DeepMimic", "Mixamo", "MotionBuilder", "CMU", "HumanIK", "Rigify" or

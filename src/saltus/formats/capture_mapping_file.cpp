@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "saltus/base/json_reader.h"
+#include "saltus/base/text_format.h"
 
 namespace saltus {
 
@@ -25,11 +26,12 @@ double parse_unit(const JsonNode& node) {
     if (unit == "cm") return 0.01;
     if (unit == "mm") return 0.001;
     if (unit == "inch" || unit == "in") return 0.0254;
-    node.fail("unknown unit \"" + unit + "\" (expected m, cm, mm, inch or metres per unit)");
+    node.fail("unknown unit \"" + message_text(unit) +
+              "\" (expected m, cm, mm, inch or metres per unit)");
   }
-  const double metres = node.as_double();
-  if (!(metres > 0)) node.fail("metres per unit must be > 0");
-  return metres;
+  // Metres per unit: from a tenth of a millimetre to 10 m (a micrometre or a kilometre unit
+  // makes a person's skeleton a speck or a mountain, and 1e308 overflowed the positions).
+  return node.as_double_within(kMinMetresPerUnit, kMaxMetresPerUnit, "metres per unit");
 }
 
 Eigen::Vector3d parse_up(const JsonNode& node) {
@@ -48,7 +50,7 @@ Eigen::Vector3d parse_up(const JsonNode& node) {
   else if (axis == "z" || axis == "Z")
     up.z() = sign;
   else
-    node.fail("unknown up axis \"" + text + "\" (expected x, y, z, -x, -y or -z)");
+    node.fail("unknown up axis \"" + message_text(text) + "\" (expected x, y, z, -x, -y or -z)");
   return up;
 }
 
@@ -79,10 +81,11 @@ SkeletonMapping parse_capture_mapping(const nlohmann::json& document, const std:
   const JsonNode format = root.at("format");
   if (format.as_string() != kMappingFormat)
     format.fail("expected format \"" + std::string(kMappingFormat) + "\", found \"" +
-                format.as_string() + "\"");
+                message_text(format.as_string()) + "\"");
   for (const auto& [key, child] : root.members())
     if (key != "format" && key != "unit" && key != "up" && key != "joints" && key != "comment")
-      child.fail("unknown field \"" + key + "\" (expected format, unit, up, joints, comment)");
+      child.fail("unknown field \"" + message_text(key) +
+                 "\" (expected format, unit, up, joints, comment)");
   SkeletonMapping mapping;
   mapping.convention = "mapping file";
   if (auto unit = root.find("unit")) mapping.metres_per_unit = parse_unit(*unit);
@@ -92,7 +95,7 @@ SkeletonMapping parse_capture_mapping(const nlohmann::json& document, const std:
   for (const auto& [key, child] : joints.members()) {
     const auto& keys = mapping_keys();
     if (std::find(keys.begin(), keys.end(), key) == keys.end())
-      child.fail("unknown key \"" + key + "\" (expected " + key_list() + ")");
+      child.fail("unknown key \"" + message_text(key) + "\" (expected " + key_list() + ")");
     std::vector<std::string> names = parse_joint_names(child);
     const bool single = key != "abdomen" && key != "thorax";
     if (single && names.size() > 1)
@@ -117,7 +120,8 @@ void check_capture_mapping(const SkeletonMapping& mapping, const MocapClip& clip
       if (clip.joint_index(names[i]) >= 0) continue;
       std::string path = "/joints/" + json_pointer_escape(key);
       if (names.size() > 1) path += "/" + std::to_string(i);
-      throw InputError(mapping_file, path, "joint \"" + names[i] + "\" is not in " + capture_file);
+      throw InputError(mapping_file, path,
+                       "joint \"" + message_text(names[i]) + "\" is not in " + capture_file);
     }
   }
 }

@@ -27,6 +27,10 @@
 
 namespace saltus {
 
+/// The range of a numeric "unit" (metres per unit): 0.1 mm to 10 m.
+inline constexpr double kMinMetresPerUnit = 1e-4;
+inline constexpr double kMaxMetresPerUnit = 10.0;
+
 /// Parses a mapping document; `file` names it in errors (InputError with the JSON path).
 SkeletonMapping parse_capture_mapping(const nlohmann::json& document, const std::string& file);
 

@@ -42,9 +42,10 @@ bool finite(const Vector& v) {
 
 }  // namespace
 
-void require_finite(const nlohmann::json& result, const std::string& input) {
+void require_finite(const nlohmann::json& result, const std::string& input,
+                    const std::string& document) {
   std::string where;
-  if (find_non_finite(result, "", where)) fail(input, "result.json " + where);
+  if (find_non_finite(result, "", where)) fail(input, document + " " + where);
 }
 
 void require_finite(const std::vector<SampleRecord>& samples, const std::string& input,

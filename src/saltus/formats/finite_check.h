@@ -13,8 +13,9 @@
 namespace saltus {
 
 /// Throws InputError naming `input` (the motion file the result came from) and the JSON pointer
-/// of the first non-finite number in `result`.
-void require_finite(const nlohmann::json& result, const std::string& input);
+/// of the first non-finite number in `result`, a document written as `document`.
+void require_finite(const nlohmann::json& result, const std::string& input,
+                    const std::string& document = "result.json");
 
 /// The same for the samples of a trajectory CSV: names the column and the time.
 void require_finite(const std::vector<SampleRecord>& samples, const std::string& input,

@@ -47,6 +47,11 @@ inline constexpr double kMinKeyframeGap = 1e-3;
 /// s: the shortest gap between interior knots of a stored spline (K = 50 sub-intervals of the
 /// shortest keyframe gap).
 inline constexpr double kMinKnotGap = kMinKeyframeGap / 50;
+/// s per frame of a capture (its "Frame Time", or `import --frame-time`): every captured flight
+/// frame becomes a keyframe, so the shortest is the keyframe gap (1 kHz); the longest, 1 s,
+/// is far slower than any capture (24-1000 Hz), which 100 or 3600 (minutes per frame) are not.
+inline constexpr double kMinCaptureFrameTime = kMinKeyframeGap;
+inline constexpr double kMaxCaptureFrameTime = 1.0;
 /// m: |take-off CoM|, |keyframe root position| per coordinate.
 inline constexpr double kMaxPosition = 1e4;
 /// m: |root translation control point| per coordinate (a 60 s fall is 18 km).

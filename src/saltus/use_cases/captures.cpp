@@ -9,13 +9,17 @@
 
 #include "saltus/base/constants.h"
 #include "saltus/base/input_error.h"
+#include "saltus/base/json_reader.h"
 #include "saltus/base/resources.h"
+#include "saltus/base/text_format.h"
 #include "saltus/capture/model_clip.h"
 #include "saltus/formats/bvh_file.h"
 #include "saltus/formats/capture_mapping_file.h"
+#include "saltus/formats/finite_check.h"
 #include "saltus/formats/model_file.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/formats/output_folder.h"
+#include "saltus/formats/plausible_ranges.h"
 #include "saltus/formats/result_json.h"
 #include "saltus/formats/trajectory_csv.h"
 #include "saltus/motion/interpolate.h"
@@ -87,6 +91,64 @@ Motion named_motion(Motion motion, const std::string& model_field) {
   return motion;
 }
 
+/// The frame time used must be a capture's (plausible_ranges.h): named at its source, the
+/// --frame-time flag or the file's "Frame Time:" line. 1e-300 made every frame coincide (NaN in
+/// trajectory.csv), 1e300 overflowed the take-off state, 3600 took 45 s to import.
+void check_frame_time(const std::optional<double>& flag, double stated, const std::string& path,
+                      const BvhSourceLines& lines) {
+  const double used = flag.value_or(stated);
+  if (used >= plausible::kMinCaptureFrameTime && used <= plausible::kMaxCaptureFrameTime) return;
+  const std::string problem = message_number(used) + " s per frame is outside [" +
+                              message_number(plausible::kMinCaptureFrameTime) + ", " +
+                              message_number(plausible::kMaxCaptureFrameTime) +
+                              "] s (captures run at 1 to 1000 frames per second)";
+  if (flag) throw InputError("--frame-time", "", problem);
+  throw InputError(path, "line " + std::to_string(lines.frame_time),
+                   "Frame Time: " + problem + "; give the right one with --frame-time");
+}
+
+/// What in the capture a field of an imported motion comes from, for a message when the motion
+/// reader refuses that field.
+std::string capture_source_of(const std::string& pointer, const BvhSourceLines& lines,
+                              bool frame_time_flag) {
+  const std::string frame_time = frame_time_flag
+                                     ? "--frame-time"
+                                     : "Frame Time (line " + std::to_string(lines.frame_time) + ")";
+  const auto has = [&](const char* part) { return pointer.find(part) != std::string::npos; };
+  if (has("/root_position") || has("/com_position"))
+    return "the root's position channels and OFFSETs in the capture's unit";
+  if (has("/com_velocity"))
+    return "the root's position channels and OFFSETs in the capture's unit, over the " + frame_time;
+  if (has("/angular_momentum")) return "the joint rotations over the " + frame_time;
+  if (has("/time")) return "the " + frame_time + " and the frame count";
+  if (has("/rotations")) return "the joint rotation channels";
+  return "the capture";
+}
+
+/// Saltus writes only what it reads back: the two motions of an import go through the motion
+/// reader (a take-off CoM 343 km away or at 1357 m/s was written, then refused on reading).
+/// A refusal names the capture and what in it caused the value.
+void check_capture_readable(const CaptureFile& capture, const BvhSourceLines& lines,
+                            bool frame_time_flag) {
+  const std::pair<const char*, nlohmann::json> motions[] = {
+      {"capture.motion.json", captured_motion_json(capture, "model.json")},
+      {"keyframes.motion.json", keyframes_motion_json(capture, "model.json")}};
+  for (const auto& [name, document] : motions) {
+    require_finite(document, capture.path, name);
+    try {
+      parse_motion(document, name, capture.model);
+    } catch (const InputError& e) {
+      throw InputError(
+          capture.path, "",
+          "the imported flight would be a motion Saltus refuses to read (" + std::string(name) +
+              ": " + e.json_path() + ": " + e.problem() + "); it comes from " +
+              capture_source_of(e.json_path(), lines, frame_time_flag) + "; nothing was written");
+    }
+  }
+  require_finite(capture_result_json(capture), capture.path);
+  require_finite(capture.import.samples, capture.path, "trajectory.csv");
+}
+
 }  // namespace
 
 CaptureFile import_capture_file(const std::string& path, const CaptureFileOptions& options) {
@@ -94,23 +156,43 @@ CaptureFile import_capture_file(const std::string& path, const CaptureFileOption
   capture.path = path;
   capture.model_reference = options.model.empty() ? kDefaultCaptureModel : options.model;
   capture.model = load_body_model(resolve_model(capture.model_reference, path));
-  capture.clip = load_bvh_file(path);
+  BvhSourceLines lines;
+  capture.clip = load_bvh_file(path, &lines);
+  check_frame_time(options.import.frame_time, capture.clip.frame_time, path, lines);
   SkeletonMapping mapping;
+  SkeletonMapping given;
   try {
     if (options.mapping.empty()) {
       mapping = guess_skeleton_mapping(capture.clip);
     } else {
       capture.mapping_path = options.mapping;
-      const SkeletonMapping given = load_capture_mapping(options.mapping);
+      given = load_capture_mapping(options.mapping);
       check_capture_mapping(given, capture.clip, options.mapping, path);
       mapping = merge_skeleton_mapping(capture.clip, given);
     }
     CaptureImportOptions import_options = options.import;
     if (import_options.name.empty()) import_options.name = fs::path(path).stem().string();
+    if (!import_options.max_flight_time) import_options.max_flight_time = plausible::kMaxFlightTime;
     capture.import = import_capture(capture.clip, capture.model, mapping, import_options);
+  } catch (const MappingError& e) {
+    // A mapping key the mapping file gave is named there (/joints/<key>); one guessed by name,
+    // in the capture.
+    if (!options.mapping.empty() && given.joints.count(e.key()))
+      throw InputError(options.mapping, "/joints/" + json_pointer_escape(e.key()),
+                       printable(e.what()) + " (in " + path + ")");
+    throw InputError(path, "", printable(e.what()));
   } catch (const std::invalid_argument& e) {
-    throw InputError(path, "", e.what());
+    const std::string what = e.what();
+    // A curve fit refusing its times ("fit_quaternion_spline: the knots must increase...", seen
+    // with a frame time of 1e-300 before the range check) is the frames' times, not a bug.
+    if (what.rfind("fit_", 0) == 0)
+      throw InputError(path, "",
+                       "the captured frames cannot be interpolated: their times (frames " +
+                           message_number(capture.clip.frame_time) +
+                           " s apart as stated, or --frame-time) do not increase");
+    throw InputError(path, "", printable(what));
   }
+  check_capture_readable(capture, lines, options.import.frame_time.has_value());
   return capture;
 }
 

@@ -31,5 +31,25 @@ TEST(MessageNumber, GivesSixSignificantDigitsLikePercentG) {
   EXPECT_EQ(message_number(1.4), "1.4");
 }
 
+TEST(MessageText, KeepsAMessageOnOneLineAndShort) {
+  EXPECT_EQ(message_text("Left Up Leg"), "Left Up Leg");
+  EXPECT_EQ(message_text("caf\xC3\xA9"), "caf\xC3\xA9");  // UTF-8 stays as it is
+  // A newline would split the message, an ESC sequence would recolour the terminal.
+  EXPECT_EQ(message_text("a\nb\x1B[31mred\x7F"), "a\\x0Ab\\x1B[31mred\\x7F");
+  EXPECT_EQ(message_text("\xFF"), "\\xFF");
+  const std::string long_name(5000, 'x');
+  EXPECT_EQ(message_text(long_name), std::string(80, 'x') + "... (5000 bytes)");
+  EXPECT_EQ(message_text(long_name, 10), "xxxxxxxxxx... (5000 bytes)");
+  // The cut falls between characters and escapes, never inside one.
+  EXPECT_EQ(message_text("ab\xC3\xA9", 3), "ab... (4 bytes)");
+  EXPECT_EQ(message_text("ab\n", 4), "ab... (3 bytes)");
+  for (std::size_t limit = 0; limit < 29; ++limit) {  // 29 bytes escaped
+    const std::string out = message_text("\x01\xC3\xA9\n\x1B caf\xC3\xA9 \xFF\x02", limit);
+    EXPECT_EQ(out.find('\n'), std::string::npos);
+    EXPECT_EQ(out.find('\x1B'), std::string::npos);
+    EXPECT_LE(out.find("..."), limit) << out;
+  }
+}
+
 }  // namespace
 }  // namespace saltus

@@ -73,5 +73,29 @@ TEST(KeyframePicking, AGivenCount) {
   EXPECT_LT(keyframe_errors_of(captured, every).max_quaternion_error, 1e-9);  // through all
 }
 
+TEST(KeyframePicking, StopsAtTheMostKeyframesOnACaptureNoFewReproduce) {
+  // Issue 28: every step refits through every picked frame, so a jerky 500-frame flight took
+  // 81 s to pick 500 keyframes (2000 frames: over 5 minutes). A zigzag no interpolation follows
+  // between its frames stops at kMaxPickedKeyframes, saying by how much it still misses.
+  // One segment: picking costs the same per segment, and the test stays well under a second.
+  BodyModel model = test::bundled_model();
+  Motion zigzag = sampled_tuck(model);
+  model.segments.resize(1);
+  zigzag.keyframes.clear();
+  for (int f = 0; f < 120; ++f) {
+    Keyframe k;
+    k.time = f / 30.0;
+    const Eigen::Quaterniond q(Eigen::AngleAxisd(f % 2 ? 0.6 : -0.6, Eigen::Vector3d::UnitX()));
+    k.rotations.assign(model.size(), q);
+    zigzag.keyframes.push_back(k);
+  }
+  const KeyframePick pick = pick_keyframes(zigzag, model);
+  EXPECT_EQ(pick.frames.size(), static_cast<std::size_t>(kMaxPickedKeyframes));
+  EXPECT_GT(pick.max_quaternion_error, zigzag.tolerances.quaternion);
+  EXPECT_NEAR(pick.max_quaternion_error,
+              keyframe_errors_of(zigzag, pick.frames).max_quaternion_error, 1e-12);
+  EXPECT_THROW(pick_keyframes(zigzag, model, kMaxPickedKeyframes + 1), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace saltus

@@ -70,6 +70,23 @@ TEST(CaptureMappingFile, ErrorsNameTheJsonPath) {
   EXPECT_EQ(error_of(d).rfind("map.json: /units: unknown field \"units\"", 0), 0u);
 }
 
+TEST(CaptureMappingFile, UnitsArePhysicalAndUserTextIsEscaped) {
+  // Issue 28: "unit": 1e308 wrote null root positions.
+  nlohmann::json d = valid();
+  d["unit"] = 1e308;
+  EXPECT_EQ(error_of(d),
+            "map.json: /unit: 1e+308 metres per unit is outside the plausible range [0.0001, 10] "
+            "metres per unit");
+  d["unit"] = 0;
+  EXPECT_NE(error_of(d).find("map.json: /unit: 0 metres per unit is outside"), std::string::npos);
+  d["unit"] = 0.0254;
+  EXPECT_DOUBLE_EQ(*parse_capture_mapping(d, "map.json").metres_per_unit, 0.0254);
+  d = valid();
+  d["up"] = "z\n\x1B[2J";
+  EXPECT_EQ(error_of(d),
+            "map.json: /up: unknown up axis \"z\\x0A\\x1B[2J\" (expected x, y, z, -x, -y or -z)");
+}
+
 TEST(CaptureMappingFile, JointsMustBeInTheCapture) {
   const SkeletonMapping m = parse_capture_mapping(valid(), "map.json");
   MocapClip clip;
