@@ -155,6 +155,12 @@ TEST(CaptureCli, ExportWritesOnlyNewFiles) {
   EXPECT_EQ(read_text(dir / "m1.bvh"), written);
   EXPECT_EQ(test::names_in(dir.path()),
             (std::set<std::string>{"link.bvh", "m1.bvh", "thesis.tex"}));
+  // No more frames than the BVH reader takes: --fps 1e6 wrote 836 MB.
+  const auto dense =
+      run_cli("export " + m1_path() + " --format bvh --fps 1e6 --out " + (dir / "d.bvh"));
+  EXPECT_EQ(dense.status, 2) << dense.output;
+  EXPECT_NE(dense.output.find("--fps"), std::string::npos) << dense.output;
+  EXPECT_FALSE(fs::exists(dir / "d.bvh"));
   // A folder where the file's folder should be: the system refuses, exit 4.
   EXPECT_EQ(
       run_cli("export " + m1_path() + " --format bvh --out " + (dir / "thesis.tex/m1.bvh")).status,

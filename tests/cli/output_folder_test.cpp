@@ -214,7 +214,7 @@ TEST(OutputFolder, WithoutExchangeAKillBetweenTheTwoRenamesIsRepairedByTheNextRu
 
 TEST(OutputFolder, InterruptsRemoveTheTemporaryFolder) {
   // Issue 16 item 3: Ctrl+C during `saltus paper` left a hidden .REPORT.tmp-… of 2.4 MB. A
-  // study stops with 128 + signal and keeps only its visible, documented REPORT.partial (the
+  // study stops by the signal itself and keeps only its visible, documented REPORT.partial (the
   // finished cases, for --resume); nothing hidden stays behind.
   for (const int signal_number : {SIGINT, SIGTERM}) {
     TempDir dir;
@@ -224,7 +224,7 @@ TEST(OutputFolder, InterruptsRemoveTheTemporaryFolder) {
     ASSERT_EQ(kill(pid, signal_number), 0);
     int status = 0;
     ASSERT_EQ(waitpid(pid, &status, 0), pid);
-    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 128 + signal_number) << status;
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == signal_number) << status;
     EXPECT_EQ(names_in(dir.path()), std::set<std::string>{"report.partial"})
         << strsignal(signal_number);
   }

@@ -390,6 +390,15 @@ double default_export_fps(const Motion& motion) {
 }
 
 MocapClip export_motion_bvh(const MotionFile& motion, const std::string& out_path, double fps) {
+  // What Saltus writes it reads back: no more frames than the BVH reader takes (--fps 1e6 wrote
+  // 836 MB using 3.6 GB; 1e9 ended in bad_alloc).
+  const double frames = std::floor(motion.motion.flight_time() * fps) + 1.0;
+  if (!(fps > 0) || !(frames <= kMaxBvhFrames))
+    throw InputError("--fps", "",
+                     message_number(fps) + " frames per second over " +
+                         message_number(motion.motion.flight_time()) + " s would be more than " +
+                         std::to_string(kMaxBvhFrames) +
+                         " frames, the most a BVH file Saltus reads may hold");
   const Trajectory<double> trajectory = motion_trajectory(motion.motion, motion.model);
   const MocapClip clip = motion_clip(motion.model, trajectory, fps);
   save_bvh_file(out_path, clip);
