@@ -167,6 +167,12 @@ TEST(CliStudyAthletes, TheTableIsWhatTheVerbsGiveOnEachAthlete) {
                                    " " + senior + " --out " + out + " --resume");
   EXPECT_EQ(again.status, 0) << again.output;
   EXPECT_NE(again.output.find("nothing to run"), std::string::npos) << again.output;
+  // Another study into the same folder replaces it (Saltus wrote it).
+  const auto other = test::run_cli("study athletes " + test::m1_path() + " --models " + junior +
+                                   " --out " + out + " -q --takeoff keep-momentum");
+  EXPECT_EQ(other.status, 0) << other.output;
+  EXPECT_EQ(test::read_json(out + "/result.json")["cases"].size(), 2u);
+  EXPECT_EQ(test::read_json(out + "/result.json")["takeoff"], "keep-momentum");
 }
 
 TEST(CliStudyAthletes, BadAthletesExitWithTwoAndWriteNothing) {
