@@ -22,6 +22,7 @@
 #include "saltus/formats/study_folder.h"
 #include "saltus/formats/study_progress.h"
 #include "saltus/studies/mass_study.h"
+#include "saltus/use_cases/athletes_run.h"
 #include "saltus/use_cases/captures.h"
 #include "saltus/use_cases/convergence_run.h"
 #include "saltus/use_cases/paper_report_run.h"
@@ -147,6 +148,7 @@ struct StudyVerbs::State {
 
   CLI::App* convergence = nullptr;
   CLI::App* mass = nullptr;
+  CLI::App* athletes = nullptr;
   CLI::App* merge = nullptr;
   CLI::App* paper = nullptr;
 
@@ -169,6 +171,14 @@ struct StudyVerbs::State {
     std::vector<std::string> load_segments{"thigh_r", "upper_arm_r"};
   } mass_args;
 
+  struct Athletes {
+    StudyArgs common;
+    RunArgs run;
+    std::string motion;
+    std::vector<std::string> models;
+    std::string takeoff = "same-spin";
+  } athletes_args;
+
   struct Merge {
     std::vector<std::string> inputs;
     std::string out_dir;
@@ -187,6 +197,7 @@ struct StudyVerbs::State {
               const std::function<void(const StudyRunResult&)>& done) const;
   int run_convergence() const;
   int run_mass() const;
+  int run_athletes() const;
   int run_merge() const;
   int run_paper() const;
 };
@@ -197,8 +208,8 @@ StudyVerbs::StudyVerbs(CLI::App& app, int argc, char** argv) : state_(std::make_
   s.argv = argv;
   CLI::App* study = app.add_subcommand(
       "study",
-      "The paper's experiments: the convergence study (§3.4) and the mass study (§6.1); "
-      "merging a study's shards");
+      "The paper's experiments: the convergence study (§3.4) and the mass study (§6.1); one "
+      "motion on several athletes; merging a study's shards");
   study->require_subcommand(1);
 
   auto& c = s.convergence_args;
@@ -253,6 +264,34 @@ StudyVerbs::StudyVerbs(CLI::App& app, int argc, char** argv) : state_(std::make_
       ->delimiter(',')
       ->capture_default_str();
 
+  auto& t = s.athletes_args;
+  s.athletes = study->add_subcommand(
+      "athletes",
+      "One motion on several athletes (the motion's own model first): root force before and "
+      "after optimisation, the free flight's landing error, somersaults and twists, peak joint "
+      "loads, mass, height and take-off L; writes athletes.md and athletes.csv");
+  s.athletes->add_option("MOTION", t.motion, "motion file (*.motion.json) or capture (*.bvh)")
+      ->required();
+  s.athletes
+      ->add_option("--models", t.models,
+                   "the athletes: model files (*.model.json, `saltus model new|yeadon|scale`) or "
+                   "bundled model names")
+      ->required();
+  s.athletes
+      ->add_option("--out", t.common.out_dir,
+                   "output folder (replaced if it holds an earlier result)")
+      ->required();
+  // Every optimiser option, as `saltus optimize` takes them: an athlete's row is what `saltus
+  // optimize MOTION --model A` would give.
+  t.common.options.add(s.athletes, all_option_names());
+  s.athletes->add_flag("--quiet,-q", t.common.quiet, "print nothing on success");
+  s.athletes
+      ->add_option("--takeoff", t.takeoff,
+                   "how the take-off carries over to each athlete: same-spin (the same whole-body "
+                   "angular velocity, L follows the inertia) or keep-momentum (the same L)")
+      ->capture_default_str();
+  add_run_options(s.athletes, t.run);
+
   auto& g = s.merge_args;
   s.merge = study->add_subcommand(
       "merge",
@@ -284,6 +323,7 @@ std::optional<int> StudyVerbs::run() const {
   const State& s = *state_;
   if (s.convergence->parsed()) return s.run_convergence();
   if (s.mass->parsed()) return s.run_mass();
+  if (s.athletes->parsed()) return s.run_athletes();
   if (s.merge->parsed()) return s.run_merge();
   if (s.paper->parsed()) return s.run_paper();
   return std::nullopt;
@@ -417,6 +457,21 @@ int StudyVerbs::State::run_mass() const {
         file.motion.name.c_str(), mass_study_markdown(study).c_str(),
         absolute(a.common.out_dir).c_str());
   return 0;
+}
+
+int StudyVerbs::State::run_athletes() const {
+  const Athletes& a = athletes_args;
+  const OptimizeOptions options = a.common.options.values().optimize_options();
+  const StudyJob job = athletes_study_job(a.motion, a.models, a.takeoff, options);
+  return run_job(job, a.common, a.run, [&](const StudyRunResult&) {
+    const std::string out = absolute(a.common.out_dir);
+    std::ifstream md(out + "/athletes.md");
+    const std::string text((std::istreambuf_iterator<char>(md)), std::istreambuf_iterator<char>());
+    std::printf(
+        "saltus study athletes:\n\n%s\n  wrote %s/{result.json, athletes.csv, athletes.md, "
+        "study.json, cases/}\n",
+        text.c_str(), out.c_str());
+  });
 }
 
 int StudyVerbs::State::run_merge() const {

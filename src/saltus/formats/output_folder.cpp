@@ -67,6 +67,14 @@ const std::vector<ResultKind>& result_kinds() {
        {},
        {},
        false},
+      {"study athletes",
+       "saltus-study/1",
+       "study",
+       {"athletes"},
+       {"result.json", "athletes.csv", "athletes.md", "study.json"},
+       {},
+       {"cases"},
+       false},
       // saltus paper: report.md, one result folder per run (M1/, mass/, convergence/, ...) and
       // the app's figures (saltus-gui --export-figures DIR/figures ...).
       {"paper",

@@ -22,6 +22,8 @@ const char* kind_name(CaseKind kind) {
       return "optimization";
     case CaseKind::kMassStudy:
       return "mass_study";
+    case CaseKind::kAthlete:
+      return "athlete";
   }
   return "";
 }
@@ -143,6 +145,65 @@ StudyOutcome parse_outcome(const JsonNode& node) {
   return o;
 }
 
+nlohmann::json athlete_to_json(const AthleteOutcome& o) {
+  return {{"athlete", o.athlete},
+          {"takeoff", o.takeoff},
+          {"mass_kg", number(o.mass_kg)},
+          {"height_m", number(o.height_m)},
+          {"takeoff_angular_momentum",
+           numbers({o.takeoff_angular_momentum.x(), o.takeoff_angular_momentum.y(),
+                    o.takeoff_angular_momentum.z()})},
+          {"status", o.status},
+          {"solved", o.solved},
+          {"iterations", o.iterations},
+          {"seconds", number(o.seconds)},
+          {"avg_force_before_N", number(o.avg_root_force_before_N)},
+          {"avg_force_after_N", number(o.avg_root_force_after_N)},
+          {"max_force_after_N", number(o.max_root_force_after_N)},
+          {"landing_error_before_deg", number(o.landing_error_before_deg)},
+          {"landing_error_after_deg", number(o.landing_error_after_deg)},
+          {"somersaults_before", number(o.somersaults_before)},
+          {"twists_before", number(o.twists_before)},
+          {"somersaults_after", number(o.somersaults_after)},
+          {"twists_after", number(o.twists_after)},
+          {"peak_moment_joint", o.peak_moment_joint},
+          {"peak_moment_Nm", number(o.peak_moment_Nm)},
+          {"peak_force_joint", o.peak_force_joint},
+          {"peak_force_N", number(o.peak_force_N)},
+          {"peak_force_pct_bw", number(o.peak_force_pct_bw)}};
+}
+
+AthleteOutcome parse_athlete(const JsonNode& node) {
+  node.require_object();
+  AthleteOutcome o;
+  o.athlete = node.at("athlete").as_string();
+  o.takeoff = node.at("takeoff").as_string();
+  o.mass_kg = read_number(node, "mass_kg");
+  o.height_m = read_number(node, "height_m");
+  const std::vector<double> l = read_numbers(node, "takeoff_angular_momentum");
+  if (l.size() != 3) node.at("takeoff_angular_momentum").fail("expected 3 numbers");
+  o.takeoff_angular_momentum = Eigen::Vector3d(l[0], l[1], l[2]);
+  o.status = node.at("status").as_string();
+  o.solved = read_bool(node, "solved");
+  o.iterations = node.at("iterations").as_int();
+  o.seconds = read_number(node, "seconds");
+  o.avg_root_force_before_N = read_number(node, "avg_force_before_N");
+  o.avg_root_force_after_N = read_number(node, "avg_force_after_N");
+  o.max_root_force_after_N = read_number(node, "max_force_after_N");
+  o.landing_error_before_deg = read_number(node, "landing_error_before_deg");
+  o.landing_error_after_deg = read_number(node, "landing_error_after_deg");
+  o.somersaults_before = read_number(node, "somersaults_before");
+  o.twists_before = read_number(node, "twists_before");
+  o.somersaults_after = read_number(node, "somersaults_after");
+  o.twists_after = read_number(node, "twists_after");
+  o.peak_moment_joint = node.at("peak_moment_joint").as_string();
+  o.peak_moment_Nm = read_number(node, "peak_moment_Nm");
+  o.peak_force_joint = node.at("peak_force_joint").as_string();
+  o.peak_force_N = read_number(node, "peak_force_N");
+  o.peak_force_pct_bw = read_number(node, "peak_force_pct_bw");
+  return o;
+}
+
 }  // namespace
 
 bool CaseRecord::solved() const {
@@ -154,6 +215,8 @@ bool CaseRecord::solved() const {
       return run.solved;
     case CaseKind::kMassStudy:
       return true;
+    case CaseKind::kAthlete:
+      return athlete.solved;
   }
   return false;
 }
@@ -178,6 +241,9 @@ nlohmann::json case_record_to_json(const CaseRecord& record) {
     case CaseKind::kMassStudy:
       j["mass_markdown"] = record.mass_markdown;
       break;
+    case CaseKind::kAthlete:
+      j["athlete"] = athlete_to_json(record.athlete);
+      break;
   }
   return j;
 }
@@ -198,8 +264,11 @@ CaseRecord parse_case_record(const nlohmann::json& document, const std::string& 
     r.kind = CaseKind::kOptimization;
   else if (kind == kind_name(CaseKind::kMassStudy))
     r.kind = CaseKind::kMassStudy;
+  else if (kind == kind_name(CaseKind::kAthlete))
+    r.kind = CaseKind::kAthlete;
   else
-    root.at("kind").fail("expected \"convergence\", \"optimization\" or \"mass_study\"");
+    root.at("kind").fail(
+        "expected \"convergence\", \"optimization\", \"mass_study\" or \"athlete\"");
   r.role = root.at("role").as_string();
   r.motion = root.at("motion").as_string();
   r.folder = read_optional_string(root, "folder");
@@ -215,6 +284,9 @@ CaseRecord parse_case_record(const nlohmann::json& document, const std::string& 
       break;
     case CaseKind::kMassStudy:
       r.mass_markdown = root.at("mass_markdown").as_string();
+      break;
+    case CaseKind::kAthlete:
+      r.athlete = parse_athlete(root.at("athlete"));
       break;
   }
   return r;

@@ -7,13 +7,14 @@
 /// number is written as null and read back as NaN).
 ///
 ///   {"format": "saltus-study-case/1", "index": 42, "case": "M3 strict ε=50, mass …",
-///    "kind": "convergence" | "optimization" | "mass_study", "role": "convergence",
+///    "kind": "convergence" | "optimization" | "mass_study" | "athlete", "role": "convergence",
 ///    "motion": "M3", "folder": null | "M1", "failure": null | "killed by signal 11 (…)",
-///    "convergence": {...} | "run": {...} | "mass_markdown": "..."}
+///    "convergence": {...} | "run": {...} | "mass_markdown": "..." | "athlete": {...}}
 
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "saltus/studies/athlete_study.h"
 #include "saltus/studies/convergence_study.h"
 #include "saltus/studies/paper_report.h"
 
@@ -25,6 +26,7 @@ enum class CaseKind {
   kConvergence,   ///< one optimisation of the convergence study: `convergence`
   kOptimization,  ///< an optimisation of the report (a skill, its K = 3 run, a dive): `run`
   kMassStudy,     ///< the report's mass study: `mass_markdown`
+  kAthlete,       ///< one athlete of the athletes study: `athlete`
 };
 
 struct CaseRecord {
@@ -41,6 +43,7 @@ struct CaseRecord {
   StudyOutcome convergence;   ///< kConvergence
   RunSummary run;             ///< kOptimization
   std::string mass_markdown;  ///< kMassStudy: formats/mass_files.h's table
+  AthleteOutcome athlete;     ///< kAthlete
   bool finished() const { return failure.empty(); }
   /// Finished and, for an optimisation, solved (a mass study counts as solved when finished).
   bool solved() const;

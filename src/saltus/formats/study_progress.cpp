@@ -22,6 +22,10 @@ std::string case_result(const CaseRecord& r) {
       return text;
     case CaseKind::kMassStudy:
       return "done";
+    case CaseKind::kAthlete:
+      std::snprintf(text, sizeof text, "%s, %d it., %.3g N", r.athlete.status.c_str(),
+                    r.athlete.iterations, r.athlete.avg_root_force_after_N);
+      return text;
   }
   return "";
 }

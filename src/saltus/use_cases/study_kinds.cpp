@@ -1,6 +1,7 @@
 #include "saltus/use_cases/study_kinds.h"
 
 #include "saltus/base/input_error.h"
+#include "saltus/use_cases/athletes_run.h"
 #include "saltus/use_cases/convergence_run.h"
 #include "saltus/use_cases/paper_report_run.h"
 
@@ -10,6 +11,7 @@ const std::vector<StudyKind>& study_kinds() {
   static const std::vector<StudyKind> kinds = {
       {kConvergenceStudy, write_convergence_study_outputs},
       {kPaperReportStudy, write_paper_report_outputs},
+      {kAthletesStudy, write_athletes_study_outputs},
   };
   return kinds;
 }

@@ -169,7 +169,7 @@ TEST(OutputFolder, EveryKindOfResultIsRecognisedAndAnyOtherFileMakesItForeign) {
   for (const ResultKind& kind : result_kinds())
     names.insert(kind.name);
   for (const char* expected : {"evaluate", "simulate", "optimize", "study convergence",
-                               "study mass", "paper", "study shard", "import"})
+                               "study mass", "study athletes", "paper", "study shard", "import"})
     EXPECT_EQ(names.count(expected), 1u) << expected;
 
   for (const ResultKind& kind : result_kinds()) {

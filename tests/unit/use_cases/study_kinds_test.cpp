@@ -9,6 +9,7 @@
 #include <set>
 
 #include "saltus/base/input_error.h"
+#include "saltus/use_cases/athletes_run.h"
 #include "saltus/use_cases/convergence_run.h"
 #include "saltus/use_cases/paper_report_run.h"
 
@@ -22,7 +23,7 @@ TEST(StudyKinds, EveryKindIsRegisteredOnceWithAWriter) {
     EXPECT_TRUE(static_cast<bool>(kind.write_outputs)) << kind.name;
     EXPECT_EQ(&study_kind(kind.name), &kind);
   }
-  EXPECT_EQ(names, (std::set<std::string>{kConvergenceStudy, kPaperReportStudy}));
+  EXPECT_EQ(names, (std::set<std::string>{kConvergenceStudy, kPaperReportStudy, kAthletesStudy}));
 }
 
 TEST(StudyKinds, AnUnknownKindIsNamedWithTheKnownOnes) {
@@ -33,7 +34,8 @@ TEST(StudyKinds, AnUnknownKindIsNamedWithTheKnownOnes) {
     EXPECT_EQ(e.json_path(), "/study");
     const std::string what = e.what();
     EXPECT_NE(what.find("out/study.json"), std::string::npos) << what;
-    EXPECT_NE(what.find("unknown study \"mass\" (known: convergence, paper)"), std::string::npos)
+    EXPECT_NE(what.find("unknown study \"mass\" (known: convergence, paper, athletes)"),
+              std::string::npos)
         << what;
   }
 }

@@ -1,0 +1,114 @@
+// The athletes study's files (formats/athletes_files.h): a record goes through its JSON and
+// back unchanged, athletes.csv holds each record's numbers in ten significant digits, a case
+// whose process failed is a row that says so, and a record of another study is refused.
+
+#include "saltus/formats/athletes_files.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <sstream>
+
+#include "saltus/base/input_error.h"
+#include "support/cli_runner.h"
+
+namespace saltus {
+namespace {
+
+CaseRecord athlete_record(int index, const std::string& name, double force_after) {
+  CaseRecord r;
+  r.index = index;
+  r.name = "M1 on " + name;
+  r.kind = CaseKind::kAthlete;
+  r.role = "athlete";
+  r.motion = "M1";
+  AthleteOutcome& o = r.athlete;
+  o.athlete = name;
+  o.takeoff = index == 0 ? "own model" : "same spin";
+  o.mass_kg = 38.0 + index;
+  o.height_m = 1.45 + 0.1 * index;
+  o.takeoff_angular_momentum = Eigen::Vector3d(-31.25 * (index + 1), 0.5, 1.0 / 3.0);
+  o.status = "solved";
+  o.solved = true;
+  o.iterations = 17;
+  o.seconds = 0.75;
+  o.avg_root_force_before_N = 123.456789012345;
+  o.avg_root_force_after_N = force_after;
+  o.max_root_force_after_N = 2.5;
+  o.landing_error_before_deg = 12.5;
+  o.landing_error_after_deg = 0.25;
+  o.somersaults_before = -0.97;
+  o.twists_before = 0.01;
+  o.somersaults_after = -1.0;
+  o.twists_after = -0.001;
+  o.peak_moment_joint = "hip_r";
+  o.peak_moment_Nm = 80.0;
+  o.peak_force_joint = "shoulder_l";
+  o.peak_force_N = 300.0;
+  o.peak_force_pct_bw = 80.4;
+  return r;
+}
+
+TEST(AthletesFiles, ARecordRoundTripsThroughItsJson) {
+  const CaseRecord r = athlete_record(1, "junior", 0.123);
+  const CaseRecord back = parse_case_record(case_record_to_json(r), "cases/0001.json");
+  EXPECT_EQ(back.kind, CaseKind::kAthlete);
+  EXPECT_TRUE(back.solved());
+  EXPECT_EQ(case_record_to_json(back), case_record_to_json(r));
+  EXPECT_EQ(back.athlete.takeoff_angular_momentum, r.athlete.takeoff_angular_momentum);
+  EXPECT_EQ(back.athlete.peak_force_joint, "shoulder_l");
+}
+
+TEST(AthletesFiles, TheTablesHoldEveryRecordAndNameAFailure) {
+  std::vector<CaseRecord> records = {athlete_record(0, "zatsiorsky-66kg", 0.2),
+                                     athlete_record(1, "junior", 0.123)};
+  CaseRecord failed = athlete_record(2, "senior", 0.0);
+  failed.failure = "killed by signal 9 (Killed)";
+  failed.athlete.status = "crashed";
+  records.push_back(failed);
+
+  const test::TempDir temporary;
+  const std::string dir = temporary / "athletes";
+  MotionFile own;
+  own.model.name = "zatsiorsky-66kg";
+  const nlohmann::json definition = athletes_definition(
+      "M1", own, "same-spin", {{"zatsiorsky-66kg", "a"}, {"junior", "b"}, {"senior", "c"}},
+      OptimizeOptions{});
+  const nlohmann::json result = write_athletes_files(dir, records, definition);
+  EXPECT_EQ(result["study"], "athletes");
+  EXPECT_EQ(result["failed"], 1);
+  ASSERT_EQ(result["cases"].size(), 3u);
+  EXPECT_EQ(result["cases"][2]["failure"], "killed by signal 9 (Killed)");
+
+  std::istringstream csv(test::read_text(dir + "/athletes.csv"));
+  std::string header, line;
+  std::getline(csv, header);
+  EXPECT_EQ(header.rfind("athlete,takeoff,mass_kg,height_m,takeoff_L_x,", 0), 0u) << header;
+  std::vector<std::string> lines;
+  while (std::getline(csv, line))
+    lines.push_back(line);
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_EQ(lines[1].rfind("junior,same spin,39,1.55,-62.5,0.5,0.3333333333,solved,1,17,0.75,"
+                           "123.456789,0.123,2.5,12.5,0.25,-0.97,0.01,-1,-0.001,hip_r,80,"
+                           "shoulder_l,300,80.4",
+                           0),
+            0u)
+      << lines[1];
+  const auto commas = [](const std::string& s) { return std::count(s.begin(), s.end(), ','); };
+  EXPECT_EQ(commas(lines[2]), commas(header)) << lines[2];
+  EXPECT_NE(lines[2].find("crashed"), std::string::npos) << lines[2];
+
+  const std::string md = test::read_text(dir + "/athletes.md");
+  EXPECT_NE(md.find("# M1 on 3 athletes"), std::string::npos) << md;
+  EXPECT_NE(md.find("| zatsiorsky-66kg (own model) |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| junior | 39.0 | 1.550 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("did not finish: killed by signal 9"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 80 (hip_r) | 80 (shoulder_l) |"), std::string::npos) << md;
+
+  CaseRecord other = records[0];
+  other.kind = CaseKind::kMassStudy;
+  EXPECT_THROW(write_athletes_files(dir, {other}, definition), InputError);
+}
+
+}  // namespace
+}  // namespace saltus
