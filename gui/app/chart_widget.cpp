@@ -24,6 +24,7 @@ ChartWidget::ChartWidget(QWidget* parent) : VtkImageWidget(parent), cursor_time_
 void ChartWidget::set_chart(const ChartSpec& spec) {
   view_.set_chart(spec);
   request_render();
+  emit chart_changed();
 }
 
 void ChartWidget::set_cursor(double t) {

@@ -25,6 +25,8 @@ class ChartWidget : public VtkImageWidget {
  signals:
   /// The user clicked (or dragged) at time t in the plot area.
   void seek_requested(double t);
+  /// set_chart showed a new chart (its legend strip follows).
+  void chart_changed();
 
  protected:
   void rendered() override;

@@ -15,6 +15,7 @@
 #include <cmath>
 
 #include "app/chart_widget.h"
+#include "app/legend_strip.h"
 #include "app/scene_widget.h"
 #include "app/timeline_widget.h"
 #include "core/compare.h"
@@ -70,8 +71,8 @@ CompareWindow::CompareWindow(QWidget* parent) : QMainWindow(parent) {
   root_layout->setContentsMargins(2, 2, 2, 2);
   force_chart_ = new ChartWidget(root);
   moment_chart_ = new ChartWidget(root);
-  root_layout->addWidget(force_chart_);
-  root_layout->addWidget(moment_chart_);
+  root_layout->addWidget(with_legend_strip(force_chart_, root));
+  root_layout->addWidget(with_legend_strip(moment_chart_, root));
   tabs_->addTab(root, tr("Root force && moment"));
   auto* joints = new QWidget(tabs_);
   auto* joints_layout = new QVBoxLayout(joints);
@@ -86,8 +87,8 @@ CompareWindow::CompareWindow(QWidget* parent) : QMainWindow(parent) {
   auto* joint_charts = new QHBoxLayout;
   joint_force_chart_ = new ChartWidget(joints);
   joint_moment_chart_ = new ChartWidget(joints);
-  joint_charts->addWidget(joint_force_chart_);
-  joint_charts->addWidget(joint_moment_chart_);
+  joint_charts->addWidget(with_legend_strip(joint_force_chart_, joints));
+  joint_charts->addWidget(with_legend_strip(joint_moment_chart_, joints));
   joints_layout->addLayout(joint_charts, 1);
   tabs_->addTab(joints, tr("Joint loads"));
   connect(joint_, qOverload<int>(&QComboBox::currentIndexChanged), this,

@@ -179,15 +179,19 @@ void FileController::on_workspace(WorkspaceChange change) {
   context_.window()->setWindowTitle(
       tr("Saltus — %1%2").arg(qstr(f.motion.name), edited ? tr(" (edited)") : QString()));
   const double force = ws.document().evaluation(Stage::kBefore).metrics.avg_root_force;
+  // A saved optimised result (a stored spline) is not "before optimisation".
+  const QString what =
+      f.motion.spline ? tr("of the optimised trajectory as saved") : tr("before optimisation");
   status_line_->setText(
       tr("%1%2 — model %3 (%4 kg), %5 keyframes, flight %6 s; average root force %7 N "
-         "(%8 % of body weight) before optimisation")
+         "(%8 % of body weight) %9")
           .arg(qstr(f.motion.name), edited ? tr(" (edited)") : QString(), qstr(f.model.name))
           .arg(f.model.total_mass(), 0, 'f', 1)
           .arg(f.motion.keyframes.size())
           .arg(f.motion.flight_time(), 0, 'f', 2)
           .arg(force, 0, 'g', 3)
-          .arg(percent_of_body_weight(force, f.model), 0, 'f', 1));
+          .arg(percent_of_body_weight(force, f.model), 0, 'f', 1)
+          .arg(what));
   if (change == WorkspaceChange::kOpened) context_.window()->statusBar()->clearMessage();
 }
 

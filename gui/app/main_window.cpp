@@ -34,6 +34,17 @@
 
 namespace saltus::gui {
 
+namespace {
+
+/// The panels' width, px: a quarter of a 1366-pixel laptop screen, a sixth of a 1920 one; the
+/// option form wraps its fields below their labels when narrower.
+constexpr int kDockWidth = 340;
+/// The saved dock layout's version: a layout saved before the panels became one tabbed column
+/// is not restored (it would bring back the crowded one).
+constexpr int kLayoutVersion = 2;
+
+}  // namespace
+
 MainWindow::MainWindow(bool interactive, QWidget* parent) : QMainWindow(parent) {
   setWindowTitle(tr("Saltus"));
   setAcceptDrops(true);
@@ -193,31 +204,37 @@ void MainWindow::build_docks(QMenu* view_menu) {
     addDockWidget(Qt::RightDockWidgetArea, d);
     return d;
   };
-  QDockWidget* display = dock(tr("Display"), "display_dock", view_->make_display_panel(this));
   QDockWidget* optimise = dock(tr("Optimise"), "optimise_dock", runs_->panel());
   QDockWidget* keyframes = dock(tr("Keyframes"), "keyframe_dock", edits_->keyframe_panel());
-  QDockWidget* model = dock(tr("Model"), "model_dock", edits_->model_panel());
   QDockWidget* capture = dock(tr("Capture"), "capture_dock", edits_->capture_panel());
-  QDockWidget* history = dock(tr("Edit history"), "history_dock", edits_->make_history_view(this));
-  tabifyDockWidget(optimise, keyframes);
-  tabifyDockWidget(keyframes, capture);
-  tabifyDockWidget(capture, model);
-  tabifyDockWidget(model, history);
+  QDockWidget* model = dock(tr("Model"), "model_dock", edits_->model_panel());
+  QDockWidget* display = dock(tr("Display"), "display_dock", view_->make_display_panel(this));
+  QDockWidget* history = dock(tr("History"), "history_dock", edits_->make_history_view(this));
+  history->toggleViewAction()->setText(tr("Edit history"));
+  // One column of panels, tabbed, the tabs standing on the window's right edge: on a
+  // 1366×768 laptop six tab titles in a row would not fit a panel narrow enough to leave the
+  // 3D view three quarters of the width (they were elided to "Optim… Keyfra…"), while a
+  // column holds them whole; and one panel at a time gets the full height, so the Optimise
+  // panel's run list and status stay in view.
+  setTabPosition(Qt::RightDockWidgetArea, QTabWidget::East);
+  const std::vector<QDockWidget*> docks = {optimise, keyframes, capture, model, display, history};
+  for (std::size_t i = 1; i < docks.size(); ++i)
+    tabifyDockWidget(docks[i - 1], docks[i]);
   optimise->raise();
   // An imported capture brings its panel to the front (its keyframes are picked there).
   connect(files_, &FileController::motion_opened, this, [this, capture] {
     if (document().capture()) capture->raise();
   });
   view_menu->addSeparator();
-  for (QDockWidget* d : {display, optimise, keyframes, capture, model, history})
+  for (QDockWidget* d : docks)
     view_menu->addAction(d->toggleViewAction());
-  resizeDocks({display, optimise}, {400, 400}, Qt::Horizontal);
+  resizeDocks({optimise}, {kDockWidth}, Qt::Horizontal);
 }
 
 void MainWindow::load_settings() {
   QSettings s;
   restoreGeometry(s.value("window/geometry").toByteArray());
-  restoreState(s.value("window/state").toByteArray());
+  restoreState(s.value("window/state").toByteArray(), kLayoutVersion);
   for (RemembersSettings* part : remembered_)
     part->load_settings(s);
 }
@@ -225,7 +242,7 @@ void MainWindow::load_settings() {
 void MainWindow::save_settings() const {
   QSettings s;
   s.setValue("window/geometry", saveGeometry());
-  s.setValue("window/state", saveState());
+  s.setValue("window/state", saveState(kLayoutVersion));
   for (const RemembersSettings* part : remembered_)
     part->save_settings(s);
 }

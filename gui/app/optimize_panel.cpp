@@ -16,15 +16,9 @@ namespace saltus::gui {
 
 OptimizePanel::OptimizePanel(QWidget* parent) : QWidget(parent) {
   auto* layout = new QVBoxLayout(this);
-  // The table's options scroll when the window is short, so they never set its height.
-  form_ = new OptionForm;
-  auto* options = new QScrollArea(this);
-  options->setWidget(form_);
-  options->setWidgetResizable(true);
-  options->setFrameShape(QFrame::NoFrame);
-  options->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-  layout->addWidget(options);
-
+  // What a run says comes first: Run, its progress, its status and the list of runs stay in
+  // view on a 1366×768 screen; the options and the before/after table share the rest, each
+  // scrolling when the window is short, so neither sets the window's height.
   auto* buttons = new QHBoxLayout;
   run_ = new QPushButton(tr("Run optimisation"), this);
   run_->setToolTip(tr("Optimise the open motion (Ctrl+R)"));
@@ -40,11 +34,15 @@ OptimizePanel::OptimizePanel(QWidget* parent) : QWidget(parent) {
   bar_->setFormat(QString());
   status_ = new QLabel(tr("Open a motion to optimise it."), this);
   status_->setWordWrap(true);
+  status_->setObjectName("optimise_status");
   layout->addWidget(bar_);
   layout->addWidget(status_);
 
-  layout->addWidget(new QLabel(tr("Runs of this motion (the best solved one is shown):"), this));
+  auto* runs_title = new QLabel(tr("Runs of this motion (the best solved one is shown):"), this);
+  runs_title->setWordWrap(true);
+  layout->addWidget(runs_title);
   runs_ = new QListWidget(this);
+  runs_->setMinimumHeight(60);
   runs_->setMaximumHeight(110);
   runs_->setWordWrap(true);
   runs_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
@@ -68,7 +66,20 @@ OptimizePanel::OptimizePanel(QWidget* parent) : QWidget(parent) {
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   table_->setWordWrap(true);
   table_->setToolTip(tr("Before: the interpolated keyframes; after: the optimised motion"));
+  table_->setMinimumHeight(80);
   layout->addWidget(table_, 1);
+
+  auto* options_title = new QLabel(tr("<b>Options</b> (those of <tt>saltus optimize</tt>)"), this);
+  options_title->setWordWrap(true);
+  layout->addWidget(options_title);
+  form_ = new OptionForm;
+  auto* options = new QScrollArea(this);
+  options->setWidget(form_);
+  options->setWidgetResizable(true);
+  options->setFrameShape(QFrame::NoFrame);
+  options->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  options->setMinimumHeight(100);
+  layout->addWidget(options, 2);
 
   connect(run_, &QPushButton::clicked, this, &OptimizePanel::run_requested);
   connect(cancel_, &QPushButton::clicked, this, &OptimizePanel::cancel_requested);

@@ -44,6 +44,8 @@ struct OptionForm::Row {
 OptionForm::OptionForm(QWidget* parent) : QWidget(parent) {
   auto* form = new QFormLayout(this);
   form->setContentsMargins(0, 0, 0, 0);
+  // In a narrow panel (a laptop screen) a field goes below its label rather than out of view.
+  form->setRowWrapPolicy(QFormLayout::WrapLongRows);
   for (const OptionSpec& spec : option_table()) {
     Row row;
     row.spec = &spec;

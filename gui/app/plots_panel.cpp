@@ -12,6 +12,7 @@
 #include <filesystem>
 
 #include "app/chart_widget.h"
+#include "app/legend_strip.h"
 #include "app/qt_text.h"
 #include "app/teaching_panel.h"
 #include "core/figures.h"
@@ -35,30 +36,35 @@ PlotsPanel::PlotsPanel(AppContext& context, QWidget* parent)
   auto* root_tab = new QWidget(this);
   auto* root_layout = new QVBoxLayout(root_tab);
   root_layout->setContentsMargins(2, 2, 2, 2);
-  auto* switches = new QHBoxLayout;
-  components_ = new QCheckBox(tr("Components"), root_tab);
+  // The root charts' switches sit beside the tabs, not in a row of their own: on a laptop
+  // screen that row's height goes to the charts.
+  auto* corner = new QWidget(this);
+  auto* switches = new QHBoxLayout(corner);
+  switches->setContentsMargins(0, 0, 4, 0);
+  components_ = new QCheckBox(tr("Components"), corner);
   components_->setToolTip(
       tr("x, y and z in the root segment's frame instead of the resultant |F| and |M|"));
   switches->addWidget(components_);
   const char* axes[3] = {"x", "y", "z"};
   for (int a = 0; a < 3; ++a) {
-    axes_[static_cast<std::size_t>(a)] = new QCheckBox(axes[a], root_tab);
+    axes_[static_cast<std::size_t>(a)] = new QCheckBox(axes[a], corner);
     axes_[static_cast<std::size_t>(a)]->setChecked(true);
     switches->addWidget(axes_[static_cast<std::size_t>(a)]);
   }
-  log_scale_ = new QCheckBox(tr("Log scale for before/after"), root_tab);
+  log_scale_ = new QCheckBox(tr("Log scale for before/after"), corner);
   log_scale_->setChecked(true);
   log_scale_->setToolTip(
       tr("A logarithmic axis for |F| and |M|, so that the small residual "
          "after optimisation shows next to the large one before"));
   switches->addWidget(log_scale_);
-  switches->addStretch(1);
-  root_layout->addLayout(switches);
+  setCornerWidget(corner, Qt::TopRightCorner);
+  connect(this, &QTabWidget::currentChanged, corner,
+          [this, corner, root_tab] { corner->setVisible(currentWidget() == root_tab); });
   auto* root_charts = new QHBoxLayout;
   force_chart_ = new ChartWidget(root_tab);
   moment_chart_ = new ChartWidget(root_tab);
-  root_charts->addWidget(force_chart_);
-  root_charts->addWidget(moment_chart_);
+  root_charts->addWidget(with_legend_strip(force_chart_, root_tab));
+  root_charts->addWidget(with_legend_strip(moment_chart_, root_tab));
   root_layout->addLayout(root_charts, 1);
   addTab(root_tab, tr("Root force && moment"));
   for (QCheckBox* box : {components_, log_scale_, axes_[0], axes_[1], axes_[2]})
@@ -76,7 +82,7 @@ PlotsPanel::PlotsPanel(AppContext& context, QWidget* parent)
   joint_row->addStretch(1);
   joint_layout->addLayout(joint_row);
   joint_chart_ = new ChartWidget(joint_tab_);
-  joint_layout->addWidget(joint_chart_, 1);
+  joint_layout->addWidget(with_legend_strip(joint_chart_, joint_tab_), 1);
   connect(joint_combo_, qOverload<int>(&QComboBox::currentIndexChanged), this, [this](int joint) {
     refresh_joint_chart();
     if (joint >= 0) emit joint_selected(joint);

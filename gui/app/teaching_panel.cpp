@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "app/chart_widget.h"
+#include "app/legend_strip.h"
 #include "core/plot_series.h"
 #include "saltus/evaluation/flight_checks.h"
 
@@ -64,7 +65,7 @@ TeachingPanel::TeachingPanel(AppContext& context, QWidget* parent)
   row->addStretch(1);
   right_layout->addLayout(row);
   chart_ = new ChartWidget(right);
-  right_layout->addWidget(chart_, 1);
+  right_layout->addWidget(with_legend_strip(chart_, right), 1);
   connect(quantity_, qOverload<int>(&QComboBox::currentIndexChanged), this,
           [this] { refresh_chart(); });
   connect(chart_, &ChartWidget::seek_requested, this, &TeachingPanel::seek_requested);

@@ -98,7 +98,8 @@ void ViewController::fill_toolbar(QToolBar* bar) {
 QWidget* ViewController::make_display_panel(QWidget* parent) {
   auto* panel = new QWidget(parent);
   auto* layout = new QGridLayout(panel);
-  const int columns = 2;
+  // One column: the panel is a tab of the narrow panel column, as tall as the window.
+  const int columns = 1;
   for (std::size_t i = 0; i < options_.size(); ++i) {
     QAction* action = options_[i];
     auto* box = new QCheckBox(action->text().remove('&'), panel);
@@ -108,6 +109,7 @@ QWidget* ViewController::make_display_panel(QWidget* parent) {
     connect(action, &QAction::toggled, box, &QCheckBox::setChecked);
     layout->addWidget(box, static_cast<int>(i) / columns, static_cast<int>(i) % columns);
   }
+  layout->setRowStretch(static_cast<int>(options_.size()), 1);
   return panel;
 }
 

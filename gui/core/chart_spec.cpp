@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace saltus::gui {
@@ -58,6 +59,31 @@ AxisRange log_y_range(const ChartSpec& chart) {
     log_hi = mid + 0.5;
   }
   return {std::pow(10.0, log_lo), std::pow(10.0, log_hi)};
+}
+
+std::vector<double> log_ticks(const AxisRange& range) {
+  std::vector<double> ticks;
+  if (!(range.min > 0) || !(range.max > range.min)) return ticks;
+  const int first = static_cast<int>(std::floor(std::log10(range.min)));
+  const int last = static_cast<int>(std::ceil(std::log10(range.max)));
+  // Rounding: a power of ten at the very end of the range counts as inside.
+  const auto inside = [&](double v) {
+    return v >= range.min * (1 - 1e-9) && v <= range.max * (1 + 1e-9);
+  };
+  for (int e = first; e <= last; ++e)
+    if (inside(std::pow(10.0, e))) ticks.push_back(std::pow(10.0, e));
+  if (ticks.size() >= 3) return ticks;
+  ticks.clear();
+  for (int e = first; e <= last; ++e)
+    for (double m : {1.0, 2.0, 5.0})
+      if (inside(m * std::pow(10.0, e))) ticks.push_back(m * std::pow(10.0, e));
+  return ticks;
+}
+
+std::string tick_label(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
 }
 
 AxisRange x_range(const ChartSpec& chart) {

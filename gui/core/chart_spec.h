@@ -63,6 +63,14 @@ AxisRange y_range(const ChartSpec& chart, bool right_axis);
 /// below the largest value and at least one decade wide, padded 5 % in log space; {1, 10} when
 /// nothing is positive.
 AxisRange log_y_range(const ChartSpec& chart);
+/// Where a logarithmic axis over `range` (both ends > 0) puts its labelled ticks: the powers of
+/// ten inside it, and also 2× and 5× each power when fewer than three powers fall inside (a
+/// short range). At most about six labels over the four decades log_y_range allows, so that
+/// they do not overlap on a plot 120 pixels high (1-2-5 steps over four decades gave twelve).
+std::vector<double> log_ticks(const AxisRange& range);
+/// A tick's label: "0.01", "0.5", "20", "1000", "1e+05".
+std::string tick_label(double value);
+
 /// Smallest and largest x over all lines and markers (unpadded); {0, 1} when empty.
 AxisRange x_range(const ChartSpec& chart);
 

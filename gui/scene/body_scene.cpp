@@ -174,7 +174,8 @@ struct BodyScene::Impl {
     const MotionFile& file = d.file();
     body.build(file.model);
     if (d.capture()) capture_body.build(file.model, kCaptureColour);
-    athlete_label->SetInput(stage == Stage::kAfter ? "optimised" : "keyframes");
+    athlete_label->SetInput(stage == Stage::kAfter || file.motion.spline ? "optimised"
+                                                                         : "keyframes");
     paths.build(d, stage);
     const std::vector<SampleRecord>& samples = d.plot_samples(stage);
     const Apparatus apparatus = apparatus_for(file.model, file.motion.takeoff, samples);
@@ -288,9 +289,12 @@ struct BodyScene::Impl {
     const double force = s.residual.head<3>().norm();
     const double moment = s.residual.tail<3>().norm();
     const double percent = percent_of_body_weight(force, file.model);
-    texts.set_title(scene::wrapped(file.motion.name, kTitleWidth) + "\n" +
-                    (stage == Stage::kAfter ? "optimised motion (after)"
-                                            : "interpolated keyframes (before optimisation)") +
+    // A motion file with a stored spline (optimized.motion.json) is an optimised result: its
+    // "before" is that trajectory as saved, not an interpolation of its keyframes.
+    const char* shown = stage == Stage::kAfter ? "optimised motion (after)"
+                        : file.motion.spline   ? "optimised trajectory, as saved"
+                                               : "interpolated keyframes (before optimisation)";
+    texts.set_title(scene::wrapped(file.motion.name, kTitleWidth) + "\n" + shown +
                     printf_string("\nt = %.3f s of %.3f s", time, document->duration()));
     if (video) {
       // The time is in the title; the residual here, short enough for a small video.
@@ -406,6 +410,10 @@ double BodyScene::residual_force_full_scale() const {
 
 std::string BodyScene::legend() const {
   return impl_->document ? impl_->legend_text() : std::string();
+}
+
+std::string BodyScene::title() const {
+  return impl_->texts.title();
 }
 
 void BodyScene::set_antialiasing(bool on) {

@@ -59,6 +59,8 @@ class BodyScene {
   double residual_force_full_scale() const;
   /// The legend's text (arrow scales, lines, figures) as the view shows it.
   std::string legend() const;
+  /// The title's text (the motion, what is shown of it, the time) as the view shows it.
+  std::string title() const;
   /// Anti-aliased edges (FXAA, a post-processing pass). Off by default: in software OpenGL the
   /// pass costs several frames' worth of time, so the app draws moving pictures without it and
   /// a still picture, an export or a video frame with it.

@@ -59,6 +59,7 @@ struct ChartView::Impl {
   AxisRange left, right;
   bool uses_right = false;
   int font_points = 12;
+  bool legend_drawn = true;
   /// Tables must outlive their plots' use; the plots hold references, this keeps them alive too.
   std::vector<vtkSmartPointer<vtkTable>> tables;
 
@@ -92,6 +93,21 @@ struct ChartView::Impl {
     }
     apply_font(chart->GetLegend()->GetLabelProperties(), font_points - 2, 0.1, 0.1, 0.1);
     chart->GetLegend()->SetLabelSize(font_points - 2);
+  }
+
+  static void set_log_ticks(vtkAxis* axis, const AxisRange& range) {
+    const std::vector<double> ticks = log_ticks(range);
+    if (ticks.empty()) {
+      axis->SetCustomTickPositions(nullptr, nullptr);
+      return;
+    }
+    vtkNew<vtkDoubleArray> positions;
+    vtkNew<vtkStringArray> labels;
+    for (double t : ticks) {
+      positions->InsertNextValue(std::log10(t));
+      labels->InsertNextValue(tick_label(t));
+    }
+    axis->SetCustomTickPositions(positions, labels);
   }
 
   void rebuild() {
@@ -154,7 +170,7 @@ struct ChartView::Impl {
       any_legend = any_legend || !marker.label.empty();
       plot->SetSelectable(false);
     }
-    chart->SetShowLegend(spec.legend && any_legend);
+    chart->SetShowLegend(spec.legend && any_legend && legend_drawn);
 
     for (vtkAxis* axis : {bottom, left_axis, right_axis})
       axis->SetBehavior(vtkAxis::FIXED);
@@ -179,6 +195,10 @@ struct ChartView::Impl {
     } else {
       bottom->SetCustomTickPositions(nullptr, nullptr);
     }
+    // Log axes: a label a decade (log_ticks), placed at the exponents the axis works in, so
+    // that the labels of a short plot do not run into each other.
+    set_log_ticks(left_axis, spec.log_y ? left : AxisRange{0, 0});
+    set_log_ticks(right_axis, spec.log_y && linked_right ? right : AxisRange{0, 0});
     chart->Update();
   }
 };
@@ -219,6 +239,15 @@ std::optional<double> ChartView::x_at_pixel(int x, int y) const {
     return std::nullopt;
   const double u = (x - a.left) / static_cast<double>(a.right - a.left);
   return a.x_min + u * (a.x_max - a.x_min);
+}
+
+void ChartView::set_legend_drawn(bool drawn) {
+  impl_->legend_drawn = drawn;
+  impl_->rebuild();
+}
+
+bool ChartView::legend_drawn() const {
+  return impl_->legend_drawn;
 }
 
 void ChartView::set_font_size(int points) {

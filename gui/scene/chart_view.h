@@ -45,6 +45,11 @@ class ChartView {
 
   /// Text size in points for titles (labels are 2 points smaller).
   void set_font_size(int points);
+  /// Whether the chart draws its legend inside the plot (default true, as exported figures
+  /// do). The app's charts pass false and show the legend in a row above the chart instead
+  /// (LegendStrip), where it covers no curve and no keyframe line.
+  void set_legend_drawn(bool drawn);
+  bool legend_drawn() const;
 
  private:
   struct Impl;

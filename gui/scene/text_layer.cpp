@@ -57,6 +57,11 @@ TextLayer::TextLayer(vtkRenderer* renderer, vtkRenderer* inset) {
 void TextLayer::set_title(const std::string& text) {
   title_->SetInput(text.c_str());
 }
+std::string TextLayer::title() const {
+  const char* text = title_->GetInput();
+  return text ? text : "";
+}
+
 void TextLayer::set_numbers(const std::string& text) {
   numbers_->SetInput(text.c_str());
 }

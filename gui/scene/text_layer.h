@@ -18,6 +18,7 @@ class TextLayer {
   TextLayer(vtkRenderer* renderer, vtkRenderer* inset);
 
   void set_title(const std::string& text);
+  std::string title() const;
   void set_numbers(const std::string& text);
   void set_legend(const std::string& text);
   void set_banner(const std::string& text);

@@ -51,5 +51,24 @@ TEST(ChartSpec, LogRangeStopsFourDecadesBelowTheLargestValue) {
   EXPECT_LT(r.min, 0.1);
 }
 
+TEST(ChartSpec, LogTicksArePowersOfTenOverSeveralDecades) {
+  // The widest range log_y_range gives (four decades and padding): one label a decade, not the
+  // twelve 1-2-5 labels that overlapped on a laptop's 120-pixel plot.
+  const std::vector<double> ticks = log_ticks({0.07, 1500.0});
+  EXPECT_EQ(ticks, (std::vector<double>{0.1, 1.0, 10.0, 100.0, 1000.0}));
+}
+
+TEST(ChartSpec, LogTicksAddTwoAndFiveOnAShortRange) {
+  // One decade: a single power of ten would leave the axis nearly unlabelled.
+  const std::vector<double> ticks = log_ticks({3.0, 30.0});
+  ASSERT_EQ(ticks.size(), 3u);
+  EXPECT_DOUBLE_EQ(ticks[0], 5.0);
+  EXPECT_DOUBLE_EQ(ticks[1], 10.0);
+  EXPECT_DOUBLE_EQ(ticks[2], 20.0);
+  EXPECT_TRUE(log_ticks({0.0, 10.0}).empty());
+  EXPECT_EQ(tick_label(0.01), "0.01");
+  EXPECT_EQ(tick_label(1000.0), "1000");
+}
+
 }  // namespace
 }  // namespace saltus::gui
