@@ -3,9 +3,11 @@
 #include <functional>
 #include <sstream>
 
+#include "saltus/base/input_error.h"
 #include "saltus/formats/finite_check.h"
 #include "saltus/formats/mass_files.h"
 #include "saltus/formats/model_file.h"
+#include "saltus/formats/motion_file.h"
 #include "saltus/formats/output_folder.h"
 #include "saltus/formats/result_json.h"
 #include "saltus/formats/trajectory_csv.h"
@@ -70,16 +72,25 @@ nlohmann::json write_optimization_outputs(const std::string& out_dir, const Moti
   require_finite(r, file.path);
   require_finite(result.before.samples, file.path, "trajectory_before.csv");
   require_finite(result.after.samples, file.path, "trajectory_after.csv");
-  OutputFolder folder(out_dir);
-  write_csv(folder, "trajectory_before.csv", file.model, result.before.samples);
-  write_csv(folder, "trajectory_after.csv", file.model, result.after.samples);
   // The optimised motion names the model copy written beside it, so the folder is
   // self-contained: `saltus evaluate DIR/optimized.motion.json` works wherever DIR goes.
   Motion optimized = result.optimized_motion;
   optimized.model = "model.json";
-  write_composed(folder.file("optimized.motion.json"), [&](std::ostream& o) {
-    o << motion_to_json(optimized, file.model).dump(2) << '\n';
-  });
+  const nlohmann::json optimized_json = motion_to_json(optimized, file.model);
+  // Saltus writes no motion its own reader refuses (a take-off CoM at the 10 km bound came back
+  // a hair past it): the swap does not happen, nothing is written, and the input is named.
+  try {
+    parse_motion(optimized_json, "optimized.motion.json", file.model);
+  } catch (const InputError& e) {
+    throw InputError(file.path, "",
+                     std::string("its optimised motion would be refused by Saltus's own reader (") +
+                         e.what() + "); nothing was written");
+  }
+  OutputFolder folder(out_dir);
+  write_csv(folder, "trajectory_before.csv", file.model, result.before.samples);
+  write_csv(folder, "trajectory_after.csv", file.model, result.after.samples);
+  write_composed(folder.file("optimized.motion.json"),
+                 [&](std::ostream& o) { o << optimized_json.dump(2) << '\n'; });
   write_common_files(folder, file, r);
   folder.commit();
   return r;
