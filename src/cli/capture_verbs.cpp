@@ -118,18 +118,25 @@ int run_import(const ImportArgs& args) {
 
 int run_export_html(const ExportArgs& args) {
   if (args.fps > 0) throw saltus::InputError("--fps", "", "applies to --format bvh only");
-  const saltus::FlightPageSummary page = saltus::export_flight_page(args.source, args.out_path);
+  const saltus::FlightPageSummary page =
+      saltus::export_flight_page(args.source, args.out_path, args.capture);
   if (!args.quiet)
     std::printf(
-        "saltus export: %s\n  a web page of %s (model %s), %s, %d frames, %.2f MB\n  wrote %s\n",
+        "saltus export: %s\n  a web page of %s (model %s), %s, %d frames, %.2f MB\n%s  wrote "
+        "%s\n",
         args.source.c_str(), page.motion.c_str(), page.model.c_str(),
         page.optimised ? "before and after optimisation" : "as given", page.frames,
-        static_cast<double>(page.bytes) / 1e6, absolute(args.out_path).c_str());
+        static_cast<double>(page.bytes) / 1e6,
+        page.capture.empty() ? ""
+                             : ("  the motion capture beside it: " + page.capture + "\n").c_str(),
+        absolute(args.out_path).c_str());
   return 0;
 }
 
 int run_export(const ExportArgs& args) {
   if (args.format == "html") return run_export_html(args);
+  if (!args.capture.empty())
+    throw saltus::InputError("--capture", "", "applies to --format html only");
   const saltus::MotionFile source = saltus::load_export_source(args.source);
   const double fps = args.fps > 0 ? args.fps : saltus::default_export_fps(source.motion);
   const saltus::MocapClip clip = saltus::export_motion_bvh(source, args.out_path, fps);
@@ -193,6 +200,9 @@ void add_capture_verbs(CLI::App& app, CaptureVerbs& verbs) {
                   "bvh: frames per second; default: the keyframes' rate when they are evenly "
                   "spaced (a captured flight), else 60")
       ->check(CLI::PositiveNumber);
+  exp->add_option("--capture", ex.capture,
+                  "html: the motion capture drawn beside the athlete (an import folder or a BVH "
+                  "file); default: the one SOURCE came from, if any");
   exp->add_flag("--quiet,-q", ex.quiet, "print nothing on success");
   verbs.export_command = exp;
 }

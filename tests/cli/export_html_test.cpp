@@ -3,7 +3,9 @@
 // WebGL, SwiftShader) runs its own self-test (#selftest) and the test reads the findings back
 // from the DOM: no error and no refused request, a picture that is not blank and changes from
 // t = 0 to t = T and from before to after, the plot's cursor drawn at the slider's time, a click
-// on the plot moving the time, and the title block's numbers equal to result.json's.
+// on the plot moving the time, and the title block's numbers equal to result.json's. The page of
+// an imported capture draws the capture beside the athlete: its figure changes the picture when
+// toggled, its curves are on the plot, its residual in the title block is result.json's.
 
 #include <gtest/gtest.h>
 
@@ -71,6 +73,24 @@ std::string unescape_html(std::string text) {
   return text;
 }
 
+/// The findings of the page's own self-test (#selftest), read from the DOM Chromium dumps.
+nlohmann::json selftest_findings(const std::string& page, const std::string& profile) {
+  CliRun run =
+      run_command(chromium_command(profile) + " --virtual-time-budget=10000 --dump-dom 'file://" +
+                  page + "#selftest'");
+  EXPECT_EQ(run.status, 0) << run.output;
+  EXPECT_EQ(run.output.find("Uncaught"), std::string::npos) << run.output;
+  const std::string open = "<pre id=\"selftest-result\">";
+  const std::size_t start = run.output.find(open);
+  if (start == std::string::npos) {
+    ADD_FAILURE() << "no self-test result: " << run.output;
+    return nlohmann::json::object();
+  }
+  const std::size_t end = run.output.find("</pre>", start);
+  return nlohmann::json::parse(
+      unescape_html(run.output.substr(start + open.size(), end - start - open.size())));
+}
+
 TEST(ExportHtmlBrowser, TheOptimisedM7PageRunsOfflineAndShowsTheResult) {
   ASSERT_EQ(run_command("command -v chromium").status, 0)
       << "chromium is needed for this test: tools/bootstrap.sh test installs it";
@@ -84,17 +104,9 @@ TEST(ExportHtmlBrowser, TheOptimisedM7PageRunsOfflineAndShowsTheResult) {
   ASSERT_EQ(run.status, 0) << run.output;
   EXPECT_LE(fs::file_size(page), 3000000u) << "the issue's bound for M7";
 
-  run = run_command(chromium_command(dir / "profile") +
-                    " --virtual-time-budget=10000 --dump-dom 'file://" + page + "#selftest'");
-  ASSERT_EQ(run.status, 0) << run.output;
-  EXPECT_EQ(run.output.find("Uncaught"), std::string::npos) << run.output;
-  const std::string open = "<pre id=\"selftest-result\">";
-  const std::size_t start = run.output.find(open);
-  ASSERT_NE(start, std::string::npos) << run.output;
-  const std::size_t end = run.output.find("</pre>", start);
-  const nlohmann::json found = nlohmann::json::parse(
-      unescape_html(run.output.substr(start + open.size(), end - start - open.size())));
+  const nlohmann::json found = selftest_findings(page, dir / "profile");
   SCOPED_TRACE(found.dump());
+  EXPECT_FALSE(found["capture"]["present"].get<bool>()) << "M7 came from no capture";
 
   EXPECT_EQ(found["problems"], nlohmann::json::array()) << "errors or refused requests";
   EXPECT_TRUE(found["webgl"].get<bool>());
@@ -149,6 +161,54 @@ TEST(ExportHtmlBrowser, TheOptimisedM7PageRunsOfflineAndShowsTheResult) {
     ASSERT_TRUE(fs::exists(png)) << run.output;
     EXPECT_GT(fs::file_size(png), 20000u) << png << ": a blank page compresses to less";
   }
+}
+
+TEST(ExportHtmlBrowser, AnImportedCaptureIsDrawnBesideTheAthlete) {
+  ASSERT_EQ(run_command("command -v chromium").status, 0)
+      << "chromium is needed for this test: tools/bootstrap.sh test installs it";
+  TempDir dir;
+  const std::string bvh = std::string(SALTUS_EXAMPLES_DIR) + "/captures/deepmimic-backflip.bvh";
+  CliRun run = run_cli("import " + bvh + " --quiet --out " + (dir / "bf"));
+  ASSERT_EQ(run.status, 0) << run.output;
+  const std::string page = dir / "bf.html";
+  run = run_cli("export " + (dir / "bf") + " --format html --out " + page);
+  ASSERT_EQ(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find("the motion capture beside it: " + (dir / "bf")), std::string::npos)
+      << run.output;
+  run = run_cli("export " + (dir / "bf") + " --format bvh --capture " + (dir / "bf") + " --out " +
+                (dir / "bf.bvh"));
+  EXPECT_EQ(run.status, 2) << run.output;
+  EXPECT_NE(run.output.find("--capture"), std::string::npos) << run.output;
+
+  const nlohmann::json found = selftest_findings(page, dir / "profile");
+  SCOPED_TRACE(found.dump());
+  EXPECT_EQ(found["problems"], nlohmann::json::array()) << "errors or refused requests";
+  EXPECT_GT(found["non_background_fraction"].get<double>(), 0.05) << "the canvas is not blank";
+  const nlohmann::json& capture = found["capture"];
+  ASSERT_TRUE(capture["present"].get<bool>());
+  EXPECT_EQ(capture["figure_segments"], read_json(dir / "bf/model.json")["segments"].size())
+      << "every segment of the grey figure is drawn";
+  EXPECT_TRUE(capture["label_shown"].get<bool>()) << "the figure is labelled \"capture\"";
+  EXPECT_GT(capture["toggle_difference_fraction"].get<double>(), 0.005)
+      << "the picture changes when the capture is toggled";
+  EXPECT_GT(capture["curve_pixels"].get<int>(), 50) << "its |F| and |M| are on the plot";
+  const double residual =
+      read_json(dir / "bf/result.json")["capture"]["residual"]["avg_root_force"].get<double>();
+  EXPECT_NEAR(std::stod(found["shown"]["capture.avg_root_force"].get<std::string>()), residual,
+              5e-4 * residual);
+
+  // A picture to look at, laptop sized, at 40 % of the flight.
+  const fs::path pictures = fs::path(SALTUS_BIN_DIR).parent_path() / "flight-page";
+  fs::create_directories(pictures);
+  const fs::path png = pictures / "capture-laptop.png";
+  fs::remove(png);
+  const double t =
+      0.4 * read_json(dir / "bf/keyframes.motion.json")["keyframes"].back()["time"].get<double>();
+  run = run_command(chromium_command(dir / "profile") +
+                    " --virtual-time-budget=5000 --window-size=1280,720 --screenshot=" +
+                    png.string() + " 'file://" + page + "#t=" + std::to_string(t) + "'");
+  ASSERT_EQ(run.status, 0) << run.output;
+  EXPECT_GT(fs::file_size(png), 20000u) << png << ": a blank page compresses to less";
 }
 
 }  // namespace

@@ -8,9 +8,11 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include "saltus/base/constants.h"
 #include "saltus/base/input_error.h"
+#include "saltus/base/resources.h"
 #include "saltus/body/drawing_colours.h"
 #include "saltus/evaluation/apparatus.h"
 #include "saltus/evaluation/evaluate.h"
@@ -19,6 +21,7 @@
 #include "saltus/formats/flight_page_assets.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/formats/result_json.h"
+#include "saltus/formats/trajectory_csv.h"
 #include "saltus/motion/interpolate.h"
 #include "saltus/use_cases/captures.h"
 
@@ -197,8 +200,99 @@ nlohmann::json read_result_document(const std::string& path) {
   }
 }
 
-/// The page's data from a `saltus optimize` folder: its files as written.
-nlohmann::json optimize_folder_data(const std::string& dir) {
+/// True when `dir` is a folder `saltus import` wrote: result.json with "status": "imported",
+/// trajectory.csv and capture.motion.json.
+bool is_import_folder(const fs::path& dir) {
+  if (!fs::is_regular_file(dir / "result.json") || !fs::is_regular_file(dir / "trajectory.csv") ||
+      !fs::is_regular_file(dir / "capture.motion.json"))
+    return false;
+  std::ifstream in(dir / "result.json");
+  const nlohmann::json result = nlohmann::json::parse(in, nullptr, false);
+  return result.is_object() && result.value("status", "") == "imported";
+}
+
+/// The capture a motion file came from: a capture itself, or the `import` folder it lies in;
+/// "" when neither.
+std::string capture_of_motion_file(const std::string& path) {
+  if (is_capture_path(path)) return fs::is_regular_file(path) ? path : "";
+  const fs::path folder = fs::path(path).parent_path();
+  return is_import_folder(folder.empty() ? fs::path(".") : folder) ? folder.string() : "";
+}
+
+/// A capture's own trajectory (its residual evaluated densely, as trajectory.csv holds it) and
+/// its residual figures.
+struct CaptureTrajectory {
+  std::string source;  ///< the `import` folder or the BVH file
+  std::string file;    ///< what errors name: trajectory.csv or the BVH file
+  std::vector<std::string> segments;
+  std::vector<SampleRecord> samples;
+  nlohmann::json residual;
+};
+
+CaptureTrajectory capture_from_import(const std::string& source, const CaptureFile& capture) {
+  CaptureTrajectory out;
+  out.source = source;
+  out.file = source;
+  for (const Segment& s : capture.model.segments)
+    out.segments.push_back(s.name);
+  out.samples = capture.import.samples;
+  out.residual = force_metrics_to_json(capture.import.metrics);
+  return out;
+}
+
+/// The capture at `source` (an `import` folder, or a BVH file imported onto `model_reference`
+/// with the default options). InputError naming `what_names` when it is neither.
+CaptureTrajectory load_capture(const std::string& source, const std::string& model_reference,
+                               const std::string& what_names) {
+  if (fs::is_directory(source)) {
+    if (!is_import_folder(source))
+      throw InputError(what_names, "",
+                       source +
+                           " is not a folder saltus import wrote (result.json with \"status\": "
+                           "\"imported\", trajectory.csv, capture.motion.json)");
+    CaptureTrajectory out;
+    out.source = source;
+    out.file = (fs::path(source) / "trajectory.csv").string();
+    TrajectoryCsv csv = read_trajectory_csv(out.file);
+    out.segments = std::move(csv.segments);
+    out.samples = std::move(csv.samples);
+    const std::string result_path = (fs::path(source) / "result.json").string();
+    const nlohmann::json result = read_result_document(result_path);
+    const nlohmann::json* residual =
+        result.contains("capture") ? &result["capture"] : static_cast<nlohmann::json*>(nullptr);
+    if (!residual || !residual->contains("residual") || !(*residual)["residual"].is_object())
+      throw InputError(result_path, "/capture/residual", "is missing");
+    out.residual = (*residual)["residual"];
+    return out;
+  }
+  if (is_capture_path(source)) {
+    CaptureFileOptions options;
+    options.model = model_reference;
+    return capture_from_import(source, import_capture_file(source, options));
+  }
+  throw InputError(what_names, "",
+                   source + " is neither an import folder nor a motion capture (.bvh)");
+}
+
+/// The page's "capture": the capture's trajectory as a stage (thinned as the athlete's) with
+/// its source and residual figures. Its segments must be the athlete's.
+nlohmann::json capture_json(const CaptureTrajectory& capture, const BodyModel& model) {
+  bool same = capture.segments.size() == model.segments.size();
+  for (std::size_t i = 0; same && i < model.segments.size(); ++i)
+    same = capture.segments[i] == model.segments[i].name;
+  if (!same)
+    throw InputError(capture.file, "",
+                     "its segments are not those of the athlete's model " + model.name);
+  if (capture.samples.size() < 2) throw InputError(capture.file, "", "holds fewer than 2 samples");
+  nlohmann::json out = stage_json("capture", capture.samples, {});
+  out["source"] = capture.source;
+  out["residual"] = capture.residual;
+  return out;
+}
+
+/// The page's data from a `saltus optimize` folder: its files as written; the capture `capture`
+/// names, else the one its motion came from.
+nlohmann::json optimize_folder_data(const std::string& dir, const std::string& capture) {
   const ResultFolder folder = read_result_folder(dir);
   if (!folder.after)
     throw InputError((fs::path(dir) / "result.json").string(), "/after",
@@ -224,12 +318,43 @@ nlohmann::json optimize_folder_data(const std::string& dir) {
       stage_json("after", folder.after->samples, folder.result.optimization->keyframe_times_after)};
   data["parabola"] = parabola_json(after.motion.takeoff, folder.result.flight_time_s);
   data["apparatus"] = apparatus_json(after.model, after.motion.takeoff, folder.after->samples);
+  const std::string found =
+      capture.empty() ? capture_of_motion_file(folder.result.motion_file) : capture;
+  if (!found.empty())
+    data["capture"] = capture_json(
+        load_capture(found, (fs::path(dir) / "model.json").string(),
+                     capture.empty() ? (fs::path(dir) / "result.json").string() : "--capture"),
+        after.model);
   return data;
 }
 
-/// The page's data from a motion, a capture or an `import` folder, evaluated as `evaluate` does.
-nlohmann::json motion_data(const std::string& source) {
-  const MotionFile file = load_export_source(source);
+/// The model a capture is imported onto beside `file`: the one its motion names, found as the
+/// motion verbs find it, else the model's name.
+std::string motion_model_reference(const MotionFile& file) {
+  const std::string path =
+      file.path.empty() ? "" : resolve_model_path(file.motion.model, file.path);
+  return path.empty() ? file.model.name : path;
+}
+
+/// The page's data from a motion, a capture (its picked keyframes) or an `import` folder (its
+/// keyframes.motion.json), evaluated as `evaluate` does, with the capture `capture` names, else
+/// the one the source came from.
+nlohmann::json motion_data(const std::string& source, const std::string& capture) {
+  MotionFile file;
+  std::optional<CaptureTrajectory> own;
+  if (fs::is_directory(source) && is_import_folder(source)) {
+    file = load_motion_file((fs::path(source) / "keyframes.motion.json").string());
+  } else if (!fs::is_directory(source) && is_capture_path(source)) {
+    // As load_motion_or_capture reads it, keeping the import for the capture's figure.
+    const CaptureFile imported = import_capture_file(source);
+    file.path = source;
+    file.model = imported.model;
+    file.motion = imported.import.keyframes;
+    file.motion.model = imported.model_reference;
+    if (capture.empty()) own = capture_from_import(source, imported);
+  } else {
+    file = load_export_source(source);
+  }
   const MotionEvaluation evaluation = evaluate_motion(file.motion, file.model);
   nlohmann::json data;
   data["kind"] = "motion";
@@ -246,6 +371,17 @@ nlohmann::json motion_data(const std::string& source) {
   data["stages"] = {stage_json("before", evaluation.samples, evaluation.keyframe_times)};
   data["parabola"] = parabola_json(file.motion.takeoff, file.motion.flight_time());
   data["apparatus"] = apparatus_json(file.model, file.motion.takeoff, evaluation.samples);
+  if (own) {
+    data["capture"] = capture_json(*own, file.model);
+  } else {
+    const std::string found = !capture.empty()           ? capture
+                              : fs::is_directory(source) ? (is_import_folder(source) ? source : "")
+                                                         : capture_of_motion_file(source);
+    if (!found.empty())
+      data["capture"] = capture_json(
+          load_capture(found, motion_model_reference(file), capture.empty() ? source : "--capture"),
+          file.model);
+  }
   return data;
 }
 
@@ -260,10 +396,12 @@ std::string today_utc() {
 
 }  // namespace
 
-nlohmann::json flight_page_data(const std::string& source, const std::string& date) {
+nlohmann::json flight_page_data(const std::string& source, const std::string& date,
+                                const std::string& capture) {
   const bool optimize_folder =
       fs::is_directory(source) && fs::is_regular_file(fs::path(source) / "optimized.motion.json");
-  nlohmann::json data = optimize_folder ? optimize_folder_data(source) : motion_data(source);
+  nlohmann::json data =
+      optimize_folder ? optimize_folder_data(source, capture) : motion_data(source, capture);
   data["format"] = kFlightPageFormat;
   data["source"] = source;
   data["date"] = date;
@@ -271,8 +409,9 @@ nlohmann::json flight_page_data(const std::string& source, const std::string& da
   return data;
 }
 
-FlightPageSummary export_flight_page(const std::string& source, const std::string& out_path) {
-  const nlohmann::json data = flight_page_data(source, today_utc());
+FlightPageSummary export_flight_page(const std::string& source, const std::string& out_path,
+                                     const std::string& capture) {
+  const nlohmann::json data = flight_page_data(source, today_utc(), capture);
   require_finite(data, source);
   const std::string html = flight_page_html(data);
   save_flight_page(out_path, html);
@@ -282,6 +421,7 @@ FlightPageSummary export_flight_page(const std::string& source, const std::strin
   summary.optimised = data["stages"].size() > 1;
   summary.frames = static_cast<int>(data["stages"][0]["t"].size());
   summary.bytes = html.size();
+  if (data.contains("capture")) summary.capture = data["capture"]["source"].get<std::string>();
   return summary;
 }
 

@@ -17,10 +17,18 @@ inline constexpr int kFlightPageMaxFrames = 1001;
 
 /// The page's data ("format": kFlightPageFormat) for `source`: a result folder of `optimize`
 /// (result.json, model.json, optimized.motion.json and both trajectories: stages "before" and
-/// "after", the figures of result.json), or anything `export` reads otherwise (a motion file, a
-/// capture, an `import` folder: evaluated with the default options, one stage "before").
+/// "after", the figures of result.json), or a motion file, a capture (its picked keyframes) or
+/// an `import` folder (its keyframes.motion.json), evaluated with the default options: one stage
+/// "before".
+///
+/// The motion capture drawn beside the athlete ("capture": its own trajectory and residual) is
+/// `capture` when given (an `import` folder or a BVH file), else the one the source came from:
+/// the source itself when it is a capture or an `import` folder; the `import` folder a motion
+/// file lies in; for an `optimize` folder, the file its result.json's `motion_file` names (as
+/// given, read from the current folder), by the same two rules. No capture found: none drawn.
 /// `date` goes into the title block as given. Bad input throws InputError naming the file.
-nlohmann::json flight_page_data(const std::string& source, const std::string& date);
+nlohmann::json flight_page_data(const std::string& source, const std::string& date,
+                                const std::string& capture = "");
 
 /// What export_flight_page wrote.
 struct FlightPageSummary {
@@ -28,11 +36,13 @@ struct FlightPageSummary {
   std::string model;       ///< the body model's name
   bool optimised = false;  ///< the page has an "after" stage
   int frames = 0;          ///< frames of the first stage
+  std::string capture;     ///< the capture drawn beside the athlete ("" for none)
   std::size_t bytes = 0;   ///< size of the page
 };
 
 /// Writes the page of `source` to `out_path` (save_flight_page: atomic, never over a file Saltus
-/// did not write), dated today (UTC, YYYY-MM-DD).
-FlightPageSummary export_flight_page(const std::string& source, const std::string& out_path);
+/// did not write), dated today (UTC, YYYY-MM-DD); `capture` as for flight_page_data.
+FlightPageSummary export_flight_page(const std::string& source, const std::string& out_path,
+                                     const std::string& capture = "");
 
 }  // namespace saltus
