@@ -1,12 +1,8 @@
 #include "saltus/formats/flight_page.h"
 
-#include <fcntl.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
-#include <cerrno>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -55,10 +51,6 @@ std::string non_finite_at(const nlohmann::json& value, const std::string& pointe
     }
   }
   return "";
-}
-
-std::string page_system_reason(int error) {
-  return std::strerror(error);
 }
 
 }  // namespace
@@ -130,52 +122,11 @@ bool is_flight_page(const std::string& path) {
 }
 
 void save_flight_page(const std::string& path, const std::string& html) {
-  const fs::path target(path);
-  if (target.filename().empty()) throw InputError(path, "", "names a folder, not a file");
-  struct stat info {};
-  if (::lstat(path.c_str(), &info) == 0) {
-    if (S_ISLNK(info.st_mode))
-      throw InputError(path, "", "is a symbolic link; Saltus writes only to a file of its own");
-    if (S_ISDIR(info.st_mode)) throw InputError(path, "", "is a folder; give a file name");
-    if (!is_flight_page(path))
-      throw InputError(path, "",
-                       "exists and is not a flight page Saltus wrote; it is left as it is "
-                       "(remove it or choose another --out)");
-  }
-  const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-  if (!fs::is_directory(parent))
-    throw InputError(path, "", "its folder " + parent.string() + " does not exist");
-  const fs::path temporary =
-      parent / ("." + target.filename().string() + ".saltus-tmp-" + std::to_string(::getpid()));
-  const auto fail = [&](int error) {
-    ::unlink(temporary.c_str());
-    return OutputError(
-        "cannot write " + path + ": " + page_system_reason(error) + "; nothing was changed", false);
-  };
-  const int fd =
-      ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0644);
-  if (fd < 0) throw OutputError("cannot write " + path + ": " + page_system_reason(errno), false);
-  std::size_t done = 0;
-  while (done < html.size()) {
-    const ssize_t n = ::write(fd, html.data() + done, html.size() - done);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      const int error = errno;
-      ::close(fd);
-      throw fail(error);
-    }
-    done += static_cast<std::size_t>(n);
-  }
-  const bool synced = ::fsync(fd) == 0;
-  const int sync_error = errno;
-  if (::close(fd) != 0) throw fail(errno);
-  if (!synced) throw fail(sync_error);
-  // The target may have become someone else's file while the page was written.
-  if (::lstat(path.c_str(), &info) == 0 && (!S_ISREG(info.st_mode) || !is_flight_page(path))) {
-    ::unlink(temporary.c_str());
-    throw InputError(path, "", "appeared meanwhile and is not a flight page Saltus wrote");
-  }
-  if (::rename(temporary.c_str(), path.c_str()) != 0) throw fail(errno);
+  write_output_file(path, html, [](const std::string& existing) -> std::string {
+    return is_flight_page(existing) ? ""
+                                    : "exists and is not a flight page Saltus wrote; it is left as "
+                                      "it is (remove it or choose another --out)";
+  });
 }
 
 }  // namespace saltus

@@ -27,11 +27,11 @@ nlohmann::json read_flight_page_data(const std::string& path);
 /// True when `path` is a regular file whose head names kFlightPageGenerator.
 bool is_flight_page(const std::string& path);
 
-/// Writes `html` to `path`: into a temporary file beside it, then renamed over it, so `path` is
-/// at every instant absent, the old or the new page. Refuses (InputError naming `path`, nothing
-/// written) a folder, a link, a missing parent folder, or an existing file that is not a page
-/// Saltus wrote; throws OutputError naming `path` when the system refuses (disk full, no
-/// permission).
+/// Writes `html` to `path` through write_output_file (output_folder.h): at every instant absent,
+/// the old or the new page; missing parent folders are created. Refuses (InputError naming
+/// `path`, nothing written) a folder, a link, or an existing file that is not a page Saltus
+/// wrote (is_flight_page); throws OutputError naming `path` when the system refuses (disk full,
+/// no permission).
 void save_flight_page(const std::string& path, const std::string& html);
 
 }  // namespace saltus

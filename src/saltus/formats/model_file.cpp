@@ -7,8 +7,6 @@
 #include <nlohmann/json.hpp>
 #include <unordered_map>
 
-#include <unistd.h>
-
 #include "saltus/base/input_error.h"
 #include "saltus/base/json_reader.h"
 #include "saltus/base/text_format.h"
@@ -349,39 +347,15 @@ std::string foreign_model_file(const std::filesystem::path& path) {
 }  // namespace
 
 void save_body_model_file(const std::string& path, const BodyModel& model) {
-  namespace fs = std::filesystem;
-  if (path.empty()) throw InputError("--out", "", "the output file path is empty");
-  const fs::path target = fs::absolute(path).lexically_normal();
-  if (target.filename().empty()) throw InputError(path, "", "names a folder, not a file");
-  std::error_code ec;
-  if (fs::exists(fs::symlink_status(target, ec))) {
-    const std::string reason = foreign_model_file(target);
-    if (!reason.empty())
-      throw InputError(path, "",
-                       reason +
-                           "; Saltus replaces only model files it wrote: give a new file name "
-                           "or move this one away");
-  }
-  const std::string text = body_model_to_json(model).dump(2) + "\n";
-  fs::create_directories(target.parent_path(), ec);
-  if (ec)
-    throw OutputError(
-        "cannot create the folder " + target.parent_path().string() + ": " + ec.message(), false);
-  const fs::path temporary = target.parent_path() / ("." + target.filename().string() + ".tmp-" +
-                                                     std::to_string(::getpid()));
-  try {
-    write_text(temporary.string(), text);
-  } catch (const OutputError& e) {
-    fs::remove(temporary, ec);
-    throw OutputError(path + ": " + e.what(), false);
-  }
-  fs::rename(temporary, target, ec);
-  if (ec) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    throw OutputError(
-        "cannot move " + path + " into place: " + ec.message() + "; nothing was changed", false);
-  }
+  write_output_file(path, body_model_to_json(model).dump(2) + "\n",
+                    [](const std::string& existing) -> std::string {
+                      const std::string reason = foreign_model_file(existing);
+                      return reason.empty()
+                                 ? ""
+                                 : reason +
+                                       "; Saltus replaces only model files it wrote: give a new "
+                                       "file name or move this one away";
+                    });
 }
 
 nlohmann::json model_summary_to_json(const ModelSummary& summary) {

@@ -30,9 +30,9 @@ BodyModel load_body_model(const std::string& path);
 /// Serialises to "saltus-model/1" (inertia written as 6 values). parse(to_json(m)) == m.
 nlohmann::json body_model_to_json(const BodyModel& model);
 
-/// Writes `model` to the file `path` (missing parent folders are created): first to a hidden
-/// temporary beside it, then renamed into place, so `path` is at every instant absent, the old
-/// file or the new complete one. An existing `path` is replaced only when it is a Saltus body
+/// Writes `model` to the file `path` through write_output_file (output_folder.h; missing parent
+/// folders are created), so `path` is at every instant absent, the old file or the new complete
+/// one. An existing `path` is replaced only when it is a Saltus body
 /// model (a JSON file whose "format" is "saltus-model/1"); anything else (another file, a folder,
 /// a symbolic link) is refused with InputError naming `path`. OutputError when the system
 /// refuses (no permission, disk full); nothing is changed then.

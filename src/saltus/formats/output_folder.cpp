@@ -754,21 +754,27 @@ bool write_all(int fd, const std::string& text) {
 
 }  // namespace
 
-void write_new_file(const std::string& path, const std::string& text) {
+void write_output_file(const std::string& path, const std::string& text, const OwnFileCheck& own) {
   if (path.empty()) throw InputError("--out", "", "the output file path is empty");
   std::error_code ec;
   const fs::path target = fs::absolute(path, ec).lexically_normal();
   if (ec) throw OutputError("cannot resolve " + path + ": " + ec.message(), false);
   if (target.filename().empty() || target.filename() == "." || target.filename() == "..")
     throw InputError(path, "", "names no file Saltus can write");
-  const auto exists = [&] {
-    struct stat info {};
-    return ::lstat(target.c_str(), &info) == 0;
-  };
-  const std::string refusal =
-      "exists; Saltus writes a file only where there is none (it cannot tell a file it wrote "
+  const std::string never =
+      "exists; Saltus writes this file only where there is none (it cannot tell a file it wrote "
       "from one it did not): remove it or choose another name";
-  if (exists()) throw InputError(path, "", refusal);
+  // Why the entry now at `target` may not be replaced; "" when there is none or it is Saltus's.
+  const auto refusal = [&]() -> std::string {
+    struct stat info {};
+    if (::lstat(target.c_str(), &info) != 0) return "";
+    if (!own) return never;
+    if (S_ISLNK(info.st_mode)) return "is a symbolic link; Saltus writes only to a file of its own";
+    if (S_ISDIR(info.st_mode)) return "is a folder, not a file Saltus wrote: give a file name";
+    if (!S_ISREG(info.st_mode)) return "is not a file Saltus wrote; it is left as it is";
+    return own(target.string());
+  };
+  if (const std::string why = refusal(); !why.empty()) throw InputError(path, "", why);
   const fs::path parent = target.parent_path();
   fs::create_directories(parent, ec);
   if (ec)
@@ -786,9 +792,12 @@ void write_new_file(const std::string& path, const std::string& text) {
           "cannot write " + path + ": " + system_reason(errno) + "; nothing was changed", false);
   }
   const int slot = register_slot(temporary, target.string(), "");
-  const auto fail = [&](int error, const std::string& what) {
+  const auto discard = [&] {
     ::unlink(temporary.c_str());
     unregister_slot(slot);
+  };
+  const auto fail = [&](int error, const std::string& what) {
+    discard();
     return OutputError(what + " " + path + ": " + system_reason(error) + "; nothing was changed",
                        false);
   };
@@ -798,6 +807,17 @@ void write_new_file(const std::string& path, const std::string& text) {
     throw fail(error, "cannot write");
   }
   if (::close(fd) != 0) throw fail(errno, "cannot write");
+  if (own) {
+    // The entry may have changed while the text was written.
+    if (const std::string why = refusal(); !why.empty()) {
+      discard();
+      throw InputError(path, "", why);
+    }
+    if (::rename(temporary.c_str(), target.c_str()) != 0)
+      throw fail(errno, "cannot move into place");
+    unregister_slot(slot);
+    return;
+  }
   if (::renameat2(AT_FDCWD, temporary.c_str(), AT_FDCWD, target.c_str(), RENAME_NOREPLACE) != 0) {
     int error = errno;
     if (error == EINVAL || error == ENOSYS) {
@@ -806,13 +826,16 @@ void write_new_file(const std::string& path, const std::string& text) {
       ::unlink(temporary.c_str());
     }
     if (error == EEXIST) {
-      ::unlink(temporary.c_str());
-      unregister_slot(slot);
-      throw InputError(path, "", refusal);
+      discard();
+      throw InputError(path, "", never);
     }
     if (error != 0) throw fail(error, "cannot move into place");
   }
   unregister_slot(slot);
+}
+
+void write_new_file(const std::string& path, const std::string& text) {
+  write_output_file(path, text);
 }
 
 }  // namespace saltus

@@ -11,6 +11,7 @@
 /// SIGHUP remove the temporary folder before the process ends, and the temporaries of runs that
 /// died anyway (SIGKILL, power loss) are removed by the next run that writes DIR.
 
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -95,14 +96,24 @@ class OutputFolder {
   bool committed_ = false;
 };
 
-/// Writes `text` as the new file `path` (export --out FILE): a single file is never replaced, as
-/// Saltus cannot tell a file it wrote from one it did not. The text goes to a hidden sibling
-/// `.NAME.saltus-tmp-<pid>-<n>` created with O_EXCL and O_NOFOLLOW (no planted link is followed,
-/// no other run's file is reused) and is moved into place only if `path` still does not exist
-/// (renameat2 RENAME_NOREPLACE, or link + unlink where the file system lacks it), so at every
-/// instant `path` is absent or complete. Missing parent folders are created. Throws InputError
-/// when `path` exists (exit 2), OutputError when the system refuses (exit 4); either way
-/// nothing is left behind.
+/// Says whether the existing regular file `path` is one Saltus wrote and may replace: "" if so,
+/// else why not (the problem of the InputError, e.g. "exists and is not a flight page Saltus
+/// wrote; ...").
+using OwnFileCheck = std::function<std::string(const std::string& path)>;
+
+/// Writes `text` as the single file `path` (export --out FILE, model files, flight pages). The
+/// text goes to a hidden sibling `.NAME.saltus-tmp-<pid>-<n>` created with O_EXCL and O_NOFOLLOW
+/// (no planted link is followed, no other run's file is reused) and is moved into place when
+/// complete, so at every instant `path` is the old or the new complete file. An existing `path`
+/// is replaced only when `own` says Saltus wrote it (a regular file; asked again just before the
+/// move); without `own` (a BVH has no room for a tag) never: the move is renameat2
+/// RENAME_NOREPLACE, or link + unlink where the file system lacks it. Missing parent folders are
+/// created. Throws InputError when `path` may not be written (exit 2), OutputError when the
+/// system refuses (exit 4); either way nothing is left behind.
+void write_output_file(const std::string& path, const std::string& text,
+                       const OwnFileCheck& own = {});
+
+/// write_output_file that never replaces anything: `path` must not exist.
 void write_new_file(const std::string& path, const std::string& text);
 
 /// Writes `text` to `path`. Throws OutputError naming the file as it will

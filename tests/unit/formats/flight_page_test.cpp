@@ -81,9 +81,11 @@ TEST(FlightPage, ReplacesItsOwnPageButNoOtherFile) {
   EXPECT_THROW(save_flight_page((dir / "link.html").string(), html), InputError);
   fs::create_directories(dir / "folder.html");
   EXPECT_THROW(save_flight_page((dir / "folder.html").string(), html), InputError);
-  EXPECT_THROW(save_flight_page((dir / "missing" / "x.html").string(), html), InputError);
-  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 4)
-      << "flight.html, notes.html, link.html, folder.html: no temporary left";
+  // A missing folder is created, as for every --out.
+  save_flight_page((dir / "missing" / "x.html").string(), html);
+  EXPECT_EQ(page_file_text(dir / "missing" / "x.html"), html);
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 5)
+      << "flight.html, notes.html, link.html, folder.html, missing/: no temporary left";
 }
 
 TEST(FlightPage, OnlyAPageSaltusWroteIsRecognised) {
