@@ -473,6 +473,7 @@ bool read_lock_record(int fd, std::vector<std::string>& recorded) {
 
 int acquire_lock(const std::string& lock_path, const std::string& shown,
                  std::vector<std::string>& recorded) {
+  int dead_holder_waits = 0;
   for (int attempt = 0; attempt < 64; ++attempt) {
     const int fd = ::open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
     if (fd < 0)
@@ -487,6 +488,19 @@ int acquire_lock(const std::string& lock_path, const std::string& shown,
       if (error == EWOULDBLOCK) {
         std::string pid = n > 0 ? std::string(text, static_cast<std::size_t>(n)) : "";
         pid = pid.substr(0, pid.find('\n'));
+        // The run that took the lock has died (a study killed with SIGKILL): its case
+        // processes, which share the lock, die with it a moment later (PR_SET_PDEATHSIG).
+        // Wait for them, up to 5 s, rather than report a run that no longer exists.
+        const bool digits =
+            !pid.empty() && pid.size() < 12 &&
+            std::all_of(pid.begin(), pid.end(), [](char c) { return c >= '0' && c <= '9'; });
+        if (digits && ::kill(static_cast<pid_t>(std::stol(pid)), 0) != 0 && errno == ESRCH &&
+            dead_holder_waits < 250) {
+          ++dead_holder_waits;
+          --attempt;
+          ::usleep(20000);
+          continue;
+        }
         throw OutputError("another saltus run" + (pid.empty() ? "" : " (pid " + pid + ")") +
                               " is writing " + shown +
                               " right now; nothing was written. Wait for it to finish and run "
