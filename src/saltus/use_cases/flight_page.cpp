@@ -313,9 +313,10 @@ nlohmann::json optimize_folder_data(const std::string& dir, const std::string& c
   data["body_weight_N"] =
       folder.result.body_weight_N.value_or(after.model.total_mass() * kStandardGravity);
   data["duration_s"] = folder.result.flight_time_s;
-  data["stages"] = {
-      stage_json("before", folder.before.samples, folder.result.keyframe_times_before),
-      stage_json("after", folder.after->samples, folder.result.optimization->keyframe_times_after)};
+  data["stages"] = nlohmann::json::array(
+      {stage_json("before", folder.before.samples, folder.result.keyframe_times_before),
+       stage_json("after", folder.after->samples,
+                  folder.result.optimization->keyframe_times_after)});
   data["parabola"] = parabola_json(after.motion.takeoff, folder.result.flight_time_s);
   data["apparatus"] = apparatus_json(after.model, after.motion.takeoff, folder.after->samples);
   const std::string found =
@@ -368,7 +369,10 @@ nlohmann::json motion_data(const std::string& source, const std::string& capture
   data["residual"] = {{"before", force_metrics_to_json(evaluation.metrics)}, {"after", nullptr}};
   data["body_weight_N"] = file.model.total_mass() * kStandardGravity;
   data["duration_s"] = file.motion.flight_time();
-  data["stages"] = {stage_json("before", evaluation.samples, evaluation.keyframe_times)};
+  // json::array explicitly: a braced list of one json is a copy of it under clang, an array
+  // under GCC.
+  data["stages"] =
+      nlohmann::json::array({stage_json("before", evaluation.samples, evaluation.keyframe_times)});
   data["parabola"] = parabola_json(file.motion.takeoff, file.motion.flight_time());
   data["apparatus"] = apparatus_json(file.model, file.motion.takeoff, evaluation.samples);
   if (own) {
