@@ -9,12 +9,13 @@
 #include "saltus/base/json_reader.h"
 #include "saltus/base/resources.h"
 #include "saltus/base/text_format.h"
-#include "saltus/evaluation/evaluate.h"
 #include "saltus/evaluation/flight_state.h"
 #include "saltus/evaluation/rotation_metrics.h"
+#include "saltus/evaluation/sampling.h"
 #include "saltus/formats/model_file.h"
 #include "saltus/formats/plausible_ranges.h"
 #include "saltus/formats/yeadon_measurements_file.h"
+#include "saltus/motion/interpolate.h"
 #include "saltus/use_cases/captures.h"
 
 namespace saltus {
@@ -141,22 +142,30 @@ MotionFile load_motion_for_athlete(const std::string& path, const std::string& m
   MotionFile athlete = load_motion_or_capture(path, model_override);
   if (model_override.empty()) return athlete;
   const MotionFile own = load_motion_or_capture(path, "");
-  const MotionEvaluation own_flight = evaluate_motion(own.motion, own.model);
+  // Only poses are needed (no dense residual check): the take-off pose for the inertias, and the
+  // flight on a uniform grid when the motion gives no L to fit one from.
+  const Trajectory<double> own_trajectory = motion_trajectory(own.motion, own.model);
+  const auto own_samples = [&](const std::vector<double>& times) {
+    return evaluate_trajectory(own.model, own_trajectory, times);
+  };
   TakeoffAdaptation adaptation;
   adaptation.own_model = own.model.name;
-  adaptation.own_angular_momentum = own.motion.takeoff.angular_momentum
-                                        ? *own.motion.takeoff.angular_momentum
-                                        : fit_flight_state(own_flight.samples).angular_momentum;
+  adaptation.own_angular_momentum =
+      own.motion.takeoff.angular_momentum
+          ? *own.motion.takeoff.angular_momentum
+          : fit_flight_state(own_samples(uniform_times(own.motion.flight_time(), kDefaultSamples)))
+                .angular_momentum;
   if (rule == TakeoffRule::kKeepMomentum) {
     adaptation.rule = "same angular momentum";
     adaptation.angular_momentum = adaptation.own_angular_momentum;
   } else {
     adaptation.rule = "same spin";
-    const MotionEvaluation athlete_flight = evaluate_motion(athlete.motion, athlete.model);
     const Eigen::Matrix3d own_inertia =
-        whole_body_inertia_about_com(own.model, own_flight.samples.front());
-    const Eigen::Matrix3d athlete_inertia =
-        whole_body_inertia_about_com(athlete.model, athlete_flight.samples.front());
+        whole_body_inertia_about_com(own.model, own_samples({0.0}).front());
+    const Eigen::Matrix3d athlete_inertia = whole_body_inertia_about_com(
+        athlete.model,
+        evaluate_trajectory(athlete.model, motion_trajectory(athlete.motion, athlete.model), {0.0})
+            .front());
     adaptation.angular_momentum =
         athlete_inertia * own_inertia.ldlt().solve(adaptation.own_angular_momentum);
   }
