@@ -1,6 +1,7 @@
 #include "saltus/formats/output_folder.h"
 
 #include <fcntl.h>
+#include <pthread.h>
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <sys/syscall.h>
@@ -286,6 +287,7 @@ struct Slot {
   char target[PATH_MAX];
   char lock[PATH_MAX];
   char moved_away[PATH_MAX];  ///< the old folder while the rename fallback has moved it away
+  int lock_fd = -1;           ///< the lock this run holds (-1: none), see close_locks_in_child
 };
 
 Slot g_slots[kSlots];
@@ -297,8 +299,8 @@ bool copy_path(char* to, const std::string& from) {
   return true;
 }
 
-int register_slot(const std::string& temporary, const std::string& target,
-                  const std::string& lock) {
+int register_slot(const std::string& temporary, const std::string& target, const std::string& lock,
+                  int lock_fd = -1) {
   std::lock_guard<std::mutex> guard(g_slots_mutex);
   for (int i = 0; i < kSlots; ++i) {
     Slot& s = g_slots[i];
@@ -310,6 +312,7 @@ int register_slot(const std::string& temporary, const std::string& target,
       return -1;  // no interrupt clean-up; the next run removes what is left
     }
     s.moved_away[0] = '\0';
+    s.lock_fd = lock_fd;
     s.state.store(kActive);
     return i;
   }
@@ -411,11 +414,24 @@ void on_interrupt(int signal_number) {
   ::raise(signal_number);
 }
 
+/// In a child made by fork() without exec (a study's case process, which ends with _exit): closes
+/// its inherited copies of the runs' output locks. An flock belongs to the open file, so a copy
+/// would keep the lock held after the run that took it died (a study killed with SIGKILL) for as
+/// long as its case processes live; without them the folder is free the moment the run ends.
+void close_locks_in_child() {
+  for (Slot& s : g_slots)
+    if (s.state.load() == kActive && s.lock_fd >= 0) {
+      ::close(s.lock_fd);
+      s.lock_fd = -1;
+    }
+}
+
 /// Installs on_interrupt for SIGINT, SIGTERM and SIGHUP where they have their default action
-/// (a program that handles them itself keeps its handler).
+/// (a program that handles them itself keeps its handler), and close_locks_in_child.
 void install_interrupt_handlers() {
   static std::once_flag once;
   std::call_once(once, [] {
+    ::pthread_atfork(nullptr, nullptr, close_locks_in_child);
     for (const int signal_number : {SIGINT, SIGTERM, SIGHUP}) {
       struct sigaction current {};
       if (::sigaction(signal_number, nullptr, &current) != 0) continue;
@@ -430,9 +446,6 @@ void install_interrupt_handlers() {
 
 // ---- Locks and stale temporaries --------------------------------------------------------------
 
-/// Takes the lock `.NAME.lock` of a target: an flock, which the kernel drops when the process
-/// ends however it ends. The holder removes the file when it is done; a waiter that locked a
-/// file removed meanwhile (its inode no longer at the path) tries again.
 /// Appends one line to the lock file: the names of the run's temporary folders are recorded
 /// there before they are created, so the next run removes only what a run of Saltus made.
 void record_in_lock(int fd, const std::string& line) {
@@ -471,9 +484,11 @@ bool read_lock_record(int fd, std::vector<std::string>& recorded) {
   return true;
 }
 
+/// Takes the lock `.NAME.lock` of a target: an flock, which the kernel drops when the process
+/// ends however it ends. The holder removes the file when it is done; a waiter that locked a
+/// file removed meanwhile (its inode no longer at the path) tries again.
 int acquire_lock(const std::string& lock_path, const std::string& shown,
                  std::vector<std::string>& recorded) {
-  int dead_holder_waits = 0;
   for (int attempt = 0; attempt < 64; ++attempt) {
     const int fd = ::open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
     if (fd < 0)
@@ -488,19 +503,6 @@ int acquire_lock(const std::string& lock_path, const std::string& shown,
       if (error == EWOULDBLOCK) {
         std::string pid = n > 0 ? std::string(text, static_cast<std::size_t>(n)) : "";
         pid = pid.substr(0, pid.find('\n'));
-        // The run that took the lock has died (a study killed with SIGKILL): its case
-        // processes, which share the lock, die with it a moment later (PR_SET_PDEATHSIG).
-        // Wait for them, up to 5 s, rather than report a run that no longer exists.
-        const bool digits =
-            !pid.empty() && pid.size() < 12 &&
-            std::all_of(pid.begin(), pid.end(), [](char c) { return c >= '0' && c <= '9'; });
-        if (digits && ::kill(static_cast<pid_t>(std::stol(pid)), 0) != 0 && errno == ESRCH &&
-            dead_holder_waits < 250) {
-          ++dead_holder_waits;
-          --attempt;
-          ::usleep(20000);
-          continue;
-        }
         throw OutputError("another saltus run" + (pid.empty() ? "" : " (pid " + pid + ")") +
                               " is writing " + shown +
                               " right now; nothing was written. Wait for it to finish and run "
@@ -620,7 +622,7 @@ OutputFolder::OutputFolder(std::string final_path) {
       throw OutputError(
           "cannot create a folder in " + parent.string() + ": " + system_reason(error), false);
     }
-    slot_ = register_slot(temporary_path_, final_path_, lock_path_);
+    slot_ = register_slot(temporary_path_, final_path_, lock_path_, lock_fd_);
   } catch (...) {
     temporary_path_.clear();
     release();

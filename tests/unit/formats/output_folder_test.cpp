@@ -7,8 +7,12 @@
 
 #include "saltus/formats/output_folder.h"
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -298,6 +302,40 @@ TEST(OutputFolder, RemovesWhatDeadRunsLeftAndRestoresAMovedAwayFolder) {
                                                          ".out.tmp-1-0", ".out.old-2-0"}));
   EXPECT_TRUE(fs::exists(out / "result.json")) << "the old folder is back";
   EXPECT_EQ(test::read_text((dir.path() / ".out.tmp-1-0/notes.txt").string()), "mine");
+}
+
+TEST(OutputFolder, AKilledRunsForkedChildrenDoNotKeepItsLock) {
+  // A study (the "run" here) forks its case processes while it holds the folder's lock. Killed
+  // with SIGKILL, it cannot remove the lock file; a case process still alive must not hold the
+  // lock, or the next run would find the folder busy.
+  test::TempDir dir;
+  const std::string out = dir / "out";
+  int ready[2];
+  ASSERT_EQ(::pipe(ready), 0);
+  const pid_t run = ::fork();
+  ASSERT_GE(run, 0);
+  if (run == 0) {
+    ::close(ready[0]);
+    OutputFolder folder(out);
+    const pid_t case_process = ::fork();
+    if (case_process == 0) {
+      ::sleep(10);
+      _exit(0);
+    }
+    if (::write(ready[1], &case_process, sizeof case_process) != sizeof case_process) _exit(1);
+    ::pause();
+    _exit(0);
+  }
+  ::close(ready[1]);
+  pid_t case_process = -1;
+  ASSERT_EQ(::read(ready[0], &case_process, sizeof case_process),
+            static_cast<ssize_t>(sizeof case_process));
+  ::close(ready[0]);
+  ::kill(run, SIGKILL);
+  ::waitpid(run, nullptr, 0);
+  EXPECT_EQ(::kill(case_process, 0), 0) << "the case process outlives the run";
+  EXPECT_NO_THROW(OutputFolder again(out));
+  ::kill(case_process, SIGKILL);
 }
 
 TEST(OutputFolder, LeavesAUsersFileWithTheLocksName) {
