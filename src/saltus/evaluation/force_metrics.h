@@ -26,12 +26,13 @@ ForceMetrics force_metrics(const std::vector<SampleRecord>& samples);
 
 /// The dense check behind every figure Saltus reports (docs/formats.md: the motion's true residual,
 /// whatever resolution the optimiser worked at): the root wrench on every knot span at
-/// equally spaced points, at least kCheckPointsPerSpan intervals per span, at most
+/// equally spaced points, at first at least kCheckPointsPerSpan intervals per span, at most
 /// kCheckMaxSpacing apart and at least `min_points` over the flight, integrated span by span by
-/// Simpson's rule (the wrench is smooth
-/// on a span and kinks only at knots), the peaks taken over every point. Independent of the
-/// optimiser's own quadrature (Gauss–Lobatto nodes on the spans), so force the optimiser
-/// hid between its nodes shows here.
+/// Simpson's rule (the wrench is smooth on a span and kinks only at knots); then every spacing
+/// is halved until J changes by at most kCheckRelativeChange·J + kCheckObjectiveFloor (at most
+/// kCheckMaxHalvings times), since a residual an optimiser left can wiggle between its nodes
+/// faster than the first grid resolves (M7 optimised: 2.7 % off at 2.5 ms). Peaks over every
+/// point. Independent of the optimiser's own quadrature (Gauss–Lobatto nodes on the spans).
 /// The largest load one joint carried over the dense check's points: the wrench the parent exerts
 /// on the child segment's subtree at their joint (inverse dynamics' joint wrench, child frame).
 struct JointLoadPeak {
@@ -45,13 +46,19 @@ struct DenseCheck {
   ForceMetrics metrics;
   /// Per segment, the load at its joint (segment 0's is the root wrench itself).
   std::vector<JointLoadPeak> joint_peaks;
-  int points = 0;  ///< wrench evaluations used
+  int points = 0;                    ///< wrench evaluations used
+  int halvings = 0;                  ///< times every spacing was halved
+  double last_halving_change = 0.0;  ///< |ΔJ| at the last halving (N²)
+  bool converged = false;            ///< the last halving changed J by no more than the tolerance
   /// Per knot span: its start and end (s) and ∫ Σ F_i² dt over it (N²·s), where the residual
   /// lives.
   std::vector<double> span_start, span_end, span_integral;
 };
 inline constexpr int kCheckPointsPerSpan = 10;
-inline constexpr double kCheckMaxSpacing = 0.0025;  ///< s
+inline constexpr double kCheckMaxSpacing = 0.0025;  ///< s, on the first grid
+inline constexpr double kCheckRelativeChange = 1e-3;
+inline constexpr double kCheckObjectiveFloor = 1e-8;  ///< N² (an average root force of 4e-5 N)
+inline constexpr int kCheckMaxHalvings = 4;
 
 DenseCheck dense_check(const BodyModel& model, const Trajectory<double>& trajectory,
                        int min_points);

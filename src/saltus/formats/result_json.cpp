@@ -86,8 +86,13 @@ ResultJson::ResidualCheck residual_check(const DenseCheck& check) {
   ResultJson::ResidualCheck c;
   c.rule = "Simpson's rule on every knot span, " + std::to_string(kCheckPointsPerSpan) +
            " or more intervals per span, " + format_number("%g", kCheckMaxSpacing) +
-           " s apart or closer, and at least the samples over the flight";
+           " s apart or closer, and at least the samples over the flight; every spacing halved "
+           "until the objective changes by at most " +
+           format_number("%g", 100 * kCheckRelativeChange) + " % (" +
+           std::to_string(kCheckMaxHalvings) + " halvings at most)";
   c.points = check.points;
+  c.halvings = check.halvings;
+  c.converged = check.converged;
   return c;
 }
 
@@ -240,6 +245,8 @@ nlohmann::json result_to_json(const ResultJson& r) {
   j["keyframe_times_before"] = r.keyframe_times_before;
   if (const auto& c = r.residual_check) {
     j["residual_check"] = {{"rule", c->rule}, {"points", c->points}};
+    if (c->halvings) j["residual_check"]["halvings"] = *c->halvings;
+    if (c->converged) j["residual_check"]["converged"] = *c->converged;
     if (c->optimizer_agrees) j["residual_check"]["optimizer_agrees"] = *c->optimizer_agrees;
   }
   const KeyframeErrors* e = r.keyframe_errors ? &*r.keyframe_errors : nullptr;
@@ -335,6 +342,8 @@ ResultJson parse_result_json(const nlohmann::json& document, const std::string& 
     ResultJson::ResidualCheck c;
     c.rule = check->at("rule").as_string();
     c.points = check->at("points").as_int();
+    if (const auto halvings = check->find("halvings")) c.halvings = halvings->as_int();
+    if (const auto converged = check->find("converged")) c.converged = read_bool(*converged);
     if (const auto agrees = check->find("optimizer_agrees"))
       c.optimizer_agrees = read_bool(*agrees);
     r.residual_check = c;

@@ -48,6 +48,10 @@ struct ResultJson {
   struct ResidualCheck {
     std::string rule;
     int points = 0;
+    /// Times the check halved its spacing, and whether J then changed by no more than its
+    /// tolerance; missing from files before the halving.
+    std::optional<int> halvings;
+    std::optional<bool> converged;
     std::optional<bool> optimizer_agrees;  ///< optimisations: its quadrature agrees with it
   };
   std::optional<ResidualCheck> residual_check;

@@ -93,6 +93,8 @@ TEST(DenseCheck, IsTheIntegralOfTheRootWrenchSpanBySpan) {
     EXPECT_NEAR(check.metrics.rms_force_N, fine.rms_force_N, 1e-6 * fine.rms_force_N);
     EXPECT_NEAR(check.metrics.rms_moment_Nm, fine.rms_moment_Nm, 1e-6 * fine.rms_moment_Nm);
     EXPECT_NEAR(check.metrics.avg_root_force, std::sqrt(check.metrics.objective / 6), 1e-12);
+    EXPECT_TRUE(check.converged);
+    EXPECT_GE(check.halvings, 1);
     // Peaks over points at most kCheckMaxSpacing apart: within a hair of the fine grid's.
     EXPECT_LE(check.metrics.max_force_N, fine.max_force_N * (1 + 1e-9));
     EXPECT_GT(check.metrics.max_force_N, fine.max_force_N * (1 - 1e-3));

@@ -56,7 +56,7 @@ auto fields(const ResultJson::Simulation& s) {
                   s.landing_joint_error_deg, s.landing_com_error_m, s.landing_root_vs_motion_deg);
 }
 auto fields(const ResultJson::ResidualCheck& c) {
-  return std::tie(c.rule, c.points, c.optimizer_agrees);
+  return std::tie(c.rule, c.points, c.halvings, c.converged, c.optimizer_agrees);
 }
 auto fields(const OptimizationResult::Level& l) {
   return std::tie(l.subdivisions, l.avg_root_force, l.iterations, l.status);
@@ -141,8 +141,13 @@ ResultJson random_result(ResultJson::Kind kind, std::mt19937& rng) {
   r.keyframe_times_before = times(r.keyframes);
   if (kind != ResultJson::Kind::kSimulation) {
     r.keyframe_errors = KeyframeErrors{positive(rng), positive(rng), positive(rng)};
-    r.residual_check = ResultJson::ResidualCheck{"rule " + std::to_string(rng()),
-                                                 static_cast<int>(rng() % 1000), std::nullopt};
+    r.residual_check =
+        ResultJson::ResidualCheck{"rule " + std::to_string(rng()), static_cast<int>(rng() % 1000),
+                                  std::nullopt, std::nullopt, std::nullopt};
+    if (rng() % 2) {
+      r.residual_check->halvings = static_cast<int>(rng() % 5);
+      r.residual_check->converged = rng() % 2;
+    }
     if (kind == ResultJson::Kind::kOptimization) r.residual_check->optimizer_agrees = rng() % 2;
   }
   if (kind != ResultJson::Kind::kOptimization)
