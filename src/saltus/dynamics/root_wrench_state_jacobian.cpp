@@ -1,51 +1,13 @@
 #include "saltus/dynamics/root_wrench_state_jacobian.h"
 
+#include "saltus/dynamics/spatial_cross_matrices.h"
+
 namespace saltus {
 
 namespace {
 
 using Mat6d = Mat6<double>;
 using Vec6d = Vec6<double>;
-/// A 6×3 block: a spatial quantity's derivative with respect to a 3-vector.
-using Mat63d = Eigen::Matrix<double, 6, 3>;
-
-/// crm(v)·S = [[ω]×; [v_lin]×]: m ↦ v ×m m restricted to pure rotations m = [δ; 0].
-Mat63d motion_cross_rotation(const Vec6d& v) {
-  Mat63d m;
-  m.topRows<3>() = skew(Eigen::Vector3d(v.head<3>()));
-  m.bottomRows<3>() = skew(Eigen::Vector3d(v.tail<3>()));
-  return m;
-}
-
-/// crf(v) = −crm(v)ᵀ: f ↦ v ×* f (spatial.h's cross_force as a matrix).
-Mat6d force_cross_matrix(const Vec6d& v) {
-  const Eigen::Matrix3d w = skew(Eigen::Vector3d(v.head<3>()));
-  Mat6d m = Mat6d::Zero();
-  m.topLeftCorner<3, 3>() = w;
-  m.topRightCorner<3, 3>() = skew(Eigen::Vector3d(v.tail<3>()));
-  m.bottomRightCorner<3, 3>() = w;
-  return m;
-}
-
-/// The matrix of δv ↦ δv ×* h for a fixed force h = [n; f]: [[−[n]×, −[f]×]; [−[f]×, 0]]. With
-/// force_cross_matrix it differentiates the velocity product v ×* I v.
-Mat6d cross_force_by_velocity(const Vec6d& h) {
-  const Eigen::Matrix3d f = skew(Eigen::Vector3d(h.tail<3>()));
-  Mat6d m = Mat6d::Zero();
-  m.topLeftCorner<3, 3>() = -skew(Eigen::Vector3d(h.head<3>()));
-  m.topRightCorner<3, 3>() = -f;
-  m.bottomLeftCorner<3, 3>() = -f;
-  return m;
-}
-
-/// crm(Sω) = diag([ω]×, [ω]×): m ↦ Sω ×m m.
-Mat6d joint_rate_cross_matrix(const Eigen::Vector3d& omega) {
-  const Eigen::Matrix3d w = skew(omega);
-  Mat6d m = Mat6d::Zero();
-  m.topLeftCorner<3, 3>() = w;
-  m.bottomRightCorner<3, 3>() = w;
-  return m;
-}
 
 }  // namespace
 
@@ -53,7 +15,10 @@ RootWrenchStateJacobian::RootWrenchStateJacobian(const BodyModel& model)
     : joint(model.size()),
       composite_inertia(model.size()),
       parent_velocity_sensitivity(model.size()),
-      root_from_segment_force(model.size()) {}
+      root_from_segment_force(model.size()),
+      segment_columns(model.size()),
+      parent_velocity(model.size()),
+      parent_acceleration(model.size()) {}
 
 void root_wrench_state_jacobian(const BodyModel& model, const DynamicsData<double>& data,
                                 const BodyState<double>& state, RootWrenchStateJacobian& out) {
@@ -88,7 +53,8 @@ void root_wrench_state_jacobian(const BodyModel& model, const DynamicsData<doubl
   // Forward sweep: force transforms to the root, then each joint's 9 columns.
   const Eigen::Matrix3d root_rotation_t = data.world_rotation[0].transpose();
   for (int i = 0; i < n; ++i) {
-    Vec6d parent_velocity, parent_acceleration;  // u_i, b_i: the parent's, in i's frame
+    Vec6d& parent_velocity = out.parent_velocity[i];  // u_i, b_i: the parent's, in i's frame
+    Vec6d& parent_acceleration = out.parent_acceleration[i];
     Mat6d& to_root = out.root_from_segment_force[i];
     if (i == 0) {
       to_root.setIdentity();
@@ -107,7 +73,7 @@ void root_wrench_state_jacobian(const BodyModel& model, const DynamicsData<doubl
     const Mat63d u_cross = motion_cross_rotation(parent_velocity);
 
     // Columns in segment i's frame, angular rows first.
-    Eigen::Matrix<double, 6, kJointStateTangentSize> local;
+    Eigen::Matrix<double, 6, kJointStateTangentSize>& local = out.segment_columns[i];
     // η: q·exp(η) rotates i's frame by 2η (quaternion exp, rotation angle 2|η|), so u and b,
     // fixed in the parent, turn by du = u ×m S·2dη, db = b ×m S·2dη. For a non-root joint the
     // transform to the parent turns too: X*(η)·F_i changes by X*_i·(S·2dη ×* F_i), and

@@ -45,6 +45,9 @@ struct RootWrenchStateJacobian {
   /// seen in i's frame, with b_i fixed (v_i and the velocity product in a_i both move).
   std::vector<Mat6<double>> parent_velocity_sensitivity;
   std::vector<Mat6<double>> root_from_segment_force;  ///< X*_{root←i}, force transform
+  /// dF_i/d(η_i, ω_i, α_i) in segment i's frame, the turn of X*_i included (i > 0).
+  std::vector<Eigen::Matrix<double, 6, kJointStateTangentSize>> segment_columns;
+  std::vector<Vec6<double>> parent_velocity, parent_acceleration;  ///< u_i, b_i
 };
 
 /// Fills `out` for the state whose inverse dynamics is in `data`.

@@ -1,0 +1,52 @@
+#pragma once
+/// @file
+/// Analytic first derivatives of every joint's moment (the moment the parent applies on the
+/// child's subtree across a ball joint, child frame, about the joint centre: the `n` of
+/// DynamicsData::joint_wrench) with respect to every joint's state and the root translation's
+/// rates. What the optimiser's joint-load term needs (optim/terms/joint_load_term.h).
+///
+/// Built on root_wrench_state_jacobian's sweep (Ic_i and K_i for every segment): joint j's
+/// subtree wrench F_j depends on
+///  - a descendant i's state (i in subtree(j)) through F_i, as the root wrench does, brought to
+///    j's frame by the fixed transforms between them; j's own η without the turn of X*_j, since
+///    F_j is wanted in j's own (turning) frame;
+///  - an ancestor a's state through j's parent's velocity and acceleration only:
+///    dF_j = K_j·du_j + Ic_j·db_j, with (du, db) carried down the chain from a to j
+///    (dv_c = X_c⁻¹·dv_p, da_c = X_c⁻¹·da_p − crm(Sω_c)·dv_c).
+/// Notation as root_wrench_state_jacobian.h.
+
+#include <vector>
+
+#include "saltus/dynamics/root_wrench_state_jacobian.h"
+
+namespace saltus {
+
+using JointMomentColumns = Eigen::Matrix<double, 3, kJointStateTangentSize>;
+
+/// Result and workspace; sized once per model, reused for every sample.
+struct JointMomentStateJacobian {
+  explicit JointMomentStateJacobian(const BodyModel& model);
+
+  /// d(n_j)/d(η_i, ω_i, α_i) at [j * size + i]; zero when i is neither in subtree(j) nor an
+  /// ancestor of j (then `touches` is false). Row j = 0 (the root wrench's moment) is filled
+  /// too, in the root frame about the root origin.
+  std::vector<JointMomentColumns> joint;
+  std::vector<char> touches;
+  /// d(n_j)/d(ṗ, p̈) (world frame), per j.
+  std::vector<Eigen::Matrix<double, 3, 6>> root_translation;
+  int size = 0;
+
+  /// Workspace: each segment's own 6×9 columns dF_i/d(state_i) in its frame (with the turn of
+  /// X*_i), and the velocity and acceleration changes carried down from one ancestor.
+  std::vector<Eigen::Matrix<double, 6, kJointStateTangentSize>> own_columns;
+  std::vector<Eigen::Matrix<double, 6, 15>> velocity_change, acceleration_change;
+};
+
+/// Fills `out` for the state whose inverse dynamics is in `data` and whose root-wrench sweep is
+/// in `sweep` (root_wrench_state_jacobian on the same state).
+void joint_moment_state_jacobian(const BodyModel& model, const DynamicsData<double>& data,
+                                 const BodyState<double>& state,
+                                 const RootWrenchStateJacobian& sweep,
+                                 JointMomentStateJacobian& out);
+
+}  // namespace saltus

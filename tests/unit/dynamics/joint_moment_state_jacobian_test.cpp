@@ -1,0 +1,114 @@
+// The analytic joint-moment state Jacobian against central finite differences of the double
+// inverse dynamics (an independent path: no derivative code involved), for every joint and every
+// state entry, and its zero pattern (a joint's moment ignores the states of unrelated limbs).
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "saltus/dynamics/joint_moment_state_jacobian.h"
+#include "support/test_motions.h"
+
+namespace saltus {
+namespace {
+
+/// A generic state: tilted joints, brisk rates, the root moving and accelerating.
+BodyState<double> moment_test_state(int segments, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  auto vec = [&](double scale) {
+    return Eigen::Vector3d(scale * normal(rng), scale * normal(rng), scale * normal(rng));
+  };
+  BodyState<double> state(segments);
+  state.root_position = vec(1.0);
+  state.root_velocity = vec(3.0);
+  state.root_acceleration = vec(10.0);
+  for (JointState<double>& joint : state.joints) {
+    joint.q = quat_exp(vec(0.6));
+    joint.omega = vec(4.0);
+    joint.alpha = vec(30.0);
+  }
+  return state;
+}
+
+/// Every joint's moment n_j (child frame, about the joint centre), stacked.
+Eigen::VectorXd joint_moments(const BodyModel& model, const BodyState<double>& state) {
+  DynamicsData<double> data(model);
+  inverse_dynamics(model, data, state);
+  Eigen::VectorXd out(3 * model.size());
+  for (int j = 0; j < model.size(); ++j)
+    out.segment<3>(3 * j) = data.joint_wrench[j].head<3>();
+  return out;
+}
+
+TEST(JointMomentStateJacobian, MatchesCentralDifferencesForEveryJointAndState) {
+  const BodyModel model = test::bundled_model();
+  const int n = model.size();
+  for (unsigned seed : {3u, 8u}) {
+    const BodyState<double> state = moment_test_state(n, seed);
+    DynamicsData<double> data(model);
+    inverse_dynamics(model, data, state);
+    RootWrenchStateJacobian sweep(model);
+    root_wrench_state_jacobian(model, data, state, sweep);
+    JointMomentStateJacobian jac(model);
+    joint_moment_state_jacobian(model, data, state, sweep, jac);
+
+    const double h = 1e-6;
+    // Column `entry` of segment k's state (η, ω, α), or k = −1: the root's ṗ then p̈.
+    auto difference = [&](int k, int entry) {
+      Eigen::VectorXd side[2];
+      for (int s = 0; s < 2; ++s) {
+        BodyState<double> moved = state;
+        const double step = s == 0 ? h : -h;
+        Eigen::Vector3d delta = Eigen::Vector3d::Zero();
+        delta[entry % 3] = step;
+        if (k < 0) {
+          (entry < 3 ? moved.root_velocity : moved.root_acceleration) += delta;
+        } else {
+          JointState<double>& joint = moved.joints[k];
+          if (entry < 3) joint.q = joint.q * quat_exp(delta);
+          if (entry >= 3 && entry < 6) joint.omega += delta;
+          if (entry >= 6) joint.alpha += delta;
+        }
+        side[s] = joint_moments(model, moved);
+      }
+      return Eigen::VectorXd((side[0] - side[1]) / (2.0 * h));
+    };
+    for (int k = -1; k < n; ++k) {
+      for (int entry = 0; entry < (k < 0 ? 6 : kJointStateTangentSize); ++entry) {
+        const Eigen::VectorXd expected = difference(k, entry);
+        for (int j = 0; j < n; ++j) {
+          const Eigen::Vector3d e = expected.segment<3>(3 * j);
+          Eigen::Vector3d got = Eigen::Vector3d::Zero();
+          if (k < 0)
+            got = jac.root_translation[j].col(entry);
+          else if (jac.touches[j * n + k])
+            got = jac.joint[j * n + k].col(entry);
+          EXPECT_LE((got - e).norm(), 1e-6 * (1.0 + e.norm()))
+              << "joint " << j << ", state of " << k << ", entry " << entry << ", seed " << seed;
+        }
+      }
+    }
+  }
+}
+
+TEST(JointMomentStateJacobian, RootRowIsTheRootWrenchsMoment) {
+  const BodyModel model = test::bundled_model();
+  const BodyState<double> state = moment_test_state(model.size(), 5);
+  DynamicsData<double> data(model);
+  inverse_dynamics(model, data, state);
+  RootWrenchStateJacobian sweep(model);
+  root_wrench_state_jacobian(model, data, state, sweep);
+  JointMomentStateJacobian jac(model);
+  joint_moment_state_jacobian(model, data, state, sweep, jac);
+  for (int k = 0; k < model.size(); ++k) {
+    // root_wrench_state_jacobian's rows are force first.
+    EXPECT_LE((jac.joint[k] - sweep.joint[k].bottomRows<3>()).norm(),
+              1e-10 * (1.0 + sweep.joint[k].norm()))
+        << k;
+  }
+  EXPECT_LE((jac.root_translation[0] - sweep.root_translation.bottomRows<3>()).norm(), 1e-10);
+}
+
+}  // namespace
+}  // namespace saltus
