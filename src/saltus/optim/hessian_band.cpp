@@ -62,6 +62,28 @@ void HessianBand::add_gauss_newton(const LocalJacobian<Rows>& jac, double weight
 template void HessianBand::add_gauss_newton<3>(const LocalJacobian<3>&, double, double*) const;
 template void HessianBand::add_gauss_newton<4>(const LocalJacobian<4>&, double, double*) const;
 
+void HessianBand::add_span_block(const Eigen::MatrixXd& block, int first_control, int width,
+                                 int time_count,
+                                 const std::array<int, kMaxLocalTimes>& time_variable,
+                                 double* values) const {
+  // Controls are contiguous from `first_control`; time slot p is variable time_variable[p]
+  // (beyond every control).
+  for (int a = 0; a < width; ++a)
+    Eigen::Map<Eigen::RowVectorXd>(values + index(first_control + a, first_control), a + 1) +=
+        block.row(a).head(a + 1);
+  for (int p = 0; p < time_count; ++p) {
+    const int tv = time_variable[p];
+    Eigen::Map<Eigen::RowVectorXd>(values + index(tv, first_control), width) +=
+        block.row(width + p).head(width);
+    for (int q = 0; q < time_count; ++q) {
+      const int other = time_variable[q];
+      // Row width + max(p, q) holds the pair in the lower triangle.
+      if (other <= tv)
+        values[index(tv, other)] += block(width + std::max(p, q), width + std::min(p, q));
+    }
+  }
+}
+
 double HessianBand::quadratic_form(const std::vector<double>& values, const double* s) const {
   const int n = size();
   double sum = 0.0;

@@ -34,6 +34,12 @@ class HessianBand {
   template <int Rows>
   void add_gauss_newton(const LocalJacobian<Rows>& jac, double weight, double* values) const;
 
+  /// values += the lower triangle of a dense symmetric block over one knot span's local
+  /// variables: `width` contiguous controls from `first_control`, then `time_count` time slots
+  /// (x indices `time_variable`), in that order.
+  void add_span_block(const Eigen::MatrixXd& block, int first_control, int width, int time_count,
+                      const std::array<int, kMaxLocalTimes>& time_variable, double* values) const;
+
   /// sᵀ·H·s for a Hessian stored as this band's values (the damping's model of a step): a dot
   /// product per stored row, which vectorises, instead of the scatter a full H·s needs.
   double quadratic_form(const std::vector<double>& values, const double* s) const;

@@ -9,6 +9,7 @@
 #include "saltus/math/bspline_basis.h"
 #include "saltus/optim/terms/force_bound_block.h"
 #include "saltus/optim/terms/joint_acceleration_term.h"
+#include "saltus/optim/terms/joint_load_term.h"
 #include "saltus/optim/terms/joint_turn_term.h"
 #include "saltus/optim/terms/keyframe_distance_term.h"
 #include "saltus/optim/terms/keyframe_rotation_block.h"
@@ -96,6 +97,9 @@ MotionNlp::MotionNlp(const Motion& motion, const BodyModel& model,
   if (relaxed && options.joint_effort > 0)
     add_term(std::make_unique<JointAccelerationTerm>(layout_, model, initial.knots,
                                                      options.joint_effort));
+  if (relaxed && options.joint_loads > 0)
+    add_term(
+        std::make_unique<JointLoadTerm>(layout_, initial.knots, duration_, options.joint_loads));
   if (options.limits_joint_turns())
     add_term(std::make_unique<JointTurnTerm>(layout_, reference_, options.joint_turn_limit,
                                              options.joint_turn_weight));

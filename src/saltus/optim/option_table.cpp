@@ -181,6 +181,18 @@ std::vector<OptionSpec> make_table() {
   o.applies_when = "with --formulation relaxed";
   t.push_back(o);
 
+  o = entry("joint_loads", "--joint-loads", "Joint loads", "N²/(N·m)²",
+            "weight of least joint effort: the mean square of every joint's moment over the "
+            "flight, in root-wrench N² per (N·m)²; among motions of nearly the same root force it "
+            "prefers the one whose joints work least, without which the optimiser may buy the "
+            "last newtons with kicks of a foot or forearm at take-off or landing; 0 = none");
+  range(o, OptionKind::kReal, 0.0, kUnbounded);
+  record(o, "joint_loads", ResultRecord::kOptimization);
+  bind(o, nlp, &MotionNlpOptions::joint_loads);
+  o.applies = [](const OptimizeOptions& x) { return x.nlp.formulation == Formulation::kRelaxed; };
+  o.applies_when = "with --formulation relaxed";
+  t.push_back(o);
+
   o = entry("keyframe_weight", "--keyframe-weight", "Keyframe prior", "N²",
             "weight of the prior that prefers, among motions of nearly the same root force, the "
             "one closest to the keyframes (their distance in units of the tolerances): it is "
@@ -484,7 +496,7 @@ constexpr std::size_t member_count() {
 // Every member of the option structs is either an option of the table or one of the internal
 // settings below (or, like verbose and derivative_test_file, decides only what is logged). A new
 // member changes these counts: declare it in the table or below, then update the count.
-static_assert(member_count<MotionNlpOptions>() == 19, "new MotionNlpOptions member: declare it");
+static_assert(member_count<MotionNlpOptions>() == 20, "new MotionNlpOptions member: declare it");
 static_assert(member_count<DampingRule>() == 7, "new DampingRule member: declare it");
 static_assert(member_count<SolverOptions>() == 11, "new SolverOptions member: declare it");
 static_assert(member_count<OptimizeOptions>() == 4, "new OptimizeOptions member: declare it");

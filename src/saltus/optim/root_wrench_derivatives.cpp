@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "saltus/dynamics/joint_moment_state_jacobian.h"
 #include "saltus/dynamics/root_wrench_state_jacobian.h"
 #include "saltus/math/quaternion_span_derivatives.h"
 #include "saltus/math/quaternion_spline.h"
@@ -46,6 +47,7 @@ struct RootWrenchDerivatives::Workspace {
         state(model.size()),
         joint_state_jacobian(model.size()),
         wrench_state(model),
+        moment_state(model),
         span_logs(model.size()) {}
 
   DynamicsData<double> data;
@@ -56,6 +58,7 @@ struct RootWrenchDerivatives::Workspace {
   std::vector<Eigen::Matrix<double, kJointStateSize, kSplineDirections>> joint_state_jacobian;
   Eigen::Matrix<double, kRootStateSize, kSplineDirections> root_state_jacobian;
   RootWrenchStateJacobian wrench_state;
+  JointMomentStateJacobian moment_state;
   int basis_keyframe = -1;  ///< keyframe whose basis is in keyframe_basis, −1 for none
   /// Span whose joint logs are in span_logs (−1 for none). Samples come in time order, so
   /// caching the last span computes each span's logs once per point.
@@ -262,7 +265,7 @@ void RootWrenchDerivatives::wrench_jacobian_on_span(
 }
 
 template <typename Time>
-void RootWrenchDerivatives::wrench_jacobian_seeded(int span, const Time& t, LocalJacobian<6>& out) {
+void RootWrenchDerivatives::seed_state(int span, const Time& t) {
   Workspace& w = *work_;
   const int n = layout_.segment_count;
   const int c0 = span - 3;
@@ -291,11 +294,18 @@ void RootWrenchDerivatives::wrench_jacobian_seeded(int span, const Time& t, Loca
     w.root_state_jacobian.row(3 + i) = b.acceleration[i].derivatives().transpose();
   }
 
-  // Stage 2: the root wrench and its derivatives with respect to every curve's state, in closed
-  // form from one double inverse dynamics pass.
+  // Stage 2's common part: one double inverse dynamics pass and the root wrench's derivatives
+  // with respect to every curve's state, in closed form.
   inverse_dynamics(model_, w.data, state);
-  out.value = root_wrench_force_first(w.data);
   root_wrench_state_jacobian(model_, w.data, state, w.wrench_state);
+}
+
+template <typename Time>
+void RootWrenchDerivatives::wrench_jacobian_seeded(int span, const Time& t, LocalJacobian<6>& out) {
+  Workspace& w = *work_;
+  const int n = layout_.segment_count;
+  seed_state(span, t);
+  out.value = root_wrench_force_first(w.data);
 
   // Chain rule. lazyProduct: these fixed-size products are past Eigen's small-product threshold
   // and would otherwise go through the blocked GEMM kernel, whose packing costs more than the
@@ -309,6 +319,54 @@ void RootWrenchDerivatives::wrench_jacobian_seeded(int span, const Time& t, Loca
     const Eigen::Matrix<double, 6, kSplineDirections> joint_part =
         w.wrench_state.joint[k].lazyProduct(w.joint_state_jacobian[k]);
     scatter<6>(joint_part, k + 1, block, w.time_count, out);
+  }
+}
+
+Eigen::VectorXd RootWrenchDerivatives::joint_moments_on_span(int span, double xi) {
+  wrench_on_span(span, xi);
+  const DynamicsData<double>& data = work_->data;
+  Eigen::VectorXd out(joint_moment_rows());
+  for (int j = 1; j < layout_.segment_count; ++j)
+    out.segment<3>(3 * (j - 1)) = data.joint_wrench[j].head<3>();
+  return out;
+}
+
+void RootWrenchDerivatives::joint_moments_jacobian_on_span(int span, double xi,
+                                                           LocalJacobian<Eigen::Dynamic>& out) {
+  Workspace& w = *work_;
+  const int n = layout_.segment_count;
+  w.basis_keyframe = -1;
+  seed_knots(layout_, knots_, span, w.knots_ad, w.time_count, w.time_variable);
+  const SplineAD t = w.knots_ad[span] + xi * (w.knots_ad[span + 1] - w.knots_ad[span]);
+  seed_state(span, t);
+  joint_moment_state_jacobian(model_, w.data, w.state, w.wrench_state, w.moment_state);
+
+  const int rows = joint_moment_rows();
+  const int block = layout_.curve_block();
+  out.first_control_variable = layout_.control_variable(0, span - 3, 0);
+  out.value.resize(rows);
+  out.control.setZero(rows, 4 * block);
+  out.time.setZero(rows, kMaxLocalTimes);
+  out.time_count = w.time_count;
+  out.time_variable = w.time_variable;
+  // Chain rule, joint by joint: only the curves whose state moves that joint's moment.
+  Eigen::Matrix<double, 3, kSplineDirections> part;
+  auto add = [&](int row, int curve) {
+    for (int c = 0; c < 4; ++c)
+      out.control.block<3, 3>(row, c * block + 3 * curve) += part.middleCols<3>(3 * c);
+    out.time.block(row, 0, 3, w.time_count) += part.middleCols(kControlDirections, w.time_count);
+  };
+  const JointMomentStateJacobian& jac = w.moment_state;
+  for (int j = 1; j < n; ++j) {
+    const int row = 3 * (j - 1);
+    out.value.segment<3>(row) = w.data.joint_wrench[j].head<3>();
+    part.noalias() = jac.root_translation[j].lazyProduct(w.root_state_jacobian);
+    add(row, 0);
+    for (int k = 0; k < n; ++k) {
+      if (!jac.touches[j * n + k]) continue;
+      part.noalias() = jac.joint[j * n + k].lazyProduct(w.joint_state_jacobian[k]);
+      add(row, k + 1);
+    }
   }
 }
 

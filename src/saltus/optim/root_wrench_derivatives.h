@@ -65,6 +65,14 @@ class RootWrenchDerivatives {
   void wrench_jacobian_on_span(int span, double xi, LocalJacobian<6>& out,
                                Eigen::Matrix<double, 1, kMaxLocalTimes>& span_length_rate);
 
+  /// Every non-root joint's moment at the point ξ of knot span `span` (joint_moment_rows rows:
+  /// segment 1's n, then segment 2's, ...; the parent's moment on the child's subtree, child
+  /// frame, about the joint centre, N·m), values only or with their derivatives (the node moving
+  /// with the knots, as wrench_jacobian_on_span).
+  Eigen::VectorXd joint_moments_on_span(int span, double xi);
+  void joint_moments_jacobian_on_span(int span, double xi, LocalJacobian<Eigen::Dynamic>& out);
+  int joint_moment_rows() const { return 3 * (layout_.segment_count - 1); }
+
   /// Values only, in plain double (what the constraints need at a line-search trial point):
   /// the root translation and segment `segment`'s rotation (w, x, y, z) at keyframe i's time.
   /// Equal to the `value` members of the derivative versions below.
@@ -89,6 +97,10 @@ class RootWrenchDerivatives {
   /// Root wrench and derivatives at the AD time t on `span` (knots already seeded for it).
   template <typename Time>
   void wrench_jacobian_seeded(int span, const Time& t, LocalJacobian<6>& out);
+  /// Stage 1 (the file comment) at the AD time t on `span`: every curve's state into the
+  /// workspace's state, with its derivatives; then inverse dynamics and the root wrench's sweep.
+  template <typename Time>
+  void seed_state(int span, const Time& t);
   const BodyModel& model_;
   TrajectoryLayout layout_;
   TrajectoryReference reference_;

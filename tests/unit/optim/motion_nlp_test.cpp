@@ -483,8 +483,9 @@ TEST(MotionNlp, AssemblesEachFormulationFromItsTermsAndBlocks) {
   test::RandomPoint relaxed(Formulation::kRelaxed), strict(Formulation::kStrict);
   EXPECT_EQ(names(relaxed.nlp->objective_terms()),
             (std::vector<std::string>{"root wrench", "keyframe distance", "proximity",
-                                      "joint acceleration", "joint turn"}));
-  // The joint-acceleration term is the relaxed model's (its strict objective is the keyframes).
+                                      "joint acceleration", "joint loads", "joint turn"}));
+  // The joint-acceleration and joint-load terms are the relaxed model's (its strict objective is
+  // the keyframes).
   EXPECT_EQ(names(strict.nlp->objective_terms()),
             (std::vector<std::string>{"keyframe distance", "proximity", "joint turn"}));
   EXPECT_EQ(names(relaxed.nlp->constraint_blocks()),

@@ -106,24 +106,8 @@ void RootWrenchTerm::add_curvature(NlpEvaluations& at, double factor, const Hess
     const LocalJacobian<6>& first = jacobians[spans_[index].first];
     const Eigen::MatrixXd& block = span_blocks_[index];
     const int width = static_cast<int>(first.control.cols());
-    const int times = first.time_count;
-    // Scatter the lower triangle: controls are contiguous from `first_control_variable`, time
-    // slot p is variable time_variable[p] (beyond every control).
-    const int base = first.first_control_variable;
-    for (int a = 0; a < width; ++a)
-      Eigen::Map<Eigen::RowVectorXd>(values + band.index(base + a, base), a + 1) +=
-          block.row(a).head(a + 1);
-    for (int p = 0; p < times; ++p) {
-      const int tv = first.time_variable[p];
-      Eigen::Map<Eigen::RowVectorXd>(values + band.index(tv, base), width) +=
-          block.row(width + p).head(width);
-      for (int q = 0; q < times; ++q) {
-        const int other = first.time_variable[q];
-        // Row width + max(p, q) holds the pair in the lower triangle.
-        if (other <= tv)
-          values[band.index(tv, other)] += block(width + std::max(p, q), width + std::min(p, q));
-      }
-    }
+    band.add_span_block(block, first.first_control_variable, width, first.time_count,
+                        first.time_variable, values);
   }
   if (damping_) {
     const double damping = factor * damping_->factor() * value(at);
