@@ -233,6 +233,10 @@ int run_optimize(const CommonArgs& args) {
           "points)\n",
           result.knots_per_interval, options.nlp.knots_per_interval);
     }
+    if (const auto& polish = result.joint_load_polish)
+      std::printf("  least joint effort at these times: %.3g N -> %.3g N average root force, %s\n",
+                  polish->avg_root_force_before, polish->avg_root_force_after,
+                  polish->kept ? "kept" : ("not kept: " + polish->status).c_str());
     if (result.solve.restarts > 0)
       std::printf("  the solver restarted %d time(s) from its best feasible iterate\n",
                   result.solve.restarts);

@@ -37,7 +37,7 @@ struct RandomPoint {
     options.knots_per_interval = knots_per_interval;
     options.samples = 23;
     options.joint_effort = 0.1;  // every relaxed term present
-    options.joint_loads = 0.01;
+    options.joint_load_weight = 0.01;
     InterpolationOptions interpolation;
     interpolation.knots_per_interval = knots_per_interval;
     nlp = std::make_unique<MotionNlp>(motion, model,

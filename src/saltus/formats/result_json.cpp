@@ -113,10 +113,17 @@ nlohmann::json resolution_json(const ResultJson::Optimization::Resolution& resol
                       {"avg_root_force", level.avg_root_force},
                       {"iterations", level.iterations},
                       {"status", level.status}});
-  return {{"automatic", resolution.automatic},
-          {"subdivisions", resolution.subdivisions},
-          {"knots", resolution.knots},
-          {"levels", levels}};
+  nlohmann::json j = {{"automatic", resolution.automatic},
+                      {"subdivisions", resolution.subdivisions},
+                      {"knots", resolution.knots},
+                      {"levels", levels}};
+  if (const auto& p = resolution.joint_load_polish)
+    j["joint_load_polish"] = {{"avg_root_force_before", p->avg_root_force_before},
+                              {"avg_root_force_after", p->avg_root_force_after},
+                              {"iterations", p->iterations},
+                              {"status", p->status},
+                              {"kept", p->kept}};
+  return j;
 }
 
 nlohmann::json joint_peak_json(const JointLoadPeak& p, double body_weight) {
@@ -211,6 +218,15 @@ ResultJson::Optimization::Resolution read_resolution(const JsonNode& node) {
     l.iterations = level.at("iterations").as_int();
     l.status = level.at("status").as_string();
     r.levels.push_back(std::move(l));
+  }
+  if (const auto polish = node.find("joint_load_polish")) {
+    polish->require_object();
+    OptimizationResult::Polish& p = r.joint_load_polish.emplace();
+    p.avg_root_force_before = polish->at("avg_root_force_before").as_double();
+    p.avg_root_force_after = polish->at("avg_root_force_after").as_double();
+    p.iterations = polish->at("iterations").as_int();
+    p.status = polish->at("status").as_string();
+    p.kept = read_bool(polish->at("kept"));
   }
   return r;
 }
@@ -519,6 +535,7 @@ ResultJson optimization_result(const MotionFile& file, const OptimizationResult&
   if (!result.after.trajectory.rotations.empty())
     resolution.knots = result.after.trajectory.rotations.front().knots();
   resolution.levels = result.levels;
+  resolution.joint_load_polish = result.joint_load_polish;
   o.resolution = std::move(resolution);
   o.largest_joint_turn_deg =
       std::make_pair(largest_control_turn(result.before.trajectory, 1) * kDegreesPerRadian,

@@ -116,6 +116,8 @@ struct ResultJson {
       std::vector<int> subdivisions;  ///< knot spans per keyframe interval
       std::vector<double> knots;      ///< of the optimised motion's splines (s)
       std::vector<OptimizationResult::Level> levels;  ///< each level tried, in order
+      /// The last solve with least joint effort, when there was one.
+      std::optional<OptimizationResult::Polish> joint_load_polish;
     };
     std::optional<Resolution> resolution;
   };

@@ -97,9 +97,9 @@ MotionNlp::MotionNlp(const Motion& motion, const BodyModel& model,
   if (relaxed && options.joint_effort > 0)
     add_term(std::make_unique<JointAccelerationTerm>(layout_, model, initial.knots,
                                                      options.joint_effort));
-  if (relaxed && options.joint_loads > 0)
-    add_term(
-        std::make_unique<JointLoadTerm>(layout_, initial.knots, duration_, options.joint_loads));
+  if (relaxed && options.joint_load_weight > 0)
+    add_term(std::make_unique<JointLoadTerm>(layout_, initial.knots, duration_,
+                                             options.joint_load_weight));
   if (options.limits_joint_turns())
     add_term(std::make_unique<JointTurnTerm>(layout_, reference_, options.joint_turn_limit,
                                              options.joint_turn_weight));

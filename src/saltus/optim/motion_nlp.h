@@ -100,7 +100,7 @@ struct MotionNlpOptions {
   double joint_effort = 0.0;
   /// Weight w (N² per (N·m)²) of least joint effort, w·(1/T)∫ Σ_j |n_j|² dt over the non-root
   /// joints (terms/joint_load_term.h); 0 = none.
-  double joint_loads = 0.0;
+  double joint_load_weight = 0.001;
   /// Weight w (N²) of the keyframe prior added to the relaxed objective:
   /// w·Σ_i (‖B(t_i) − B̄_i‖²/ε1² + Σ_k ‖Q_k(t_i) − Q̄_k‖²/ε2²), the strict model's keyframe
   /// distance in units of the tolerances. The tolerances let a motion meet its keyframes at

@@ -215,6 +215,10 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
   // Options that do not apply (the keyframe prior on a fixed resolution) take the value the
   // option table declares for that case.
   MotionNlpOptions nlp_options = effective_options(options).nlp;
+  // Least joint effort waits for the polish below: with it in the levels, the times moved to
+  // where the joints work least, not back to where the flight puts them.
+  const double joint_load_weight = nlp_options.joint_load_weight;
+  nlp_options.joint_load_weight = 0.0;
   SolverOptions solver = options.solver;
   for (const Keyframe& k : motion.keyframes)
     nlp_options.given_keyframe_times.push_back(k.time);
@@ -299,14 +303,41 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
         best.trajectory, clamped_cubic_knots(refine_breakpoints(times, subdivisions)));
     solver.warm_start = true;
   }
+  result.keyframe_time_spreads = keyframe_time_spreads(best);
+  result.variables = best.variables;  // the problem's size with its times, polish or not
+  result.constraints = best.constraints;
+
+  // The polish: least joint effort at the keyframe times found, from the best level's optimum
+  // on its knots. Kept when it solves (it trades a little root force for joints that do not
+  // kick; result.joint_load_polish records both figures).
+  if (joint_load_weight > 0 && nlp_options.formulation == Formulation::kRelaxed &&
+      best.solve.solved && !(cancel && cancel->load())) {
+    MotionNlpOptions polish_options = nlp_options;
+    polish_options.subdivisions = best_subdivisions;
+    polish_options.joint_load_weight = joint_load_weight;
+    polish_options.optimize_timing = false;
+    SolverOptions polish_solver = options.solver;
+    polish_solver.warm_start = false;  // no time variables: another layout
+    Solved polished = solve_level(motion, best.optimized, model, best.trajectory, polish_options,
+                                  polish_solver, counted, cancel);
+    iterations += polished.solve.iterations;
+    restarts += polished.solve.restarts;
+    seconds += polished.solve.seconds;
+    OptimizationResult::Polish& p = result.joint_load_polish.emplace();
+    p.avg_root_force_before = best_force;
+    p.avg_root_force_after =
+        dense_check(model, polished.trajectory, options.nlp.samples).metrics.avg_root_force;
+    p.iterations = polished.solve.iterations;
+    p.status = polished.solve.status;
+    p.kept = polished.solve.solved;
+    if (p.kept) best = std::move(polished);
+  }
+
   result.solve = best.solve;
   result.solve.iterations = iterations;
   result.solve.restarts = restarts;
   result.solve.seconds = seconds;
-  result.variables = best.variables;
-  result.constraints = best.constraints;
   result.optimizer_objective_after = best.objective_after;
-  result.keyframe_time_spreads = keyframe_time_spreads(best);
   result.subdivisions = best_subdivisions;
   result.knots_per_interval = *std::max_element(best_subdivisions.begin(), best_subdivisions.end());
 

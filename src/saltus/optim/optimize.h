@@ -4,6 +4,8 @@
 /// ("after") evaluated on the same grid — the one call behind `saltus optimize` and the GUI.
 
 #include <atomic>
+#include <optional>
+#include <string>
 
 #include "saltus/evaluation/evaluate.h"
 #include "saltus/optim/motion_nlp.h"
@@ -112,6 +114,16 @@ struct OptimizationResult {
     std::string status;
   };
   std::vector<Level> levels;
+  /// Least joint effort (MotionNlpOptions::joint_load_weight > 0): a last solve at the keyframe
+  /// times the levels found, with the joint loads in the objective; kept when it solved.
+  struct Polish {
+    double avg_root_force_before = 0.0;  ///< N, the best level's (dense check)
+    double avg_root_force_after = 0.0;   ///< N, the polished motion's
+    int iterations = 0;
+    std::string status;
+    bool kept = false;
+  };
+  std::optional<Polish> joint_load_polish;
   MotionEvaluation before;  ///< the interpolated motion (the starting point)
   MotionEvaluation after;   ///< the optimised motion, on the same sample grid
   /// J by the optimiser's own quadrature (MotionNlp::force_objective), at the start and at the

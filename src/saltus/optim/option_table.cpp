@@ -181,14 +181,15 @@ std::vector<OptionSpec> make_table() {
   o.applies_when = "with --formulation relaxed";
   t.push_back(o);
 
-  o = entry("joint_loads", "--joint-loads", "Joint loads", "N²/(N·m)²",
-            "weight of least joint effort: the mean square of every joint's moment over the "
-            "flight, in root-wrench N² per (N·m)²; among motions of nearly the same root force it "
-            "prefers the one whose joints work least, without which the optimiser may buy the "
-            "last newtons with kicks of a foot or forearm at take-off or landing; 0 = none");
+  o = entry("joint_load_weight", "--joint-load-weight", "Joint-load weight", "N²/(N·m)²",
+            "weight of least joint effort in a last solve at the keyframe times found: the mean "
+            "square of every joint's moment over the flight, in root-wrench N² per (N·m)²; among "
+            "motions of nearly the same root force it prefers the one whose joints work least, "
+            "without which the optimiser buys the last newtons with kicks of a foot or forearm "
+            "at take-off or landing; 0 = none (no last solve)");
   range(o, OptionKind::kReal, 0.0, kUnbounded);
-  record(o, "joint_loads", ResultRecord::kOptimization);
-  bind(o, nlp, &MotionNlpOptions::joint_loads);
+  record(o, "joint_load_weight", ResultRecord::kOptimization);
+  bind(o, nlp, &MotionNlpOptions::joint_load_weight);
   o.applies = [](const OptimizeOptions& x) { return x.nlp.formulation == Formulation::kRelaxed; };
   o.applies_when = "with --formulation relaxed";
   t.push_back(o);

@@ -65,7 +65,11 @@ auto fields(const ResultJson::Optimization::Resolution& r) {
   std::vector<decltype(fields(r.levels.front()))> levels;
   for (const OptimizationResult::Level& l : r.levels)
     levels.push_back(fields(l));
-  return std::make_tuple(r.automatic, r.subdivisions, r.knots, levels);
+  std::optional<std::tuple<double, double, int, std::string, bool>> polish;
+  if (const auto& p = r.joint_load_polish)
+    polish = std::make_tuple(p->avg_root_force_before, p->avg_root_force_after, p->iterations,
+                             p->status, p->kept);
+  return std::make_tuple(r.automatic, r.subdivisions, r.knots, levels, polish);
 }
 auto fields(const ResultJson::Optimization& o) {
   return std::make_tuple(
@@ -193,6 +197,9 @@ ResultJson random_result(ResultJson::Kind kind, std::mt19937& rng) {
     for (int level = 0; resolution.automatic && level < 1 + static_cast<int>(rng() % 3); ++level)
       resolution.levels.push_back({resolution.subdivisions, positive(rng), count(rng),
                                    rng() % 2 ? "solved" : "acceptable"});
+    if (rng() % 2)
+      resolution.joint_load_polish = OptimizationResult::Polish{
+          positive(rng), positive(rng), count(rng), "solved", rng() % 2 == 0};
     o.resolution = resolution;
     r.optimization = o;
   }

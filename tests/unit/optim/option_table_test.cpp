@@ -306,7 +306,7 @@ std::map<std::string, OptionValue> recorded_before_the_table(const OptimizeOptio
   // Added with the joint-acceleration term (issue 24): relaxed model only.
   if (o.nlp.formulation == Formulation::kRelaxed) r["joint_effort"] = o.nlp.joint_effort;
   // Added with least joint effort (issue 24): relaxed model only.
-  if (o.nlp.formulation == Formulation::kRelaxed) r["joint_loads"] = o.nlp.joint_loads;
+  if (o.nlp.formulation == Formulation::kRelaxed) r["joint_load_weight"] = o.nlp.joint_load_weight;
   r["timing_optimized"] = o.nlp.optimize_timing;
   r["joint_turn_limit_deg"] =
       o.nlp.limits_joint_turns() ? o.nlp.joint_turn_limit * 180.0 / M_PI : 0.0;
