@@ -37,8 +37,9 @@ class CompareController : public QObject {
   bool compare_before_after(QString* error = nullptr);
   /// The open motion vs another motion file (with the model in use).
   bool compare_with_motion(const QString& path, QString* error = nullptr);
-  /// The open motion with its model vs the same motion with this model file; optimised like
-  /// the run shown when there is one (see the file comment).
+  /// The open motion with its model vs the same motion flown by the athlete of this model file
+  /// (the take-off by the CLI's rule, Document::load); optimised like the run shown when there
+  /// is one (see the file comment). Each run is labelled with its athlete (athlete_label).
   bool compare_with_model(const QString& path, QString* error = nullptr);
   /// The open motion vs a `saltus optimize` (or `evaluate`) output folder.
   bool compare_with_folder(const QString& dir, QString* error = nullptr);
