@@ -226,8 +226,10 @@ bool CompareController::compare_with_folder(const QString& dir, QString* error) 
 }
 
 bool CompareController::compare_with(const QString& path, QString* error) {
-  return QFileInfo(path).isDir() ? compare_with_folder(path, error)
-                                 : compare_with_motion(path, error);
+  if (QFileInfo(path).isDir()) return compare_with_folder(path, error);
+  if (identify_readable(path.toStdString()) == ReadableKind::kModel)
+    return compare_with_model(path, error);
+  return compare_with_motion(path, error);
 }
 
 CompareWindow* CompareController::window() const {

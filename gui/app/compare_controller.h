@@ -43,7 +43,7 @@ class CompareController : public QObject {
   bool compare_with_model(const QString& path, QString* error = nullptr);
   /// The open motion vs a `saltus optimize` (or `evaluate`) output folder.
   bool compare_with_folder(const QString& dir, QString* error = nullptr);
-  /// A motion file or a result folder, whichever `path` is (batch --compare).
+  /// A motion file, a model file or a result folder, whichever `path` is (batch --compare).
   bool compare_with(const QString& path, QString* error = nullptr);
 
   /// The compare window while it is open, else null.
