@@ -54,7 +54,7 @@ CompareController::CompareController(AppContext& context, ViewController& view, 
 
 CompareController::~CompareController() = default;
 
-void CompareController::fill_menu(QMenu* compare) {
+void CompareController::fill_menu(QMenu* compare, QAction* new_athlete) {
   before_after_ = compare->addAction(tr("&Before vs after optimisation"), this,
                                      [this] { compare_before_after(); });
   QAction* motion = compare->addAction(tr("With another &motion…"), this, [this] {
@@ -73,6 +73,7 @@ void CompareController::fill_menu(QMenu* compare) {
       tr("The same motion flown by the athlete of another body model (other masses, or another "
          "athlete: the same take-off spin); optimised like the run shown, so the joint loads of "
          "both optimised motions compare (the paper's Fig. 8)"));
+  if (new_athlete) compare->addAction(new_athlete);
   QAction* folder = compare->addAction(tr("With a saved &result folder…"), this, [this] {
     const QString dir = QFileDialog::getExistingDirectory(
         context_.window(), tr("Compare with a `saltus optimize` result folder"),

@@ -29,7 +29,8 @@ class CompareController : public QObject {
   CompareController(AppContext& context, ViewController& view, QObject* parent = nullptr);
   ~CompareController() override;
 
-  void fill_menu(QMenu* compare);
+  /// The Compare menu; `new_athlete` goes after With another body model (New athlete).
+  void fill_menu(QMenu* compare, QAction* new_athlete = nullptr);
 
   // Each loads and evaluates the second run as File > Open would; false (with the library's
   // message) on error.
