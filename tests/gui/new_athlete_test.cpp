@@ -76,7 +76,9 @@ class NewAthleteTest : public test::OpenMotionTest {
     QApplication::processEvents();
     NewAthleteDialog* dialog = window_->athletes().dialog();
     EXPECT_NE(dialog, nullptr);
-    if (dialog) EXPECT_TRUE(QTest::qWaitForWindowExposed(dialog));
+    if (dialog) {
+      EXPECT_TRUE(QTest::qWaitForWindowExposed(dialog));
+    }
     return dialog;
   }
 
