@@ -13,6 +13,7 @@
 #include "app/optimization_runner.h"
 #include "app/qt_text.h"
 #include "app/view_controller.h"
+#include "core/athletes.h"
 #include "core/compare.h"
 #include "saltus/base/input_error.h"
 #include "saltus/formats/readable_formats.h"
@@ -53,7 +54,7 @@ CompareController::CompareController(AppContext& context, ViewController& view, 
 
 CompareController::~CompareController() = default;
 
-void CompareController::fill_menu(QMenu* compare) {
+void CompareController::fill_menu(QMenu* compare, QAction* new_athlete) {
   before_after_ = compare->addAction(tr("&Before vs after optimisation"), this,
                                      [this] { compare_before_after(); });
   QAction* motion = compare->addAction(tr("With another &motion…"), this, [this] {
@@ -69,8 +70,10 @@ void CompareController::fill_menu(QMenu* compare) {
     if (!path.isEmpty()) compare_with_model(path);
   });
   model->setToolTip(
-      tr("The same motion with other masses; optimised like the run shown, so the "
-         "joint loads of both optimised motions compare (the paper's Fig. 8)"));
+      tr("The same motion flown by the athlete of another body model (other masses, or another "
+         "athlete: the same take-off spin); optimised like the run shown, so the joint loads of "
+         "both optimised motions compare (the paper's Fig. 8)"));
+  if (new_athlete) compare->addAction(new_athlete);
   QAction* folder = compare->addAction(tr("With a saved &result folder…"), this, [this] {
     const QString dir = QFileDialog::getExistingDirectory(
         context_.window(), tr("Compare with a `saltus optimize` result folder"),
@@ -175,9 +178,12 @@ bool CompareController::compare_with_model(const QString& path, QString* error) 
   auto second = std::make_shared<Document>();
   const std::string model = QFileInfo(path).absoluteFilePath().toStdString();
   if (!load_second(ws.document().file().path, model, second.get(), error)) return false;
-  const QString first = tr("model %1").arg(qstr(ws.document().file().model.name));
-  QString label = tr("model %1").arg(qstr(second->file().model.name));
-  if (label == first) label = tr("model %1").arg(QFileInfo(path).fileName());
+  // Who flies each ("junior 1.45 m 38 kg, same take-off spin"); the file's name when both
+  // models have one name.
+  const QString first = qstr(athlete_label(ws.document().file()));
+  QString label = qstr(athlete_label(second->file()));
+  if (second->file().model.name == ws.document().file().model.name)
+    label = QFileInfo(path).fileName() + label.mid(qstr(second->file().model.name).size());
   context_.set_last_dir_from(path);
   // With a run shown, both sides are optimised motions: this one now, the other model's in the
   // background with the same settings (the window shows its interpolation until then).
@@ -194,7 +200,7 @@ bool CompareController::compare_with_model(const QString& path, QString* error) 
     // A run of the previous comparison still stopping: start when it has.
     if (runner_->running()) wait(60000);
     runner_->start(second->file(), ws.runs().at(*ws.shown_run()).options, pending_tag_);
-    window_->set_note(tr("Optimising the motion with %1 like run %2…")
+    window_->set_note(tr("Optimising the motion flown by %1 like run %2…")
                           .arg(label)
                           .arg(ws.runs().at(*ws.shown_run()).number));
   }
@@ -221,8 +227,10 @@ bool CompareController::compare_with_folder(const QString& dir, QString* error) 
 }
 
 bool CompareController::compare_with(const QString& path, QString* error) {
-  return QFileInfo(path).isDir() ? compare_with_folder(path, error)
-                                 : compare_with_motion(path, error);
+  if (QFileInfo(path).isDir()) return compare_with_folder(path, error);
+  if (identify_readable(path.toStdString()) == ReadableKind::kModel)
+    return compare_with_model(path, error);
+  return compare_with_motion(path, error);
 }
 
 CompareWindow* CompareController::window() const {

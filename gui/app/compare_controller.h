@@ -29,7 +29,8 @@ class CompareController : public QObject {
   CompareController(AppContext& context, ViewController& view, QObject* parent = nullptr);
   ~CompareController() override;
 
-  void fill_menu(QMenu* compare);
+  /// The Compare menu; `new_athlete` goes after With another body model (New athlete).
+  void fill_menu(QMenu* compare, QAction* new_athlete = nullptr);
 
   // Each loads and evaluates the second run as File > Open would; false (with the library's
   // message) on error.
@@ -37,12 +38,13 @@ class CompareController : public QObject {
   bool compare_before_after(QString* error = nullptr);
   /// The open motion vs another motion file (with the model in use).
   bool compare_with_motion(const QString& path, QString* error = nullptr);
-  /// The open motion with its model vs the same motion with this model file; optimised like
-  /// the run shown when there is one (see the file comment).
+  /// The open motion with its model vs the same motion flown by the athlete of this model file
+  /// (the take-off by the CLI's rule, Document::load); optimised like the run shown when there
+  /// is one (see the file comment). Each run is labelled with its athlete (athlete_label).
   bool compare_with_model(const QString& path, QString* error = nullptr);
   /// The open motion vs a `saltus optimize` (or `evaluate`) output folder.
   bool compare_with_folder(const QString& dir, QString* error = nullptr);
-  /// A motion file or a result folder, whichever `path` is (batch --compare).
+  /// A motion file, a model file or a result folder, whichever `path` is (batch --compare).
   bool compare_with(const QString& path, QString* error = nullptr);
 
   /// The compare window while it is open, else null.

@@ -4,6 +4,7 @@
 #include <QActionGroup>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QKeySequence>
 #include <QLabel>
@@ -20,6 +21,7 @@
 #include "app/timeline_widget.h"
 #include "core/compare.h"
 #include "core/plot_series.h"
+#include "saltus/body/mass_properties.h"
 #include "saltus/body/segment_names.h"
 
 namespace saltus::gui {
@@ -34,24 +36,25 @@ const char* const kTitleColours[2] = {"#1f4fa8", "#c25a00"};
 CompareWindow::CompareWindow(QWidget* parent) : QMainWindow(parent) {
   setWindowTitle(tr("Saltus — compare"));
 
+  // Titles in one row and views in the next: a title that wraps onto a second line moves
+  // neither view, so both stay level.
   auto* views = new QWidget(this);
-  auto* views_layout = new QHBoxLayout(views);
-  views_layout->setContentsMargins(0, 0, 0, 0);
+  auto* views_layout = new QGridLayout(views);
+  views_layout->setContentsMargins(2, 2, 2, 2);
+  views_layout->setSpacing(2);
   for (int i = 0; i < 2; ++i) {
-    auto* column = new QWidget(views);
-    auto* column_layout = new QVBoxLayout(column);
-    column_layout->setContentsMargins(2, 2, 2, 2);
-    column_layout->setSpacing(2);
-    titles_[static_cast<std::size_t>(i)] = new QLabel(column);
+    titles_[static_cast<std::size_t>(i)] = new QLabel(views);
     titles_[static_cast<std::size_t>(i)]->setTextFormat(Qt::RichText);
     // Long labels wrap instead of widening the window past the screen.
     titles_[static_cast<std::size_t>(i)]->setWordWrap(true);
-    scenes_[static_cast<std::size_t>(i)] = new SceneWidget(column);
+    titles_[static_cast<std::size_t>(i)]->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+    scenes_[static_cast<std::size_t>(i)] = new SceneWidget(views);
     scenes_[static_cast<std::size_t>(i)]->scene().set_camera(CameraPreset::kFollow);
-    column_layout->addWidget(titles_[static_cast<std::size_t>(i)]);
-    column_layout->addWidget(scenes_[static_cast<std::size_t>(i)], 1);
-    views_layout->addWidget(column, 1);
+    views_layout->addWidget(titles_[static_cast<std::size_t>(i)], 0, i);
+    views_layout->addWidget(scenes_[static_cast<std::size_t>(i)], 1, i);
+    views_layout->setColumnStretch(i, 1);
   }
+  views_layout->setRowStretch(1, 1);
   timeline_ = new TimelineWidget(this);
   connect(timeline_, &TimelineWidget::time_changed, this, &CompareWindow::on_time_changed);
   note_ = new QLabel(this);
@@ -161,14 +164,18 @@ void CompareWindow::set_runs(Run first, Run second, bool keep_time) {
   double duration = 0.0;
   int frames = 2;
   typicals_ = GlyphTypicals{};
+  double tallest = 0.0;
   for (Run& r : runs_) {
     r.stage = r.document->available(r.stage);
     typicals_ = typicals_.max(r.document->glyph_typicals(r.stage));
+    tallest = std::max(tallest, standing_body(r.document->file().model).height());
   }
   for (std::size_t i = 0; i < 2; ++i) {
     const Run& r = runs_[i];
-    // Both views on one arrow scale, so that equal arrows mean equal forces.
+    // Both views on one arrow scale, so that equal arrows mean equal forces, and framed for the
+    // taller athlete, so that a shorter one looks shorter.
     scenes_[i]->scene().set_glyph_typicals(typicals_);
+    scenes_[i]->scene().set_framing_height(tallest);
     scenes_[i]->scene().set_document(r.document.get(), r.stage);
     scenes_[i]->scene().reset_camera();
     const MotionEvaluation& e = r.document->evaluation(r.stage);
@@ -180,8 +187,10 @@ void CompareWindow::set_runs(Run first, Run second, bool keep_time) {
     const QString model = QString::fromStdString(r.document->file().model.name);
     const QString model_part =
         r.label.contains(model) ? QString() : tr(" · model %1").arg(model.toHtmlEscaped());
+    // The run's name on a line of its own, larger: which side is which must read at a glance.
     titles_[i]->setText(
-        tr("<span style='color:%1'><b>%2</b></span> — %3%4 · %5 · average root force <b>%6 N</b>")
+        tr("<span style='color:%1; font-size:large'><b>%2</b></span><br>%3%4 · %5 · average root "
+           "force <b>%6 N</b>")
             .arg(kTitleColours[i], r.label.toHtmlEscaped(),
                  QString::fromStdString(r.document->file().motion.name).toHtmlEscaped(), model_part,
                  description.toHtmlEscaped())

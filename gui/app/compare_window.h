@@ -1,12 +1,12 @@
 #pragma once
 /// @file
-/// Two runs side by side: two 3D views driven by one timeline, with one arrow scale for both
-/// (the larger run's), the root force and moment of both overlaid (resultants by default,
-/// components on demand, a log scale), and the loads at any joint of both (the paper's Fig. 8,
-/// for any joint and any pair of runs). Curves follow the plots' one style: the first run dashed
-/// blue, the second solid orange. The runs are Documents the main window loaded and evaluated
-/// through the library exactly as its own; this window only shows them. Qt types only in this
-/// header.
+/// Two runs side by side: two 3D views driven by one timeline, on one scale (framed for the
+/// taller athlete) and with one arrow scale for both (the larger run's), the root force and moment
+/// of both overlaid (resultants by default, components on demand, a log scale), and the loads at
+/// any joint of both (the paper's Fig. 8, for any joint and any pair of runs). Curves follow the
+/// plots' one style: the first run dashed blue, the second solid orange. The runs are Documents the
+/// main window loaded and evaluated through the library exactly as its own; this window only shows
+/// them. Qt types only in this header.
 
 #include <QMainWindow>
 #include <QString>

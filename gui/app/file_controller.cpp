@@ -106,7 +106,8 @@ FileController::FileController(AppContext& context, ViewController& view,
   };
 }
 
-void FileController::fill_menu(QMenu* file, const std::vector<QAction*>& more_exports) {
+void FileController::fill_menu(QMenu* file, QAction* new_model,
+                               const std::vector<QAction*>& more_exports) {
   QMainWindow* w = context_.window();
   file->addAction(open_);
   file->addAction(import_capture_);
@@ -114,6 +115,7 @@ void FileController::fill_menu(QMenu* file, const std::vector<QAction*>& more_ex
     const QString path = ask_open_file(tr("Open body model"), filter(ReadableKind::kModel));
     if (!path.isEmpty()) open_model(path);
   });
+  if (new_model) file->addAction(new_model);
   recent_menu_ = file->addMenu(tr("Open &recent"));
   rebuild_recent_menu();
   file->addSeparator();

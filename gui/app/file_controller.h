@@ -33,8 +33,10 @@ class FileController : public QObject, public RemembersSettings {
   FileController(AppContext& context, ViewController& view, PlaybackController& playback,
                  PlotsPanel& plots, QObject* parent = nullptr);
 
-  /// The File menu; `more_exports` go after the picture exports (e.g. Export animation).
-  void fill_menu(QMenu* file, const std::vector<QAction*>& more_exports = {});
+  /// The File menu; `new_model` goes after Open model (New athlete), `more_exports` after the
+  /// picture exports (e.g. Export animation).
+  void fill_menu(QMenu* file, QAction* new_model = nullptr,
+                 const std::vector<QAction*>& more_exports = {});
   void fill_toolbar(QToolBar* bar);
 
   // Each returns false on failure; with `error` null the message goes to a dialog (or stderr
@@ -69,6 +71,11 @@ class FileController : public QObject, public RemembersSettings {
   /// Replaces the save dialog of the motion and the model (tests). The default is Qt's save
   /// dialog, which asks before replacing an existing file.
   void set_save_chooser(SaveChooser chooser) { save_chooser_ = std::move(chooser); }
+  /// Asks where to save a file, through that dialog (e.g. a new athlete's model).
+  QString choose_save_path(const QString& title, const QString& suggestion,
+                           const QString& filter) const {
+    return save_chooser_(title, suggestion, filter);
+  }
 
   /// Save motion as… (File menu, the Keyframes panel's button): asks where, then save_motion.
   /// A failure is said in the status bar and a dialog. False if cancelled or failed.

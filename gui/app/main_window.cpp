@@ -15,6 +15,7 @@
 #include <QUndoView>
 #include <QVBoxLayout>
 
+#include "app/athlete_controller.h"
 #include "app/capture_panel.h"
 #include "app/chart_widget.h"
 #include "app/compare_controller.h"
@@ -71,6 +72,7 @@ MainWindow::MainWindow(bool interactive, QWidget* parent) : QMainWindow(parent) 
   edits_ = new EditController(*context_, *runs_, this);
   files_ = new FileController(*context_, *view_, *playback_, *plots_, this);
   compare_ = new CompareController(*context_, *view_, this);
+  athletes_ = new AthleteController(*context_, *files_, *compare_, this);
   studies_ = new StudyController(*context_, this);
   video_ = new VideoExporter(*context_, *view_, this);
   remembered_ = {files_, view_, playback_, runs_, plots_};
@@ -92,6 +94,8 @@ MainWindow::MainWindow(bool interactive, QWidget* parent) : QMainWindow(parent) 
           [this] { files_->ask_save_motion(); });
   connect(edits_->model_panel(), &ModelPanel::save_requested, files_,
           [this] { files_->ask_save_model(); });
+  connect(edits_->model_panel(), &ModelPanel::new_athlete_requested, athletes_,
+          [this] { athletes_->open_dialog(); });
   // A click on a segment shows the loads at its joint and marks it; a click beside the body
   // unmarks it (the plot keeps its joint).
   connect(view_, &ViewController::segment_clicked, this, [this](int segment) {
@@ -129,7 +133,7 @@ MainWindow::~MainWindow() = default;
 
 void MainWindow::build_menus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
-  files_->fill_menu(file, {video_->action()});
+  files_->fill_menu(file, athletes_->new_action(), {video_->action()});
 
   QMenu* edit = menuBar()->addMenu(tr("&Edit"));
   edits_->fill_menu(edit);
@@ -145,7 +149,7 @@ void MainWindow::build_menus() {
   studies_->fill_menu(optimise);
 
   QMenu* compare = menuBar()->addMenu(tr("&Compare"));
-  compare_->fill_menu(compare);
+  compare_->fill_menu(compare, athletes_->compare_action());
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   help->addAction(tr("&Keyboard and mouse"), this, [this] {

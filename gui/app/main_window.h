@@ -19,6 +19,7 @@
 
 namespace saltus::gui {
 
+class AthleteController;
 class CompareController;
 class StudyController;
 class EditController;
@@ -53,6 +54,7 @@ class MainWindow : public QMainWindow {
   PlaybackController& playback() { return *playback_; }
   PlotsPanel& plots() { return *plots_; }
   CompareController& compare() { return *compare_; }
+  AthleteController& athletes() { return *athletes_; }
   StudyController& studies() { return *studies_; }
   VideoExporter& video() { return *video_; }
 
@@ -100,6 +102,7 @@ class MainWindow : public QMainWindow {
   EditController* edits_ = nullptr;
   FileController* files_ = nullptr;
   CompareController* compare_ = nullptr;
+  AthleteController* athletes_ = nullptr;
   StudyController* studies_ = nullptr;
   VideoExporter* video_ = nullptr;
   /// Parts that remember settings, in the order they are loaded.

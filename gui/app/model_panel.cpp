@@ -40,6 +40,11 @@ ModelPanel::ModelPanel(QWidget* parent) : QWidget(parent) {
   buttons->addWidget(reset_);
   buttons->addWidget(save_);
   layout->addLayout(buttons);
+  new_athlete_ = new QPushButton(tr("New athlete…"), this);
+  new_athlete_->setToolTip(
+      tr("A body model of one athlete from height, mass and sex, or from Yeadon's "
+         "measurements, for this motion"));
+  layout->addWidget(new_athlete_);
   problem_ = new QLabel(this);
   problem_->setWordWrap(true);
   problem_->setStyleSheet("color: #b00020;");
@@ -51,6 +56,7 @@ ModelPanel::ModelPanel(QWidget* parent) : QWidget(parent) {
       emit factors_edited(std::vector<double>(static_cast<std::size_t>(loaded_->size()), 1.0));
   });
   connect(save_, &QPushButton::clicked, this, &ModelPanel::save_requested);
+  connect(new_athlete_, &QPushButton::clicked, this, &ModelPanel::new_athlete_requested);
   set_model(nullptr, nullptr);
 }
 

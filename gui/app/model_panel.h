@@ -33,6 +33,8 @@ class ModelPanel : public QWidget {
  signals:
   void factors_edited(const std::vector<double>& factors);
   void save_requested();
+  /// New athlete… pressed (AthleteController's dialog).
+  void new_athlete_requested();
 
  private:
   void on_item_changed(QTableWidgetItem* item);
@@ -43,6 +45,7 @@ class ModelPanel : public QWidget {
   QLabel* total_ = nullptr;
   QPushButton* reset_ = nullptr;
   QPushButton* save_ = nullptr;
+  QPushButton* new_athlete_ = nullptr;
   QLabel* problem_ = nullptr;
 };
 

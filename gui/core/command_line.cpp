@@ -138,8 +138,10 @@ std::unique_ptr<CLI::App> make_app(CommandLine& c, cli::OptionFlags& flags,
       ->check(kNotAFlag)
       ->expected(1, CLI::detail::expected_max_vector_size);
   app->add_option("--compare", c.compare,
-                  "with --screenshot: the compare window of MOTION against B (a motion file or a "
-                  "result folder) instead of the main window")
+                  "with --screenshot: the compare window of MOTION against B instead of the main "
+                  "window; B is a motion file, a body model file (the same motion flown by that "
+                  "athlete, its take-off by the same spin as `saltus simulate --model`) or a "
+                  "result folder")
       ->type_name("B")
       ->check(kNotAFlag);
   app->add_option("--export-video", c.export_video,

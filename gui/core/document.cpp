@@ -6,6 +6,7 @@
 
 #include "saltus/formats/motion_file.h"
 #include "saltus/formats/result_json.h"
+#include "saltus/use_cases/athlete_models.h"
 #include "saltus/use_cases/result_folders.h"
 
 namespace saltus::gui {
@@ -41,8 +42,20 @@ void Document::load(const std::string& motion_path, const std::string& model_ove
     file.motion = imported->import.keyframes;
     file.motion.model = imported->model_reference;
     capture = std::move(imported);
-  } else {
-    file = load_motion_file(motion_path, model_override);
+  }
+  if (!model_override.empty()) {
+    // Another athlete: the take-off carried over by the CLI's rule (for a capture, its picked
+    // keyframes with that take-off; the import above stays for the views).
+    MotionFile athlete =
+        load_motion_for_athlete(motion_path, model_override, TakeoffRule::kSameSpin);
+    if (capture) {
+      file.motion.takeoff = athlete.motion.takeoff;
+      file.takeoff_adaptation = athlete.takeoff_adaptation;
+    } else {
+      file = std::move(athlete);
+    }
+  } else if (!capture) {
+    file = load_motion_file(motion_path);
   }
   EvaluateOptions options;
   options.samples = samples;

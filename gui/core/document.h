@@ -37,8 +37,10 @@ struct GlyphTypicals {
 
 class Document {
  public:
-  /// Loads a motion file and the model it names (or `model_override`, a name or path) and
-  /// evaluates it with `samples` time samples. A motion capture (a .bvh path, is_capture_path)
+  /// Loads a motion file and the model it names and evaluates it with `samples` time samples.
+  /// With `model_override` (a name or path) the motion is flown by that athlete as the CLI's
+  /// `--model` flies it (load_motion_for_athlete, its default take-off rule: the same take-off
+  /// spin; file().takeoff_adaptation says so). A motion capture (a .bvh path, is_capture_path)
   /// is imported onto the model (import_capture_file, the defaults of `saltus import`): the
   /// motion is its picked keyframes, and the capture stays (capture()). Throws InputError for
   /// bad files and std::invalid_argument for bad options; on failure the document keeps what it

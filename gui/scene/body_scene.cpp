@@ -87,6 +87,7 @@ struct BodyScene::Impl {
   double forward_sign = 1.0;  ///< +1 if a positive somersault count is forward
   std::chrono::steady_clock::time_point last_text;
   Eigen::Vector3d com = Eigen::Vector3d(0, 1, 0);
+  std::optional<double> framing_height;  ///< m, else the body's own standing height
 
   Impl() {
     overlay->SetLayer(1);
@@ -192,7 +193,7 @@ struct BodyScene::Impl {
     if (forward.norm() < 1e-6) forward = Eigen::Vector3d::UnitZ();
     forward.normalize();
     const Eigen::Vector3d left = Eigen::Vector3d::UnitY().cross(forward);
-    camera.set_athlete(forward, left, body.standing_height());
+    camera.set_athlete(forward, left, framing_height ? *framing_height : body.standing_height());
     fit_inset(left);
   }
 
@@ -341,6 +342,10 @@ void BodyScene::attach(vtkRenderWindow* window) {
   window->AddRenderer(impl_->renderer);
   window->AddRenderer(impl_->inset);  // after the scene in layer 0: drawn over its corner
   window->AddRenderer(impl_->overlay);
+}
+
+void BodyScene::set_framing_height(std::optional<double> height) {
+  impl_->framing_height = height;
 }
 
 void BodyScene::set_document(const Document* document, Stage stage) {

@@ -43,6 +43,11 @@ class BodyScene {
   static constexpr double kTextRefreshPerSecond = 8.0;
   double time() const;
 
+  /// Frames the athlete as if it stood `height` m tall (nullopt: its own standing height), so
+  /// that views side by side share one scale and a shorter athlete looks shorter. Takes effect
+  /// with the next set_document.
+  void set_framing_height(std::optional<double> height);
+
   /// Points the camera (SceneCamera): every preset frames the athlete and follows it.
   void set_camera(CameraPreset preset);
   CameraPreset camera() const;

@@ -77,6 +77,32 @@ TEST(GuiBatch, CompareFlagWritesTheCompareWindow) {
   EXPECT_FALSE(std::filesystem::exists(dir / "bad.png"));
 }
 
+TEST(GuiBatch, CompareFlagTakesABodyModelFile) {
+  // The README's two athletes: the motion on its own model and on a junior made by the CLI.
+  saltus::test::TempDir dir;
+  const saltus::test::CliRun made = saltus::test::run_cli(
+      "model new --height 1.45 --mass 38 --sex female --name junior --quiet --out '" +
+      (dir / "junior.model.json") + "'");
+  ASSERT_EQ(made.status, 0) << made.output;
+  const saltus::test::CliRun run =
+      run_gui("'" + test::gui_test_motion_path() + "' --compare '" + (dir / "junior.model.json") +
+              "' --time 0 --size 1200x700 --screenshot '" + (dir / "two.png") + "'");
+  ASSERT_EQ(run.status, 0) << run.output;
+  expect_sane_png(dir / "two.png", 1200, 700);
+  // Two athletes drawn, at take-off (arms up, every limb in view): the left limbs' blue in each
+  // 3D view (the top half; the plots below have blue lines of their own), less of it for the
+  // junior on the views' one scale.
+  const QImage shot(QString::fromStdString(dir / "two.png"));
+  const int half = shot.width() / 2;
+  const int views = shot.height() / 2;
+  const QColor blue(64, 120, 224);
+  const double adult = test::colour_fraction(shot.copy(0, 0, half, views), blue);
+  const double junior = test::colour_fraction(shot.copy(half, 0, half, views), blue);
+  EXPECT_GT(adult, 0.001);
+  EXPECT_GT(junior, 0.0005);
+  EXPECT_LT(junior, 0.9 * adult) << "junior " << junior << ", adult " << adult;
+}
+
 TEST(GuiBatch, ExportVideoFlagWritesThePlannedFrames) {
   if (QStandardPaths::findExecutable("ffmpeg").isEmpty() ||
       QStandardPaths::findExecutable("ffprobe").isEmpty())

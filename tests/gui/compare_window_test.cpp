@@ -79,13 +79,15 @@ TEST_F(CompareWindowTest, SameMotionWithAScaledModelSideBySide) {
   expect_drawn(first, "first view");
   expect_drawn(second, "second view");
 
-  // |F| of both runs, each named once by its model: the first dashed, the second solid, as
-  // before and after are in the main window.
+  // |F| of both runs, each named once by its athlete (and the take-off rule that carried the
+  // motion over): the first dashed, the second solid, as before and after are in the main window.
   const ChartSpec& force = compare->force_chart();
   ASSERT_EQ(force.lines.size(), 2u);
   EXPECT_EQ(compare->moment_chart().lines.size(), 2u);
-  EXPECT_EQ(force.lines[0].label, "model zatsiorsky-66kg");
-  EXPECT_EQ(force.lines[1].label, "model thighs x1.5");
+  EXPECT_EQ(force.lines[0].label, "zatsiorsky-66kg 1.70 m 65.5 kg");
+  EXPECT_EQ(force.lines[1].label.rfind("thighs x1.5 1.70 m ", 0), 0u) << force.lines[1].label;
+  EXPECT_NE(force.lines[1].label.find(", same take-off spin"), std::string::npos)
+      << force.lines[1].label;
   EXPECT_TRUE(force.lines[0].dashed);
   EXPECT_FALSE(force.lines[1].dashed);
   EXPECT_NE(force.lines[0].y, force.lines[1].y);  // heavier thighs change the root force

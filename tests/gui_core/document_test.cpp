@@ -9,7 +9,9 @@
 #include "core/document.h"
 #include "gui_core/test_motion.h"
 #include "saltus/base/input_error.h"
+#include "saltus/formats/model_file.h"
 #include "saltus/motion/interpolate.h"
+#include "saltus/use_cases/athlete_models.h"
 #include "support/temp_path.h"
 
 namespace saltus::gui {
@@ -126,6 +128,29 @@ TEST(Document, BadFileThrowsInputErrorAndKeepsTheOldMotion) {
   EXPECT_EQ(d.frame_count(Stage::kBefore), 21);
   EXPECT_THROW(d.load("/nonexistent/x.motion.json"), InputError);
   fs::remove(bad);
+}
+
+TEST(Document, AnotherAthleteFliesTheMotionByTheClisTakeoffRule) {
+  // The CLI's `--model` with its default --takeoff: the same whole-body spin at take-off.
+  Document own;
+  own.load(test::gui_test_motion_path(), "", 21);
+  EXPECT_FALSE(own.file().takeoff_adaptation);
+  BodyModel heavy = own.file().model;
+  for (const char* thigh : {"thigh_l", "thigh_r"})
+    heavy = scale_segment_mass(heavy, thigh, 1.5);
+  const std::string model = saltus::test::temp_path("saltus_gui_heavy_thighs.json").string();
+  std::ofstream(model) << body_model_to_json(heavy).dump(2) << '\n';
+  Document d;
+  d.load(test::gui_test_motion_path(), model, 21);
+  const MotionFile cli =
+      load_motion_for_athlete(test::gui_test_motion_path(), model, TakeoffRule::kSameSpin);
+  ASSERT_TRUE(d.file().takeoff_adaptation);
+  EXPECT_EQ(d.file().takeoff_adaptation->rule, "same spin");
+  ASSERT_TRUE(d.file().motion.takeoff.angular_momentum);
+  EXPECT_EQ(*d.file().motion.takeoff.angular_momentum, *cli.motion.takeoff.angular_momentum);
+  // Heavier thighs: more inertia, so more angular momentum for the same spin.
+  EXPECT_GT(d.file().motion.takeoff.angular_momentum->norm(),
+            own.file().motion.takeoff.angular_momentum->norm() * 1.01);
 }
 
 TEST(Document, SavesAnEvaluationLikeTheCli) {

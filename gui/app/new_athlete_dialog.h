@@ -1,0 +1,99 @@
+#pragma once
+/// @file
+/// Model > New athlete…: a body model of a particular athlete from height, mass and sex (de Leva,
+/// `saltus model new`) or from a file of Yeadon's measurements (`saltus model yeadon`), made by
+/// the library as the fields change (core/athletes.h). The athlete is drawn standing beside the
+/// model in use, on one scale, with a line of its figures; a value the library refuses shows
+/// its message and disables the buttons. The dialog only asks: AthleteController saves the
+/// model and uses it or compares with it.
+
+#include <QDialog>
+#include <QImage>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "core/athletes.h"
+
+class QButtonGroup;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
+class QPlainTextEdit;
+class QPushButton;
+class QRadioButton;
+class QWidget;
+
+namespace saltus::gui {
+
+class VtkImageWidget;
+class StandingFigures;
+
+class NewAthleteDialog : public QDialog {
+  Q_OBJECT
+
+ public:
+  /// `current`: the model in use, drawn in grey beside the new athlete (null: none open).
+  /// `can_compare`: a motion is open, so "Save and compare…" is offered.
+  NewAthleteDialog(const BodyModel* current, bool can_compare, QWidget* parent = nullptr);
+  ~NewAthleteDialog() override;
+
+  /// What the fields ask for now, and the library's model of it (or its message).
+  AthleteRequest request() const;
+  const AthleteDraft& draft() const { return draft_; }
+
+  /// The preview as drawn now.
+  QImage grab_preview();
+  /// The heights of the figures drawn (m): the new athlete's first.
+  std::vector<double> preview_heights() const;
+
+  // The fields and buttons (tests type into them).
+  QLineEdit* name_edit() const { return name_; }
+  QRadioButton* size_choice() const { return from_size_; }
+  QRadioButton* yeadon_choice() const { return from_yeadon_; }
+  QDoubleSpinBox* height_box() const { return height_; }
+  QDoubleSpinBox* mass_box() const { return mass_; }
+  QComboBox* sex_box() const { return sex_; }
+  QLineEdit* measurements_edit() const { return measurements_; }
+  QComboBox* densities_box() const { return densities_; }
+  QDoubleSpinBox* yeadon_mass_box() const { return yeadon_mass_; }
+  QPushButton* use_button() const { return use_; }
+  QPushButton* compare_button() const { return compare_; }
+  /// The library's message, empty when the athlete is fine.
+  QString problem() const;
+  /// The figures line under the preview.
+  QString figures() const;
+
+ signals:
+  /// A button was pressed with a valid athlete: save it, then use it for the open motion
+  /// (`compare` false) or compare the open motion on it with the model in use.
+  void save_requested(bool compare);
+
+ private:
+  void refresh();
+
+  QLineEdit* name_ = nullptr;
+  QRadioButton* from_size_ = nullptr;
+  QRadioButton* from_yeadon_ = nullptr;
+  QWidget* size_fields_ = nullptr;
+  QWidget* yeadon_fields_ = nullptr;
+  QDoubleSpinBox* height_ = nullptr;
+  QDoubleSpinBox* mass_ = nullptr;
+  QComboBox* sex_ = nullptr;
+  QLineEdit* measurements_ = nullptr;
+  QComboBox* densities_ = nullptr;
+  QDoubleSpinBox* yeadon_mass_ = nullptr;
+  VtkImageWidget* preview_ = nullptr;
+  std::unique_ptr<StandingFigures> figures_;
+  QLabel* figures_line_ = nullptr;
+  QPlainTextEdit* warnings_ = nullptr;
+  QLabel* problem_ = nullptr;
+  QPushButton* use_ = nullptr;
+  QPushButton* compare_ = nullptr;
+  std::optional<BodyModel> current_;
+  bool can_compare_ = false;
+  AthleteDraft draft_;
+};
+
+}  // namespace saltus::gui
