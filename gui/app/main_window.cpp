@@ -30,6 +30,7 @@
 #include "app/scene_widget.h"
 #include "app/study_controller.h"
 #include "app/timeline_widget.h"
+#include "app/twist_panel.h"
 #include "app/video_exporter.h"
 #include "app/view_controller.h"
 
@@ -75,6 +76,8 @@ MainWindow::MainWindow(bool interactive, QWidget* parent) : QMainWindow(parent) 
   athletes_ = new AthleteController(*context_, *files_, *compare_, this);
   studies_ = new StudyController(*context_, this);
   video_ = new VideoExporter(*context_, *view_, this);
+  twist_ = new TwistPanel(*context_, this);
+  context_->add_shortcut_scope(twist_->chart());
   remembered_ = {files_, view_, playback_, runs_, plots_};
 
   // A frame counts when the window shows a new 3D picture (chart-only redraws do not).
@@ -83,9 +86,11 @@ MainWindow::MainWindow(bool interactive, QWidget* parent) : QMainWindow(parent) 
     view_->set_time(t, playing);
     plots_->set_time(t, playing);
     edits_->capture_panel()->set_time(t);
+    twist_->set_time(t);
   });
   connect(edits_->capture_panel(), &CapturePanel::seek_requested, this, &MainWindow::seek);
   connect(plots_, &PlotsPanel::seek_requested, this, &MainWindow::seek);
+  connect(twist_, &TwistPanel::seek_requested, this, &MainWindow::seek);
   connect(edits_, &EditController::keyframe_chosen, this, &MainWindow::seek);
   connect(edits_->keyframe_panel(), &KeyframePanel::add_requested, this,
           [this] { edits_->add_keyframe(time()); });
@@ -215,13 +220,19 @@ void MainWindow::build_docks(QMenu* view_menu) {
   QDockWidget* display = dock(tr("Display"), "display_dock", view_->make_display_panel(this));
   QDockWidget* history = dock(tr("History"), "history_dock", edits_->make_history_view(this));
   history->toggleViewAction()->setText(tr("Edit history"));
+  twist_dock_ = dock(tr("Twist"), "twist_dock", twist_);
+  twist_dock_->toggleViewAction()->setText(tr("Twist panel"));
+  // It computes only while in view (a tab raised): a hidden panel costs no CPU per edit.
+  connect(twist_dock_, &QDockWidget::visibilityChanged, twist_,
+          [this](bool visible) { twist_->set_active(visible); });
   // One column of panels, tabbed, the tabs standing on the window's right edge: on a
   // 1366×768 laptop six tab titles in a row would not fit a panel narrow enough to leave the
   // 3D view three quarters of the width (they were elided to "Optim… Keyfra…"), while a
   // column holds them whole; and one panel at a time gets the full height, so the Optimise
   // panel's run list and status stay in view.
   setTabPosition(Qt::RightDockWidgetArea, QTabWidget::East);
-  const std::vector<QDockWidget*> docks = {optimise, keyframes, capture, model, display, history};
+  const std::vector<QDockWidget*> docks = {optimise, keyframes, capture,    model,
+                                           display,  history,   twist_dock_};
   for (std::size_t i = 1; i < docks.size(); ++i)
     tabifyDockWidget(docks[i - 1], docks[i]);
   optimise->raise();
@@ -232,7 +243,14 @@ void MainWindow::build_docks(QMenu* view_menu) {
   view_menu->addSeparator();
   for (QDockWidget* d : docks)
     view_menu->addAction(d->toggleViewAction());
+  view_menu->addSeparator();
+  view_menu->addAction(tr("Where does the &twist come from?"), this, &MainWindow::show_twist_panel);
   resizeDocks({optimise}, {kDockWidth}, Qt::Horizontal);
+}
+
+void MainWindow::show_twist_panel() {
+  twist_dock_->show();
+  twist_dock_->raise();
 }
 
 void MainWindow::load_settings() {

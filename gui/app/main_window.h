@@ -4,9 +4,10 @@
 /// builds the menus and the toolbar, and hands each job to its part (one class each): files
 /// (FileController), edits with the undo stack (EditController), optimisation runs and the
 /// result list (RunController), the 3D view (ViewController), playback (PlaybackController), the
-/// plots (PlotsPanel), compare (CompareController), studies (StudyController). All of them
-/// share the workspace through the AppContext; settings are remembered by every part that has
-/// any. Qt types only in this header: tests and batch mode include it.
+/// plots (PlotsPanel), compare (CompareController), studies (StudyController), where the twist
+/// comes from (TwistPanel). All of them share the workspace through the AppContext; settings are
+/// remembered by every part that has any. Qt types only in this header: tests and batch mode
+/// include it.
 
 #include <QImage>
 #include <QMainWindow>
@@ -16,6 +17,8 @@
 #include "app/app_context.h"
 #include "core/optimize_settings.h"
 #include "core/scene_options.h"
+
+class QDockWidget;
 
 namespace saltus::gui {
 
@@ -29,6 +32,7 @@ class PlotsPanel;
 class RunController;
 class SceneWidget;
 class TimelineWidget;
+class TwistPanel;
 class VideoExporter;
 class ViewController;
 
@@ -57,6 +61,9 @@ class MainWindow : public QMainWindow {
   AthleteController& athletes() { return *athletes_; }
   StudyController& studies() { return *studies_; }
   VideoExporter& video() { return *video_; }
+  TwistPanel& twist() { return *twist_; }
+  /// Brings the Twist panel to the front (View > Where does the twist come from?).
+  void show_twist_panel();
 
   // Shortcuts to what batch mode and tests use most.
   bool open_motion(const QString& path, QString* error = nullptr);
@@ -105,6 +112,8 @@ class MainWindow : public QMainWindow {
   AthleteController* athletes_ = nullptr;
   StudyController* studies_ = nullptr;
   VideoExporter* video_ = nullptr;
+  TwistPanel* twist_ = nullptr;
+  QDockWidget* twist_dock_ = nullptr;
   /// Parts that remember settings, in the order they are loaded.
   std::vector<RemembersSettings*> remembered_;
   int frames_drawn_ = 0;

@@ -139,7 +139,7 @@ TwistSources twist_sources(const Motion& motion, const BodyModel& model,
   std::vector<TwistShare> ordered = out.shares;
   std::sort(ordered.begin(), ordered.end(),
             [](const TwistShare& a, const TwistShare& b) { return a.percent > b.percent; });
-  if (std::abs(out.total_tilt_deg) < 1.0) {
+  if (!has_tilt_to_share(out.total_tilt_deg)) {
     out.sentence =
         format_number("The body is tilted by %.1f° at mid-flight: nothing to twist with.",
                       std::abs(out.total_tilt_deg));

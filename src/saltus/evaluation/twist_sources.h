@@ -17,6 +17,15 @@
 
 namespace saltus {
 
+/// Below this tilt at mid-flight (degrees) a flight has nothing to twist with: the sentence says so
+/// instead of sharing out a tilt that is not there (its percentages would divide by nearly 0).
+inline constexpr double kMinTwistTiltDeg = 1.0;
+
+/// Whether the flight is tilted enough at mid-flight for its shares to mean something.
+inline bool has_tilt_to_share(double total_tilt_deg) {
+  return total_tilt_deg >= kMinTwistTiltDeg || total_tilt_deg <= -kMinTwistTiltDeg;
+}
+
 struct TwistShare {
   std::string source;     ///< "take-off", "left arm", "right arm", "legs", "trunk"
   double tilt_deg = 0.0;  ///< its share of the tilt at the reference time
