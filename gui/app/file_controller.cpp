@@ -18,7 +18,6 @@
 #include <QTemporaryDir>
 #include <QToolBar>
 #include <exception>
-#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "app/playback_controller.h"
@@ -329,12 +328,8 @@ bool FileController::save_model(const QString& path, QString* error) {
   try {
     BodyModel model = ws.document().file().model;
     if (ws.model_unsaved()) model.name = QFileInfo(path).completeBaseName().toStdString();
-    {
-      std::ofstream out(path.toStdString());
-      out << body_model_to_json(model).dump(2) << '\n';
-      if (!out) throw std::runtime_error("cannot write the file");
-    }
-    load_body_model(path.toStdString());  // what was written must load
+    save_body_model_file(path.toStdString(), model);  // atomic; replaces only a model file
+    load_body_model(path.toStdString());              // what was written must load
   } catch (const InputError& e) {
     return context_.fail(tr("Cannot save model"), qstr(e.what()), error);
   } catch (const std::exception& e) {
@@ -361,12 +356,7 @@ bool FileController::save_motion(const QString& path, QString* error) {
     ModelReference reference{motion.model, true};
     if (!model_file.empty()) reference = model_reference_for(model_file, path.toStdString());
     motion.model = reference.field;
-    const nlohmann::json json = motion_to_json(motion, d.file().model);
-    {
-      std::ofstream out(path.toStdString());
-      out << json.dump(2) << '\n';
-      if (!out) throw std::runtime_error("cannot write the file");
-    }
+    save_motion_file(path.toStdString(), motion, d.file().model);  // atomic, as the CLI writes
     // Read back through the library: what was written must load as this motion.
     load_motion_file(path.toStdString(), reference.loads_by_itself ? "" : model_file);
     if (!reference.loads_by_itself) outside_model = qstr(reference.field);
@@ -413,9 +403,8 @@ bool FileController::export_web_page(const QString& path, QString* error) {
       Motion motion = d.file().motion;
       motion.model = "model.json";
       source = folder.filePath("motion.motion.json").toStdString();
-      std::ofstream(folder.filePath("model.json").toStdString())
-          << body_model_to_json(d.file().model).dump() << '\n';
-      std::ofstream(source) << motion_to_json(motion, d.file().model).dump() << '\n';
+      save_body_model_file(folder.filePath("model.json").toStdString(), d.file().model);
+      save_motion_file(source, motion, d.file().model);
     }
     export_flight_page(source, path.toStdString());
   } catch (const InputError& e) {

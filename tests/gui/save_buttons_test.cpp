@@ -10,6 +10,7 @@
 #include <QStatusBar>
 #include <QTest>
 #include <filesystem>
+#include <fstream>
 
 #include "app/edit_controller.h"
 #include "app/file_controller.h"
@@ -116,12 +117,19 @@ TEST_F(SaveButtonsTest, ACancelledDialogWritesNothingAndAFailureIsSaid) {
   EXPECT_EQ(asked_, 1);
   EXPECT_TRUE(window_->workspace().motion_unsaved());
 
-  // A folder that does not exist: nothing written, the file named in the status bar.
-  const std::filesystem::path missing = saltus::test::temp_path("no-such-folder") / "m.motion.json";
-  answer_save_dialog(QString::fromStdString(missing.string()));
+  // A file Saltus did not write (the dialog's "replace?" answered yes): left as it was, the file
+  // named in the status bar, as the command line's writers do.
+  const std::filesystem::path folder = saltus::test::temp_path("foreign");
+  std::filesystem::create_directories(folder);
+  const std::filesystem::path foreign = folder / "m.motion.json";
+  std::ofstream(foreign) << "my notes\n";
+  answer_save_dialog(QString::fromStdString(foreign.string()));
   press(window_->edits().keyframe_panel(), "Save motion…");
   EXPECT_EQ(asked_, 2);
-  EXPECT_FALSE(std::filesystem::exists(missing));
+  std::ifstream kept(foreign);
+  std::string line;
+  std::getline(kept, line);
+  EXPECT_EQ(line, "my notes");
   EXPECT_TRUE(window_->workspace().motion_unsaved());
   const QString said = window_->statusBar()->currentMessage();
   EXPECT_TRUE(said.startsWith("Not saved")) << said.toStdString();

@@ -324,38 +324,9 @@ nlohmann::json body_model_to_json(const BodyModel& model) {
           {"segments", std::move(segments)}};
 }
 
-namespace {
-
-/// Why an existing `path` may not be replaced by a model file: "" when it is a Saltus model.
-std::string foreign_model_file(const std::filesystem::path& path) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::file_status status = fs::symlink_status(path, ec);
-  if (fs::is_symlink(status)) return "is a symbolic link";
-  if (fs::is_directory(status)) return "is a folder";
-  if (!fs::is_regular_file(status)) return "is not a regular file";
-  try {
-    const nlohmann::json document = read_json_file(path.string());
-    if (document.is_object() && document.contains("format") && document["format"] == kModelFormat)
-      return "";
-  } catch (const InputError&) {
-  }
-  return "exists and is not a Saltus body model (\"format\": \"" + std::string(kModelFormat) +
-         "\")";
-}
-
-}  // namespace
-
 void save_body_model_file(const std::string& path, const BodyModel& model) {
   write_output_file(path, body_model_to_json(model).dump(2) + "\n",
-                    [](const std::string& existing) -> std::string {
-                      const std::string reason = foreign_model_file(existing);
-                      return reason.empty()
-                                 ? ""
-                                 : reason +
-                                       "; Saltus replaces only model files it wrote: give a new "
-                                       "file name or move this one away";
-                    });
+                    own_saltus_json_file(kModelFormat, "body model"));
 }
 
 nlohmann::json model_summary_to_json(const ModelSummary& summary) {

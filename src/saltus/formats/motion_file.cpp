@@ -1,5 +1,7 @@
 #include "saltus/formats/motion_file.h"
 
+#include "saltus/formats/output_folder.h"
+
 #include <cctype>
 #include <cmath>
 #include <filesystem>
@@ -493,6 +495,11 @@ Motion parse_motion(const nlohmann::json& document, const std::string& file,
   if (auto spline = root.find("spline"))
     motion.spline = parse_spline(*spline, model, motion.keyframes);
   return motion;
+}
+
+void save_motion_file(const std::string& path, const Motion& motion, const BodyModel& model) {
+  write_output_file(path, motion_to_json(motion, model).dump(2) + "\n",
+                    own_saltus_json_file(kMotionFormatTag, "motion"));
 }
 
 std::string read_motion_model_field(const nlohmann::json& document, const std::string& file) {

@@ -38,6 +38,12 @@ ModelReference model_reference_for(const std::string& model_file, const std::str
 /// Serialises to "saltus-motion/1" (rotations as [w, x, y, z]; "spline" included when present).
 nlohmann::json motion_to_json(const Motion& motion, const BodyModel& model);
 
+/// Writes motion_to_json(motion, model) to `path` through write_output_file (output_folder.h):
+/// at every instant `path` is absent, the old file or the new complete one; an existing `path`
+/// is replaced only when it is a Saltus motion file, anything else is refused with InputError
+/// naming it. OutputError when the system refuses.
+void save_motion_file(const std::string& path, const Motion& motion, const BodyModel& model);
+
 /// The "model" field of a motion file, read without validating the rest (to find the model).
 std::string read_motion_model_field(const nlohmann::json& document, const std::string& file);
 

@@ -850,6 +850,32 @@ void write_output_file(const std::string& path, const std::string& text, const O
   unregister_slot(slot);
 }
 
+OwnFileCheck own_saltus_json_file(const std::string& format, const std::string& what) {
+  return [format, what](const std::string& path) -> std::string {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::file_status status = fs::symlink_status(path, ec);
+    std::string reason;
+    if (fs::is_symlink(status))
+      reason = "is a symbolic link";
+    else if (fs::is_directory(status))
+      reason = "is a folder";
+    else if (!fs::is_regular_file(status))
+      reason = "is not a regular file";
+    if (reason.empty()) {
+      try {
+        const nlohmann::json document = read_json_file(path);
+        if (document.is_object() && document.contains("format") && document["format"] == format)
+          return "";
+      } catch (const InputError&) {
+      }
+      reason = "exists and is not a Saltus " + what + " (\"format\": \"" + format + "\")";
+    }
+    return reason + "; Saltus replaces only " + what +
+           " files it wrote: give a new file name or move this one away";
+  };
+}
+
 void write_new_file(const std::string& path, const std::string& text) {
   write_output_file(path, text);
 }

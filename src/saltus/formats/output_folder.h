@@ -113,6 +113,12 @@ using OwnFileCheck = std::function<std::string(const std::string& path)>;
 void write_output_file(const std::string& path, const std::string& text,
                        const OwnFileCheck& own = {});
 
+/// The check for files of one of Saltus's JSON formats: an existing file may be replaced when
+/// it is a regular JSON file whose "format" is `format` (a model or motion file Saltus wrote);
+/// otherwise the reason names it, e.g. "exists and is not a Saltus body model (...); Saltus
+/// replaces only body models it wrote: ...". `what` is "body model" or "motion".
+OwnFileCheck own_saltus_json_file(const std::string& format, const std::string& what);
+
 /// write_output_file that never replaces anything: `path` must not exist.
 void write_new_file(const std::string& path, const std::string& text);
 

@@ -524,3 +524,47 @@ TEST(MotionLabel, IsTheSkillNumberOrTheFileNameWithoutItsSuffix) {
 
 }  // namespace
 }  // namespace saltus
+
+namespace saltus {
+namespace {
+
+// save_motion_file: what it writes parses back to the same motion (through the file), it
+// replaces a motion file it wrote, and it refuses any other file, leaving it as it was.
+TEST(Motion, SaveMotionFileReplacesOnlyMotionFiles) {
+  namespace fs = std::filesystem;
+  const BodyModel model = tiny_model();
+  const Motion motion = parse_motion(good_motion_document(), kFile, model);
+  std::random_device rd;
+  const fs::path folder = fs::path(::testing::TempDir()) / ("save-motion-" + std::to_string(rd()));
+  const std::string path = (folder / "a.motion.json").string();
+  save_motion_file(path, motion, model);  // creates the folder
+  std::ifstream in(path);
+  const Motion back = parse_motion(nlohmann::json::parse(in), path, model);
+  EXPECT_EQ(back.keyframes.size(), motion.keyframes.size());
+  Motion renamed = motion;
+  renamed.name = "renamed";
+  save_motion_file(path, renamed, model);
+  std::ifstream again(path);
+  EXPECT_EQ(nlohmann::json::parse(again)["name"], "renamed");
+
+  const std::string foreign = (folder / "notes.json").string();
+  std::ofstream(foreign) << "{\"format\": \"something-else\"}\n";
+  try {
+    save_motion_file(foreign, motion, model);
+    ADD_FAILURE() << "a foreign file was replaced";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("not a Saltus motion"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("notes.json"), std::string::npos) << e.what();
+  }
+  std::ifstream kept(foreign);
+  EXPECT_EQ(nlohmann::json::parse(kept)["format"], "something-else");
+  // Nothing left behind but the two files.
+  int entries = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(folder))
+    ++entries;
+  EXPECT_EQ(entries, 2);
+  fs::remove_all(folder);
+}
+
+}  // namespace
+}  // namespace saltus
