@@ -317,11 +317,19 @@ TEST(OutputFolder, AKilledRunsForkedChildrenDoNotKeepItsLock) {
   if (run == 0) {
     ::close(ready[0]);
     OutputFolder folder(out);
+    // The case process says when it runs: fork's child handlers (which close the copies) have
+    // run by then, however late the scheduler starts it on a loaded machine.
+    int started[2];
+    if (::pipe(started) != 0) _exit(1);
     const pid_t case_process = ::fork();
     if (case_process == 0) {
+      const char byte = 1;
+      if (::write(started[1], &byte, 1) != 1) _exit(1);
       ::sleep(10);
       _exit(0);
     }
+    char byte = 0;
+    if (::read(started[0], &byte, 1) != 1) _exit(1);
     if (::write(ready[1], &case_process, sizeof case_process) != sizeof case_process) _exit(1);
     ::pause();
     _exit(0);
