@@ -36,9 +36,8 @@ struct JointMomentStateJacobian {
   std::vector<Eigen::Matrix<double, 3, 6>> root_translation;
   int size = 0;
 
-  /// Workspace: each segment's own 6×9 columns dF_i/d(state_i) in its frame (with the turn of
-  /// X*_i), and the velocity and acceleration changes carried down from one ancestor.
-  std::vector<Eigen::Matrix<double, 6, kJointStateTangentSize>> own_columns;
+  /// Workspace: the velocity and acceleration changes carried down from one ancestor (its 9
+  /// state columns, then the root translation's 6).
   std::vector<Eigen::Matrix<double, 6, 15>> velocity_change, acceleration_change;
 };
 

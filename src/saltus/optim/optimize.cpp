@@ -308,8 +308,9 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
   result.constraints = best.constraints;
 
   // The polish: least joint effort at the keyframe times found, from the best level's optimum
-  // on its knots. Kept when it solves (it trades a little root force for joints that do not
-  // kick; result.joint_load_polish records both figures).
+  // on its knots. Kept when it solves and its root force stays within the target a motion is
+  // held to (kPolishMaxRootForce) or below the levels' (it trades a little root force for
+  // joints that do not kick; result.joint_load_polish records both figures).
   if (joint_load_weight > 0 && nlp_options.formulation == Formulation::kRelaxed &&
       best.solve.solved && !(cancel && cancel->load())) {
     MotionNlpOptions polish_options = nlp_options;
@@ -329,7 +330,8 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
         dense_check(model, polished.trajectory, options.nlp.samples).metrics.avg_root_force;
     p.iterations = polished.solve.iterations;
     p.status = polished.solve.status;
-    p.kept = polished.solve.solved;
+    p.kept = polished.solve.solved && (p.avg_root_force_after <= kPolishMaxRootForce ||
+                                       p.avg_root_force_after <= p.avg_root_force_before);
     if (p.kept) best = std::move(polished);
   }
 

@@ -96,6 +96,10 @@ inline constexpr double kMaxControlTurn = 1.75 * 3.14159265358979323846;
 /// alone (what MotionNlpOptions::joint_turn_limit bounds).
 double largest_control_turn(const Trajectory<double>& trajectory, int first_segment = 0);
 
+/// N: the least-joint-effort polish may trade root force for joint loads up to this average
+/// root force (a flight's true residual is held to it: docs/optimizer.md, "Joint loads").
+inline constexpr double kPolishMaxRootForce = 0.5;
+
 struct OptimizationResult {
   SolveReport solve;
   int variables = 0;
@@ -115,7 +119,8 @@ struct OptimizationResult {
   };
   std::vector<Level> levels;
   /// Least joint effort (MotionNlpOptions::joint_load_weight > 0): a last solve at the keyframe
-  /// times the levels found, with the joint loads in the objective; kept when it solved.
+  /// times the levels found, with the joint loads in the objective; kept when it solved with an
+  /// average root force within kPolishMaxRootForce, or no larger than before.
   struct Polish {
     double avg_root_force_before = 0.0;  ///< N, the best level's (dense check)
     double avg_root_force_after = 0.0;   ///< N, the polished motion's
