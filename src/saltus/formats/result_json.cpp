@@ -221,7 +221,7 @@ ResultJson::Optimization::Resolution read_resolution(const JsonNode& node) {
   }
   if (const auto polish = node.find("joint_load_polish")) {
     polish->require_object();
-    OptimizationResult::Polish& p = r.joint_load_polish.emplace();
+    JointLoadPolish& p = r.joint_load_polish.emplace();
     p.avg_root_force_before = polish->at("avg_root_force_before").as_double();
     p.avg_root_force_after = polish->at("avg_root_force_after").as_double();
     p.iterations = polish->at("iterations").as_int();

@@ -117,7 +117,7 @@ struct ResultJson {
       std::vector<double> knots;      ///< of the optimised motion's splines (s)
       std::vector<OptimizationResult::Level> levels;  ///< each level tried, in order
       /// The last solve with least joint effort, when there was one.
-      std::optional<OptimizationResult::Polish> joint_load_polish;
+      std::optional<JointLoadPolish> joint_load_polish;
     };
     std::optional<Resolution> resolution;
   };

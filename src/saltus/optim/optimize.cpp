@@ -324,7 +324,7 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
     iterations += polished.solve.iterations;
     restarts += polished.solve.restarts;
     seconds += polished.solve.seconds;
-    OptimizationResult::Polish& p = result.joint_load_polish.emplace();
+    JointLoadPolish& p = result.joint_load_polish.emplace();
     p.avg_root_force_before = best_force;
     p.avg_root_force_after =
         dense_check(model, polished.trajectory, options.nlp.samples).metrics.avg_root_force;

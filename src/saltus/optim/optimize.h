@@ -100,6 +100,17 @@ double largest_control_turn(const Trajectory<double>& trajectory, int first_segm
 /// root force (a flight's true residual is held to it: docs/optimizer.md, "Joint loads").
 inline constexpr double kPolishMaxRootForce = 0.5;
 
+/// Least joint effort (MotionNlpOptions::joint_load_weight > 0): a last solve at the keyframe
+/// times the levels found, with the joint loads in the objective; kept when it solved with an
+/// average root force within kPolishMaxRootForce, or no larger than before.
+struct JointLoadPolish {
+  double avg_root_force_before = 0.0;  ///< N, the best level's (dense check)
+  double avg_root_force_after = 0.0;   ///< N, the polished motion's
+  int iterations = 0;
+  std::string status;
+  bool kept = false;
+};
+
 struct OptimizationResult {
   SolveReport solve;
   int variables = 0;
@@ -118,17 +129,8 @@ struct OptimizationResult {
     std::string status;
   };
   std::vector<Level> levels;
-  /// Least joint effort (MotionNlpOptions::joint_load_weight > 0): a last solve at the keyframe
-  /// times the levels found, with the joint loads in the objective; kept when it solved with an
-  /// average root force within kPolishMaxRootForce, or no larger than before.
-  struct Polish {
-    double avg_root_force_before = 0.0;  ///< N, the best level's (dense check)
-    double avg_root_force_after = 0.0;   ///< N, the polished motion's
-    int iterations = 0;
-    std::string status;
-    bool kept = false;
-  };
-  std::optional<Polish> joint_load_polish;
+  /// Least joint effort's last solve, when there was one.
+  std::optional<JointLoadPolish> joint_load_polish;
   MotionEvaluation before;  ///< the interpolated motion (the starting point)
   MotionEvaluation after;   ///< the optimised motion, on the same sample grid
   /// J by the optimiser's own quadrature (MotionNlp::force_objective), at the start and at the
