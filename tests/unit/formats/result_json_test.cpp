@@ -198,8 +198,8 @@ ResultJson random_result(ResultJson::Kind kind, std::mt19937& rng) {
       resolution.levels.push_back({resolution.subdivisions, positive(rng), count(rng),
                                    rng() % 2 ? "solved" : "acceptable"});
     if (rng() % 2)
-      resolution.joint_load_polish = JointLoadPolish{
-          positive(rng), positive(rng), count(rng), "solved", rng() % 2 == 0};
+      resolution.joint_load_polish =
+          JointLoadPolish{positive(rng), positive(rng), count(rng), "solved", rng() % 2 == 0};
     o.resolution = resolution;
     r.optimization = o;
   }
