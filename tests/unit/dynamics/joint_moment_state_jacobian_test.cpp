@@ -7,29 +7,11 @@
 #include <random>
 
 #include "saltus/dynamics/joint_moment_state_jacobian.h"
+#include "support/random_body_state.h"
 #include "support/test_motions.h"
 
 namespace saltus {
 namespace {
-
-/// A generic state: tilted joints, brisk rates, the root moving and accelerating.
-BodyState<double> moment_test_state(int segments, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> normal(0.0, 1.0);
-  auto vec = [&](double scale) {
-    return Eigen::Vector3d(scale * normal(rng), scale * normal(rng), scale * normal(rng));
-  };
-  BodyState<double> state(segments);
-  state.root_position = vec(1.0);
-  state.root_velocity = vec(3.0);
-  state.root_acceleration = vec(10.0);
-  for (JointState<double>& joint : state.joints) {
-    joint.q = quat_exp(vec(0.6));
-    joint.omega = vec(4.0);
-    joint.alpha = vec(30.0);
-  }
-  return state;
-}
 
 /// Every joint's moment n_j (child frame, about the joint centre), stacked.
 Eigen::VectorXd joint_moments(const BodyModel& model, const BodyState<double>& state) {
@@ -45,7 +27,7 @@ TEST(JointMomentStateJacobian, MatchesCentralDifferencesForEveryJointAndState) {
   const BodyModel model = test::bundled_model();
   const int n = model.size();
   for (unsigned seed : {3u, 8u}) {
-    const BodyState<double> state = moment_test_state(n, seed);
+    const BodyState<double> state = test::random_body_state(n, seed);
     DynamicsData<double> data(model);
     inverse_dynamics(model, data, state);
     RootWrenchStateJacobian sweep(model);
@@ -94,7 +76,7 @@ TEST(JointMomentStateJacobian, MatchesCentralDifferencesForEveryJointAndState) {
 
 TEST(JointMomentStateJacobian, RootRowIsTheRootWrenchsMoment) {
   const BodyModel model = test::bundled_model();
-  const BodyState<double> state = moment_test_state(model.size(), 5);
+  const BodyState<double> state = test::random_body_state(model.size(), 5);
   DynamicsData<double> data(model);
   inverse_dynamics(model, data, state);
   RootWrenchStateJacobian sweep(model);

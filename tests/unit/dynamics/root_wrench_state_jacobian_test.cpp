@@ -6,6 +6,7 @@
 #include <random>
 
 #include "saltus/dynamics/root_wrench_state_jacobian.h"
+#include "support/random_body_state.h"
 #include "support/test_motions.h"
 
 namespace saltus {
@@ -13,25 +14,6 @@ namespace {
 
 using Ad = Eigen::AutoDiffScalar<Eigen::Matrix<double, kJointStateTangentSize, 1>>;
 using Columns = Eigen::Matrix<double, 6, kJointStateTangentSize>;
-
-/// A generic state: tilted joints, brisk rates, the root moving and accelerating.
-BodyState<double> random_state(int segments, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> normal(0.0, 1.0);
-  auto vec = [&](double scale) {
-    return Eigen::Vector3d(scale * normal(rng), scale * normal(rng), scale * normal(rng));
-  };
-  BodyState<double> state(segments);
-  state.root_position = vec(1.0);
-  state.root_velocity = vec(3.0);
-  state.root_acceleration = vec(10.0);
-  for (JointState<double>& joint : state.joints) {
-    joint.q = quat_exp(vec(0.6));
-    joint.omega = vec(4.0);
-    joint.alpha = vec(30.0);
-  }
-  return state;
-}
 
 Ad seeded(double value, int direction) {
   Ad a(value);
@@ -84,7 +66,7 @@ RootWrenchStateJacobian analytic(const BodyModel& model, const BodyState<double>
 TEST(RootWrenchStateJacobian, MatchesAutomaticDifferentiationOfInverseDynamics) {
   const BodyModel model = test::bundled_model();
   for (unsigned seed : {1u, 2u, 3u}) {
-    const BodyState<double> state = random_state(model.size(), seed);
+    const BodyState<double> state = test::random_body_state(model.size(), seed);
     const RootWrenchStateJacobian jac = analytic(model, state);
     for (int k = 0; k < model.size(); ++k) {
       const Columns expected = ad_columns(model, state, k);
@@ -102,7 +84,7 @@ TEST(RootWrenchStateJacobian, MatchesAutomaticDifferentiationOfInverseDynamics) 
 
 TEST(RootWrenchStateJacobian, MatchesCentralDifferences) {
   const BodyModel model = test::bundled_model();
-  const BodyState<double> state = random_state(model.size(), 7);
+  const BodyState<double> state = test::random_body_state(model.size(), 7);
   const RootWrenchStateJacobian jac = analytic(model, state);
   const double h = 1e-6;
   // Perturbs one state entry of segment k (η, ω, α) by ±h and differences the wrench.
@@ -133,7 +115,7 @@ TEST(RootWrenchStateJacobian, MatchesCentralDifferences) {
 TEST(RootWrenchStateJacobian, AccelerationColumnsAreTheCompositeInertia) {
   // The wrench is linear in p̈: F(p̈ + d) − F(p̈) is exact for any d, not only small ones.
   const BodyModel model = test::bundled_model();
-  const BodyState<double> state = random_state(model.size(), 11);
+  const BodyState<double> state = test::random_body_state(model.size(), 11);
   const RootWrenchStateJacobian jac = analytic(model, state);
   const Eigen::Vector3d d(2.0, -5.0, 1.5);
   BodyState<double> moved = state;
