@@ -18,6 +18,7 @@
 #include "model_verbs.h"
 #include "saltus/base/constants.h"
 #include "saltus/base/input_error.h"
+#include "saltus/base/text_format.h"
 #include "saltus/evaluation/evaluate.h"
 #include "saltus/evaluation/force_metrics.h"
 #include "saltus/evaluation/joint_loads.h"
@@ -402,6 +403,11 @@ int main(int argc, char** argv) {
     return kExitBadInput;
   }
 
+  // One printable line whatever the message quotes (a path with a newline, an ESC).
+  const auto report = [](const char* kind, const std::exception& e, int status) {
+    std::fprintf(stderr, "saltus: %s: %s\n", kind, saltus::printable(e.what()).c_str());
+    return status;
+  };
   try {
     if (evaluate->parsed()) return run_evaluate(evaluate_args);
     if (simulate->parsed()) return run_simulate(simulate_args);
@@ -411,20 +417,15 @@ int main(int argc, char** argv) {
     if (auto status = saltus_cli::run_capture_verbs(capture_verbs)) return *status;
     if (auto status = saltus_cli::run_model_verbs(model_verbs)) return *status;
   } catch (const saltus::InputError& e) {
-    std::fprintf(stderr, "saltus: error: %s\n", e.what());
-    return kExitBadInput;
+    return report("error", e, kExitBadInput);
   } catch (const saltus::OutputError& e) {
-    std::fprintf(stderr, "saltus: error: %s\n", e.what());
-    return kExitOutputNotWritten;
+    return report("error", e, kExitOutputNotWritten);
   } catch (const std::invalid_argument& e) {
-    std::fprintf(stderr, "saltus: error: %s\n", e.what());
-    return kExitBadInput;
+    return report("error", e, kExitBadInput);
   } catch (const std::filesystem::filesystem_error& e) {
-    std::fprintf(stderr, "saltus: error: %s\n", e.what());
-    return kExitBadInput;
+    return report("error", e, kExitBadInput);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "saltus: internal error: %s\n", e.what());
-    return kExitInternal;
+    return report("internal error", e, kExitInternal);
   }
   return kExitInternal;
 }

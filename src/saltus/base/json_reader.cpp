@@ -13,41 +13,6 @@ namespace saltus {
 
 namespace {
 
-/// Length of the well-formed UTF-8 sequence starting at text[i], 0 if there is none
-/// (Unicode 15, Table 3-7).
-std::size_t utf8_sequence_length(const std::string& text, std::size_t i) {
-  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
-  const unsigned char b0 = byte(i);
-  if (b0 < 0x80) return 1;
-  std::size_t n = 0;
-  unsigned char low = 0x80;
-  unsigned char high = 0xBF;
-  if (b0 >= 0xC2 && b0 <= 0xDF) {
-    n = 2;
-  } else if (b0 >= 0xE0 && b0 <= 0xEF) {
-    n = 3;
-    if (b0 == 0xE0) low = 0xA0;
-    if (b0 == 0xED) high = 0x9F;  // no surrogates
-  } else if (b0 >= 0xF0 && b0 <= 0xF4) {
-    n = 4;
-    if (b0 == 0xF0) low = 0x90;
-    if (b0 == 0xF4) high = 0x8F;  // nothing past U+10FFFF
-  } else {
-    return 0;
-  }
-  if (i + n > text.size()) return 0;
-  if (byte(i + 1) < low || byte(i + 1) > high) return 0;
-  for (std::size_t k = 2; k < n; ++k)
-    if (byte(i + k) < 0x80 || byte(i + k) > 0xBF) return 0;
-  return n;
-}
-
-std::string hex_byte(unsigned char c) {
-  char buffer[8];
-  std::snprintf(buffer, sizeof buffer, "\\x%02X", static_cast<unsigned>(c));
-  return buffer;
-}
-
 /// Builds the document from nlohmann's SAX events while tracking where it is, so that a
 /// duplicate key, a number out of range or too deep a nesting is reported with its JSON pointer.
 /// (nlohmann's own DOM parser keeps the last of two equal keys and reports 1e400 as an
@@ -183,32 +148,6 @@ class TrackingSax {
 };
 
 }  // namespace
-
-bool is_valid_utf8(const std::string& text) {
-  for (std::size_t i = 0; i < text.size();) {
-    const std::size_t n = utf8_sequence_length(text, i);
-    if (n == 0) return false;
-    i += n;
-  }
-  return true;
-}
-
-std::string printable(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (std::size_t i = 0; i < text.size();) {
-    const std::size_t n = utf8_sequence_length(text, i);
-    const unsigned char c = static_cast<unsigned char>(text[i]);
-    if (n == 0 || (n == 1 && (c < 0x20 || c == 0x7F))) {
-      out += hex_byte(c);
-      ++i;
-    } else {
-      out.append(text, i, n);
-      i += n;
-    }
-  }
-  return out;
-}
 
 std::string nearest_name(const std::string& name, const std::vector<std::string>& candidates) {
   const auto lower = [](std::string s) {

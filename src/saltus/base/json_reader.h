@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "saltus/base/input_error.h"
+#include "saltus/base/text_format.h"
 
 namespace saltus {
 
@@ -31,14 +32,6 @@ nlohmann::json read_json_file(const std::string& path);
 
 /// Parses JSON text with the checks of read_json_file; `file` names it in messages.
 nlohmann::json parse_json_text(const std::string& text, const std::string& file);
-
-/// True when `text` is well-formed UTF-8 (no overlong forms, surrogates or code points past
-/// U+10FFFF).
-bool is_valid_utf8(const std::string& text);
-
-/// `text` with every byte that is not part of well-formed UTF-8, and every control character,
-/// written as \xNN: safe to print and to store in a JSON string.
-std::string printable(const std::string& text);
 
 /// The candidate closest to `name` by edit distance (case-insensitive) if it is close enough to
 /// be a likely typo (at most a third of the name's length, at least 1, edits), else "".

@@ -29,5 +29,12 @@ TEST(InputError, LeavesOutAnEmptyPathAndIsARuntimeError) {
   }
 }
 
+TEST(InputError, QuotesUserTextOnOnePrintableLine) {
+  // A file name with a newline and an ESC, a key that is not UTF-8: one line, nothing raw.
+  const InputError e("evil\n\x1b[31mname.json", "/joints/l\xFF", "unknown joint \"a\tb\"");
+  EXPECT_STREQ(e.what(), "evil\\x0A\\x1B[31mname.json: /joints/l\\xFF: unknown joint \"a\\x09b\"");
+  EXPECT_EQ(e.file(), "evil\n\x1b[31mname.json") << "the parts stay as given";
+}
+
 }  // namespace
 }  // namespace saltus

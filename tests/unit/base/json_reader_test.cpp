@@ -193,20 +193,6 @@ TEST(JsonReader, SyntaxEncodingAndDepthErrorsNameTheFile) {
             std::string::npos);
 }
 
-TEST(JsonReader, Utf8Validation) {
-  EXPECT_TRUE(is_valid_utf8("plain ascii"));
-  EXPECT_TRUE(is_valid_utf8("caf\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x98\x80"));
-  EXPECT_FALSE(is_valid_utf8("\xFF"));
-  EXPECT_FALSE(is_valid_utf8("\xC0\xAF"));          // overlong '/'
-  EXPECT_FALSE(is_valid_utf8("\xED\xA0\x80"));      // a surrogate
-  EXPECT_FALSE(is_valid_utf8("\xF4\x90\x80\x80"));  // past U+10FFFF
-  EXPECT_FALSE(is_valid_utf8("\xE2\x82"));          // truncated
-  EXPECT_EQ(printable("a\xFF"
-                      "b\n"),
-            "a\\xFFb\\x0A");
-  EXPECT_EQ(printable("caf\xC3\xA9"), "caf\xC3\xA9");
-}
-
 TEST(JsonReader, FilesThatAreNotRegularOrTooLargeAreRefusedUnread) {
   // Issue 16 item 7: /dev/zero was read until memory ran out.
   const auto start = std::chrono::steady_clock::now();

@@ -1,5 +1,6 @@
-// Numbers as text (base/text_format.h): a printf pattern as the C library applies it, and the six
-// significant digits of the stream default, compared here with printf's %g (the same rule).
+// Numbers and user text (base/text_format.h): a printf pattern as the C library applies it, the six
+// significant digits of the stream default, compared here with printf's %g (the same rule), and
+// user strings made printable (well-formed UTF-8 kept, everything else as \xNN).
 
 #include "saltus/base/text_format.h"
 
@@ -49,6 +50,20 @@ TEST(MessageText, KeepsAMessageOnOneLineAndShort) {
     EXPECT_EQ(out.find('\x1B'), std::string::npos);
     EXPECT_LE(out.find("..."), limit) << out;
   }
+}
+
+TEST(Printable, ValidatesUtf8AndEscapesWhatIsNotPrintable) {
+  EXPECT_TRUE(is_valid_utf8("plain ascii"));
+  EXPECT_TRUE(is_valid_utf8("caf\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x98\x80"));
+  EXPECT_FALSE(is_valid_utf8("\xFF"));
+  EXPECT_FALSE(is_valid_utf8("\xC0\xAF"));          // overlong '/'
+  EXPECT_FALSE(is_valid_utf8("\xED\xA0\x80"));      // a surrogate
+  EXPECT_FALSE(is_valid_utf8("\xF4\x90\x80\x80"));  // past U+10FFFF
+  EXPECT_FALSE(is_valid_utf8("\xE2\x82"));          // truncated
+  EXPECT_EQ(printable("a\xFF"
+                      "b\n"),
+            "a\\xFFb\\x0A");
+  EXPECT_EQ(printable("caf\xC3\xA9"), "caf\xC3\xA9");
 }
 
 }  // namespace
