@@ -406,7 +406,14 @@ bool FileController::export_web_page(const QString& path, QString* error) {
       save_body_model_file(folder.filePath("model.json").toStdString(), d.file().model);
       save_motion_file(source, motion, d.file().model);
     }
-    export_flight_page(source, path.toStdString());
+    // The capture the motion was imported from goes beside the athlete as the app draws it:
+    // its own trajectory on the model in use (an import folder the page reads).
+    std::string capture;
+    if (d.capture()) {
+      capture = folder.filePath("capture").toStdString();
+      write_capture_outputs(capture, capture_on_model(*d.capture(), d.file().model));
+    }
+    export_flight_page(source, path.toStdString(), capture);
   } catch (const InputError& e) {
     return context_.fail(tr("Cannot export web page"), qstr(e.what()), error);
   } catch (const std::exception& e) {

@@ -114,10 +114,11 @@ TEST(CaptureCli, BadInputExitsWithTwoNamesTheProblemAndWritesNothing) {
       {"import " + (dir / "missing.bvh"), "missing.bvh: cannot open file for reading"},
       {"import " + (dir / "good.bvh") + " --keyframes 1", "--keyframes: expected a whole number"},
       {"import " + (dir / "good.bvh") + " --keyframes 30",
-       "good.bvh: the keyframe count must be 2 to 8"},
+       "--keyframes: the keyframe count must be 2 to 8 (the captured flight's frames), found 30"},
       {"import " + (dir / "good.bvh") + " --flight 1:0.5", "--flight: START must be before END"},
-      {"import " + (dir / "good.bvh") + " --flight 0.7:0.75", "holds fewer than 3"},
-      {"import " + (dir / "unknown.bvh"), "unknown.bvh: no naming convention fits"},
+      {"import " + (dir / "good.bvh") + " --flight 0.7:0.75",
+       "--flight: the flight 0.7:0.75 s holds fewer than 3 of the clip's 29 frames"},
+      {"import " + (dir / "unknown.bvh"), "unknown.bvh: line 2: no naming convention fits"},
       {"import " + (dir / "good.bvh") + " --mapping " + (dir / "map.json"),
        "map.json: /joints/thigh_l: joint \"nope\" is not in"},
       {"import " + (dir / "good.bvh") + " --model no-such-model", "no-such-model: body model"},
@@ -197,6 +198,15 @@ TEST(CaptureCli, HostileCapturesAreRefusedAtOnceWithOneLine) {
   write_text(dir / "far.bvh",
              backflip_with("OFFSET 0.000000 0.000000 8.488700", "OFFSET 0.000000 1e6 8.488700"));
   write_text(dir / "good.bvh", read_text(bundled_capture("deepmimic-backflip.bvh")));
+  // Names no convention knows for the pelvis and left hip, and a mapping that gives the pelvis
+  // only: the mapping file is named, not the capture.
+  {
+    std::string odd = backflip_with("ROOT root", "ROOT hips");
+    odd.replace(odd.find("JOINT left_hip"), 14, "JOINT leg_l");
+    write_text(dir / "odd.bvh", odd);
+  }
+  write_text(dir / "pelvis-only.json",
+             R"({"format": "saltus-capture-mapping/1", "joints": {"pelvis": "hips"}})");
   {
     // The clip's 29 frames over and over at 120 Hz: 8000 frames with no ground contact, a
     // 67 s "flight" (picking its keyframes took minutes; a motion lasts at most 60 s).
@@ -234,8 +244,12 @@ TEST(CaptureCli, HostileCapturesAreRefusedAtOnceWithOneLine) {
        "range [-100, 100] m/s); it comes from the root's position channels and OFFSETs in the "
        "capture's unit, over the Frame Time (line 89); nothing was written"},
       {dir / "long.bvh",
-       "long.bvh: the flight (no ground contact: frames 0-7999) lasts 66.6557 s, longer than a "
+       "long.bvh: line 87: the flight (no ground contact: frames 0-7999) lasts 66.6557 s, longer "
+       "than a "
        "motion may (60 s); give the flight with --flight START:END"},
+      {"'" + (dir / "no\n\x1B[2Jsuch.bvh") + "'", "no\\x0A\\x1B[2Jsuch.bvh: "},
+      {dir / "odd.bvh --mapping " + (dir / "pelvis-only.json"),
+       "pelvis-only.json: /joints: the mapping gives no source joint for thigh_l"},
       {good + " --keyframes '3\n\x1B[2J'",
        "--keyframes: expected a number, found \"3\\x0A\\x1B[2J\""},
       {good + " --mapping " + (dir / "huge-unit.json"),

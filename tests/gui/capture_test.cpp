@@ -1,7 +1,8 @@
 // A motion capture in the app: File > Import motion capture… (and a .bvh opened or dropped)
 // imports it onto the model; the capture is drawn as a grey figure beside the athlete, its own
 // residual is plotted, and keyframes are picked on its frames in the Capture panel (a click
-// adds or removes one, undoable; "Pick automatically" is the library's rule).
+// adds or removes one, undoable; "Pick automatically" is the library's rule); File > Export web
+// page… puts the capture beside the athlete on the page, as `saltus export` does.
 
 #include <gtest/gtest.h>
 
@@ -30,8 +31,10 @@
 #include "gui_core/test_motion.h"
 #include "saltus/evaluation/force_metrics.h"
 #include "saltus/evaluation/residual_measures.h"
+#include "saltus/formats/flight_page.h"
 #include "saltus/formats/motion_file.h"
 #include "scene/chart_view.h"
+#include "support/cli_runner.h"
 #include "support/temp_path.h"
 
 namespace saltus::gui {
@@ -243,6 +246,34 @@ TEST_F(CaptureTest, ABrokenCaptureSaysWhichFileAndLineAndKeepsTheMotion) {
   EXPECT_TRUE(error.contains("line")) << error.toStdString();
   EXPECT_EQ(window_->document().capture(), nullptr);
   EXPECT_EQ(window_->document().file().path, test::gui_test_motion_path());
+}
+
+TEST_F(CaptureTest, TheWebPageDrawsTheCaptureBesideTheAthlete) {
+  import();
+  saltus::test::TempDir dir;
+  const std::string page = dir / "capture.html";
+  QString error;
+  ASSERT_TRUE(window_->files().export_web_page(QString::fromStdString(page), &error))
+      << error.toStdString();
+  const nlohmann::json data = read_flight_page_data(page);
+  ASSERT_TRUE(data.contains("capture")) << "the capture the motion came from is on the page";
+  const nlohmann::json& capture = data["capture"];
+  EXPECT_GE(capture["t"].size(), 2u);
+  // Its residual against `saltus import` of the same file, the model unchanged.
+  const auto run = saltus::test::run_cli("import " + capture_path().toStdString() +
+                                         " --quiet --out " + (dir / "imported"));
+  ASSERT_EQ(run.status, 0) << run.output;
+  const double imported =
+      saltus::test::read_json(dir / "imported/result.json")["capture"]["residual"]["avg_root_force"]
+          .get<double>();
+  EXPECT_NEAR(capture["residual"]["avg_root_force"].get<double>(), imported, 1e-9 * imported);
+
+  // A motion file has no capture to draw.
+  ASSERT_TRUE(window_->open_motion(QString::fromStdString(test::gui_test_motion_path())));
+  const std::string plain = dir / "motion.html";
+  ASSERT_TRUE(window_->files().export_web_page(QString::fromStdString(plain), &error))
+      << error.toStdString();
+  EXPECT_FALSE(read_flight_page_data(plain).contains("capture"));
 }
 
 }  // namespace

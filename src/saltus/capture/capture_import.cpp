@@ -192,11 +192,12 @@ CaptureImport import_capture(const MocapClip& clip, const BodyModel& model,
   const FlightPhase& flight = out.flight;
   const double flight_span = (flight.last_frame - flight.first_frame) * dt;
   if (options.max_flight_time && flight_span > *options.max_flight_time)
-    throw std::invalid_argument(
+    throw CaptureError(
+        options.flight ? CapturePart::kFlightOption : CapturePart::kFrames,
         "the flight (" + flight.method + ": frames " + std::to_string(flight.first_frame) + "-" +
-        std::to_string(flight.last_frame) + ") lasts " + format("%.6g", flight_span) +
-        " s, longer than a motion may (" + format("%.6g", *options.max_flight_time) +
-        " s); give the flight with --flight START:END");
+            std::to_string(flight.last_frame) + ") lasts " + format("%.6g", flight_span) +
+            " s, longer than a motion may (" + format("%.6g", *options.max_flight_time) +
+            " s); give the flight with --flight START:END");
 
   // Heading: the somersault axis (the horizontal part of the flight's angular momentum) onto
   // x, the sign chosen so that the body's left at take-off points to +x as nearly as it can.

@@ -5,6 +5,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "saltus/base/text_format.h"
+#include "saltus/capture/mocap_clip.h"
+
 namespace saltus {
 
 namespace {
@@ -66,7 +69,8 @@ BallisticFit finish_fit(BallisticFit fit, const std::vector<double>& times,
 FlightPhase detect_flight(const std::vector<RetargetedFrame>& frames, double frame_time,
                           const GroundContactOptions& options) {
   const int n = static_cast<int>(frames.size());
-  if (n < 3) throw std::invalid_argument("a clip of fewer than 3 frames has no flight phase");
+  if (n < 3)
+    throw CaptureError(CapturePart::kFrames, "a clip of fewer than 3 frames has no flight phase");
   FlightPhase flight;
   std::array<FootTrack, 2> feet;
   for (int side = 0; side < 2; ++side) {
@@ -117,9 +121,10 @@ FlightPhase detect_flight(const std::vector<RetargetedFrame>& frames, double fra
     f = g;
   }
   if (best_length < 3)
-    throw std::invalid_argument(
+    throw CaptureError(
+        CapturePart::kFrames,
         "no flight phase found: the longest stretch with both feet off the ground has " +
-        std::to_string(best_length) + " frame(s); give it with --flight START:END");
+            std::to_string(best_length) + " frame(s); give it with --flight START:END");
   flight.first_frame = best_start;
   flight.last_frame = best_start + best_length - 1;
   flight.method = best_length == n ? "no ground contact" : "feet";
@@ -142,7 +147,8 @@ FlightPhase detect_flight(const std::vector<RetargetedFrame>& frames, double fra
 }
 
 FlightPhase flight_between(int frame_count, double frame_time, double start, double end) {
-  if (!(start < end)) throw std::invalid_argument("the flight's start must be before its end");
+  if (!(start < end))
+    throw CaptureError(CapturePart::kFlightOption, "the flight's start must be before its end");
   FlightPhase flight;
   // Frames inside [start, end], with a rounding allowance so "0.6875" selects frame 11.
   const double slack = 1e-6 * frame_time;
@@ -150,10 +156,10 @@ FlightPhase flight_between(int frame_count, double frame_time, double start, dou
   flight.last_frame =
       std::min(frame_count - 1, static_cast<int>(std::floor((end + slack) / frame_time)));
   if (flight.last_frame - flight.first_frame + 1 < 3)
-    throw std::invalid_argument("the flight " + std::to_string(start) + ":" + std::to_string(end) +
-                                " s holds fewer than 3 of the clip's " +
-                                std::to_string(frame_count) + " frames (" +
-                                std::to_string(frame_time) + " s apart)");
+    throw CaptureError(CapturePart::kFlightOption,
+                       "the flight " + message_number(start) + ":" + message_number(end) +
+                           " s holds fewer than 3 of the clip's " + std::to_string(frame_count) +
+                           " frames (" + message_number(frame_time) + " s apart)");
   flight.liftoff_time = start;
   flight.touchdown_time = end;
   flight.method = "given";

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "saltus/base/constants.h"
+#include "saltus/capture/mocap_clip.h"
 #include "saltus/math/bspline_basis.h"
 #include "saltus/math/quaternion_spline.h"
 
@@ -41,12 +42,13 @@ KeyframePick keyframe_errors_of(const Motion& captured, const std::vector<int>& 
 KeyframePick pick_keyframes(const Motion& captured, const BodyModel& model,
                             std::optional<int> count) {
   const int n = static_cast<int>(captured.keyframes.size());
-  if (n < 2) throw std::invalid_argument("a captured motion needs at least 2 frames");
+  if (n < 2) throw CaptureError(CapturePart::kFrames, "a captured motion needs at least 2 frames");
   const int most = std::min(n, kMaxPickedKeyframes);
   if (count && (*count < 2 || *count > most))
-    throw std::invalid_argument("the keyframe count must be 2 to " + std::to_string(most) +
-                                (most == n ? " (the captured flight's frames)" : " (or all)") +
-                                ", found " + std::to_string(*count));
+    throw CaptureError(CapturePart::kKeyframesOption,
+                       "the keyframe count must be 2 to " + std::to_string(most) +
+                           (most == n ? " (the captured flight's frames)" : " (or all)") +
+                           ", found " + std::to_string(*count));
   if (static_cast<int>(captured.keyframes.front().rotations.size()) != model.size())
     throw std::invalid_argument("pick_keyframes: the motion does not fit the model");
   const double tolerance = captured.tolerances.quaternion;

@@ -8,10 +8,33 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace saltus {
+
+/// The part of a user's input a capture problem lies in, so that the front end names it (the
+/// line of the BVH file, the flag, the model or mapping file) as every other message does.
+enum class CapturePart {
+  kSkeleton,         ///< the BVH file's HIERARCHY (its joints and offsets)
+  kFrames,           ///< the BVH file's MOTION section (its frames)
+  kFlightOption,     ///< the flight phase the user gave (--flight)
+  kKeyframesOption,  ///< the keyframe count the user gave (--keyframes)
+  kModel,            ///< the body model the capture is imported onto
+  kMapping,          ///< the mapping file the user gave (--mapping)
+};
+
+/// A capture that cannot be imported, with the part of the input that causes it.
+class CaptureError : public std::invalid_argument {
+ public:
+  CaptureError(CapturePart part, const std::string& problem)
+      : std::invalid_argument(problem), part_(part) {}
+  CapturePart part() const { return part_; }
+
+ private:
+  CapturePart part_;
+};
 
 /// One BVH channel: a translation or a rotation (degrees) about one axis of the joint's frame.
 enum class MocapChannel { kXposition, kYposition, kZposition, kXrotation, kYrotation, kZrotation };

@@ -182,8 +182,9 @@ Retargeting plan_retargeting(const MocapClip& clip, const BodyModel& model,
                              const SkeletonMapping& mapping) {
   for (const std::string& name : retargeted_segments())
     if (model.segment_index(name) < 0)
-      throw std::invalid_argument("model \"" + model.name + "\" has no segment \"" + name +
-                                  "\" (a capture maps onto the 13 segments of docs/formats.md)");
+      throw CaptureError(CapturePart::kModel,
+                         "model \"" + model.name + "\" has no segment \"" + name +
+                             "\" (a capture maps onto the 13 segments of docs/formats.md)");
   Retargeting plan;
   plan.mapping = mapping;
   const MocapPose rest = mocap_rest_pose(clip);
@@ -219,7 +220,7 @@ Retargeting plan_retargeting(const MocapClip& clip, const BodyModel& model,
         0.5 * (rest.world_position[plan.hip_joints[0]] + rest.world_position[plan.hip_joints[1]]);
     const Eigen::Vector3d v = trunk.norm() > 1e-6 * hips_to_arms.norm() ? trunk : hips_to_arms;
     if (v.norm() == 0.0)
-      throw std::invalid_argument("the rest skeleton has its shoulders at its hips");
+      throw CaptureError(CapturePart::kSkeleton, "the rest skeleton has its shoulders at its hips");
     axes.up = snap_to_axis(v);
   }
   axes.up_name = axis_name(axes.up);
@@ -232,7 +233,8 @@ Retargeting plan_retargeting(const MocapClip& clip, const BodyModel& model,
     left -= axes.up * axes.up.dot(left);
   }
   if (left.norm() < 1e-9)
-    throw std::invalid_argument(
+    throw CaptureError(
+        CapturePart::kSkeleton,
         "the rest skeleton has its left and right hips (and shoulders) at one point");
   left.normalize();
   axes.saltus_from_source.row(0) = left.transpose();
@@ -256,7 +258,7 @@ Retargeting plan_retargeting(const MocapClip& clip, const BodyModel& model,
     axes.unit = "given";
     axes.unit_detected = false;
   } else {
-    if (!(hi > lo)) throw std::invalid_argument("the rest skeleton has no height");
+    if (!(hi > lo)) throw CaptureError(CapturePart::kSkeleton, "the rest skeleton has no height");
     detect_unit(axes, hi - lo);
   }
   axes.rest_height_m = (hi - lo) * axes.metres_per_unit;
@@ -336,8 +338,8 @@ Retargeting plan_retargeting(const MocapClip& clip, const BodyModel& model,
   const int thigh_l = model.segment_index("thigh_l"), thigh_r = model.segment_index("thigh_r");
   const int pelvis = model.segment_index("pelvis");
   if (model.segments[thigh_l].parent != pelvis || model.segments[thigh_r].parent != pelvis)
-    throw std::invalid_argument("model \"" + model.name +
-                                "\": the thighs must hang from the pelvis");
+    throw CaptureError(CapturePart::kModel,
+                       "model \"" + model.name + "\": the thighs must hang from the pelvis");
   plan.model_hip_centre =
       0.5 * (model.segments[thigh_l].joint_position + model.segments[thigh_r].joint_position);
 
@@ -351,8 +353,9 @@ Retargeting plan_retargeting(const MocapClip& clip, const BodyModel& model,
     else
       collect_foot_points(clip, joints["shank" + suffix].front(), false, plan.foot_points[side]);
     if (plan.foot_points[side].empty())
-      throw std::invalid_argument("the " + std::string(side == 0 ? "left" : "right") +
-                                  " leg has nothing below the knee (no foot joint or End Site)");
+      throw CaptureError(CapturePart::kSkeleton,
+                         "the " + std::string(side == 0 ? "left" : "right") +
+                             " leg has nothing below the knee (no foot joint or End Site)");
   }
 
   std::set<int> used{plan.pelvis_joint, plan.thorax_joint};

@@ -213,8 +213,9 @@ SkeletonMapping guess_skeleton_mapping(const MocapClip& clip) {
       list += (list.empty() ? "" : ", ") + key;
     report += std::string(report.empty() ? "" : "; ") + table.convention + " names lack " + list;
   }
-  throw std::invalid_argument("no naming convention fits the skeleton (" + report +
-                              "); give a mapping file (--mapping, see docs/motion-capture.md)");
+  throw CaptureError(CapturePart::kSkeleton,
+                     "no naming convention fits the skeleton (" + report +
+                         "); give a mapping file (--mapping, see docs/motion-capture.md)");
 }
 
 SkeletonMapping merge_skeleton_mapping(const MocapClip& clip,
@@ -242,8 +243,9 @@ SkeletonMapping merge_skeleton_mapping(const MocapClip& clip,
     if (merged.joints.count(key) == 0 || merged.joints[key].empty())
       missing += (missing.empty() ? "" : ", ") + key;
   if (!missing.empty())
-    throw std::invalid_argument("the mapping gives no source joint for " + missing +
-                                (guess_problem.empty() ? "" : " (" + guess_problem + ")"));
+    throw CaptureError(CapturePart::kMapping,
+                       "the mapping gives no source joint for " + missing +
+                           (guess_problem.empty() ? "" : " (" + guess_problem + ")"));
   return merged;
 }
 

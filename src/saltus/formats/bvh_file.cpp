@@ -54,6 +54,10 @@ class Parser {
       fail(after.line, "a second ROOT: only one skeleton per file is supported");
     if (after.text != "MOTION")
       fail(after.line, "expected MOTION, found " + quote_word(after.text));
+    if (lines) {
+      lines->skeleton = root.line;
+      lines->motion = after.line;
+    }
     parse_motion(clip, lines);
     return clip;
   }

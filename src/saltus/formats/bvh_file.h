@@ -28,6 +28,8 @@ inline constexpr int kMaxBvhFrames = 100000;
 
 /// Where some fields were read (1-based lines), for messages about their values later.
 struct BvhSourceLines {
+  int skeleton = 0;    ///< the ROOT joint (the skeleton's first line)
+  int motion = 0;      ///< the MOTION keyword (the frames' first line)
   int frames = 0;      ///< the "Frames:" count
   int frame_time = 0;  ///< the "Frame Time:" value
 };

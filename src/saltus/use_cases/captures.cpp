@@ -13,6 +13,7 @@
 #include "saltus/base/resources.h"
 #include "saltus/base/text_format.h"
 #include "saltus/capture/model_clip.h"
+#include "saltus/evaluation/sampling.h"
 #include "saltus/formats/bvh_file.h"
 #include "saltus/formats/capture_mapping_file.h"
 #include "saltus/formats/finite_check.h"
@@ -149,6 +150,30 @@ void check_capture_readable(const CaptureFile& capture, const BvhSourceLines& li
   require_finite(capture.import.samples, capture.path, "trajectory.csv");
 }
 
+/// The InputError for a capture that cannot be imported, naming the part of the input at fault:
+/// the line of the BVH file's skeleton or frames, the flag, the model or the mapping file.
+InputError capture_input_error(const CaptureError& e, const CaptureFile& capture,
+                               const CaptureFileOptions& options, const std::string& path,
+                               const BvhSourceLines& lines) {
+  const std::string problem = e.what();
+  switch (e.part()) {
+    case CapturePart::kSkeleton:
+      return InputError(path, "line " + std::to_string(lines.skeleton), problem);
+    case CapturePart::kFrames:
+      return InputError(path, "line " + std::to_string(lines.motion), problem);
+    case CapturePart::kFlightOption:
+      return InputError("--flight", "", problem + " (" + path + ")");
+    case CapturePart::kKeyframesOption:
+      return InputError("--keyframes", "", problem + " (" + path + ")");
+    case CapturePart::kModel:
+      return InputError(capture.model_reference, "", problem + " (importing " + path + ")");
+    case CapturePart::kMapping:
+      return InputError(options.mapping.empty() ? path : options.mapping,
+                        options.mapping.empty() ? "" : "/joints", problem);
+  }
+  return InputError(path, "", problem);
+}
+
 }  // namespace
 
 CaptureFile import_capture_file(const std::string& path, const CaptureFileOptions& options) {
@@ -174,6 +199,8 @@ CaptureFile import_capture_file(const std::string& path, const CaptureFileOption
     if (import_options.name.empty()) import_options.name = fs::path(path).stem().string();
     if (!import_options.max_flight_time) import_options.max_flight_time = plausible::kMaxFlightTime;
     capture.import = import_capture(capture.clip, capture.model, mapping, import_options);
+  } catch (const CaptureError& e) {
+    throw capture_input_error(e, capture, options, path, lines);
   } catch (const MappingError& e) {
     // A mapping key the mapping file gave is named there (/joints/<key>); one guessed by name,
     // in the capture.
@@ -194,6 +221,24 @@ CaptureFile import_capture_file(const std::string& path, const CaptureFileOption
   }
   check_capture_readable(capture, lines, options.import.frame_time.has_value());
   return capture;
+}
+
+CaptureFile capture_on_model(const CaptureFile& capture, const BodyModel& model) {
+  bool same = model.segments.size() == capture.model.segments.size();
+  for (std::size_t i = 0; same && i < model.segments.size(); ++i)
+    same = model.segments[i].name == capture.model.segments[i].name;
+  if (!same)
+    throw std::invalid_argument("model " + model.name + " has other segments than the capture's " +
+                                capture.model.name);
+  CaptureFile out = capture;
+  out.model = model;
+  std::vector<double> times;
+  times.reserve(capture.import.samples.size());
+  for (const SampleRecord& s : capture.import.samples)
+    times.push_back(s.time);
+  out.import.samples = evaluate_trajectory(model, capture.import.trajectory, times);
+  out.import.metrics = force_metrics(out.import.samples);
+  return out;
 }
 
 nlohmann::json captured_motion_json(const CaptureFile& capture, const std::string& model_field) {

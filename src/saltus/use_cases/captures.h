@@ -35,6 +35,12 @@ struct CaptureFile {
 /// mapping file).
 CaptureFile import_capture_file(const std::string& path, const CaptureFileOptions& options = {});
 
+/// The capture's own trajectory on `model` (the model in use after its masses were edited; the
+/// same segments), evaluated at the import's sample times: its samples and residual as the app
+/// plots them. Everything else (clip, mapping, flight, keyframes) is the import's.
+/// std::invalid_argument when the model's segments are not the capture's.
+CaptureFile capture_on_model(const CaptureFile& capture, const BodyModel& model);
+
 /// result.json of an import ("format": "saltus-result/1", "status": "imported").
 nlohmann::json capture_result_json(const CaptureFile& capture);
 

@@ -68,6 +68,16 @@ TEST(Flight, NoFlightAsksForOne) {
   EXPECT_EQ(given.last_frame, 15);
   EXPECT_EQ(given.method, "given");
   EXPECT_THROW(flight_between(30, 0.02, 0.1, 0.13), std::invalid_argument);
+  EXPECT_THROW(
+      {
+        try {
+          flight_between(30, 0.02, 0.1, 0.13);
+        } catch (const CaptureError& e) {
+          EXPECT_EQ(e.part(), CapturePart::kFlightOption) << "the user's --flight is named";
+          throw;
+        }
+      },
+      CaptureError);
 }
 
 TEST(Flight, BallisticFitsRecoverTheParabolaAndAWrongFrameTime) {

@@ -1,7 +1,8 @@
 // Captures in and out (use_cases/captures.h): a motion exported as BVH and imported again
 // gives back its joint rotations frame by frame (Saltus's own skeleton keeps its heading), the
-// import's folder holds the five files and its motion files load; which paths are captures, the
-// export's default rate, and a folder with nothing to export.
+// import's folder holds the five files and its motion files load; the capture on another model
+// (every mass and inertia 1.5 times: the root force of the same kinematics 1.5 times); which
+// paths are captures, the export's default rate, and a folder with nothing to export.
 
 #include "saltus/use_cases/captures.h"
 
@@ -56,6 +57,36 @@ TEST(CaptureFiles, ExportThenImportGivesTheMotionBack) {
   EXPECT_EQ(load_export_source(folder.string()).motion.keyframes.size(), captured.keyframes.size());
   EXPECT_EQ(load_motion_or_capture(bvh.string()).motion.keyframes.size(),
             capture.import.keyframes.keyframes.size());
+}
+
+TEST(CaptureFiles, OnAHeavierModelTheSameKinematicsNeedMoreRootForce) {
+  MotionFile source;
+  source.model = test::bundled_model();
+  source.motion = test::tuck_motion(source.model);
+  const fs::path bvh = test::temp_path("tuck-heavier.bvh");
+  export_motion_bvh(source, bvh.string(), 30.0);
+  const CaptureFile capture = import_capture_file(bvh.string());
+
+  const CaptureFile same = capture_on_model(capture, capture.model);
+  EXPECT_NEAR(same.import.metrics.avg_root_force, capture.import.metrics.avg_root_force,
+              1e-9 * capture.import.metrics.avg_root_force);
+  // Inverse dynamics is linear in the masses and inertias for given kinematics.
+  BodyModel heavier = capture.model;
+  for (Segment& segment : heavier.segments) {
+    segment.mass *= 1.5;
+    segment.inertia *= 1.5;
+  }
+  const CaptureFile heavy = capture_on_model(capture, heavier);
+  ASSERT_EQ(heavy.import.samples.size(), capture.import.samples.size());
+  for (std::size_t i = 0; i < heavy.import.samples.size(); ++i)
+    EXPECT_EQ(heavy.import.samples[i].time, capture.import.samples[i].time);
+  EXPECT_NEAR(heavy.import.metrics.avg_root_force, 1.5 * capture.import.metrics.avg_root_force,
+              1e-6 * capture.import.metrics.avg_root_force);
+  EXPECT_EQ(heavy.model.total_mass(), heavier.total_mass());
+
+  BodyModel other = capture.model;
+  other.segments.pop_back();
+  EXPECT_THROW(capture_on_model(capture, other), std::invalid_argument);
 }
 
 TEST(CaptureFiles, CapturePathsAndTheDefaultRate) {
