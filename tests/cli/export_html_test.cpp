@@ -91,10 +91,8 @@ nlohmann::json selftest_findings(const std::string& page, const std::string& pro
       unescape_html(run.output.substr(start + open.size(), end - start - open.size())));
 }
 
-TEST(ExportHtmlBrowser, TheOptimisedM7PageRunsOfflineAndShowsTheResult) {
-  ASSERT_EQ(run_command("command -v chromium").status, 0)
-      << "chromium is needed for this test: tools/bootstrap.sh test installs it";
-  TempDir dir;
+/// The optimised M7 in `dir`/m7 and its page `dir`/m7.html.
+void make_m7_page(const TempDir& dir) {
   const std::string m7 = std::string(SALTUS_EXAMPLES_DIR) +
                          "/motions/M7-double-front-one-and-a-half-twists.motion.json";
   CliRun run = run_cli("optimize " + m7 + " --quiet --out " + (dir / "m7"));
@@ -103,9 +101,12 @@ TEST(ExportHtmlBrowser, TheOptimisedM7PageRunsOfflineAndShowsTheResult) {
   run = run_cli("export " + (dir / "m7") + " --format html --out " + page);
   ASSERT_EQ(run.status, 0) << run.output;
   EXPECT_LE(fs::file_size(page), 3000000u) << "the issue's bound for M7";
+}
 
-  const nlohmann::json found = selftest_findings(page, dir / "profile");
+/// What the self-test of the M7 page (make_m7_page) must find,.
+void expect_m7_findings(const nlohmann::json& found, const TempDir& dir) {
   SCOPED_TRACE(found.dump());
+  ASSERT_TRUE(found.contains("capture")) << "the self-test stopped early";
   EXPECT_FALSE(found["capture"]["present"].get<bool>()) << "M7 came from no capture";
 
   EXPECT_EQ(found["problems"], nlohmann::json::array()) << "errors or refused requests";
@@ -145,43 +146,54 @@ TEST(ExportHtmlBrowser, TheOptimisedM7PageRunsOfflineAndShowsTheResult) {
   EXPECT_EQ(compared, 6);
   EXPECT_NEAR(std::stod(shown["duration_s"].get<std::string>()),
               result["flight_time_s"].get<double>(), 5e-4);
+}
 
-  // Pictures to look at, laptop and phone sized, at 40 % of the flight.
+/// Where the pictures to look at go: build/<preset>/flight-page/.
+fs::path pictures_dir() {
   const fs::path pictures = fs::path(SALTUS_BIN_DIR).parent_path() / "flight-page";
   fs::create_directories(pictures);
-  const double t = 0.4 * result["flight_time_s"].get<double>();
+  return pictures;
+}
+
+TEST(ExportHtmlBrowser, TheOptimisedM7PageRunsOfflineAndShowsTheResult) {
+  ASSERT_EQ(run_command("command -v chromium").status, 0)
+      << "chromium is needed for this test: tools/bootstrap.sh test installs it";
+  TempDir dir;
+  ASSERT_NO_FATAL_FAILURE(make_m7_page(dir));
+  const std::string page = dir / "m7.html";
+  expect_m7_findings(selftest_findings(page, dir / "profile"), dir);
+
+  // Pictures to look at, laptop and phone sized, at 40 % of the flight.
+  const fs::path pictures = pictures_dir();
+  const double t = 0.4 * read_json(dir / "m7/result.json")["flight_time_s"].get<double>();
   for (const auto& [name, size] :
        {std::pair<std::string, std::string>{"laptop", "1280,720"}, {"phone", "390,844"}}) {
     const fs::path png = pictures / (name + ".png");
     fs::remove(png);
-    run = run_command(chromium_command(dir / "profile") + " --virtual-time-budget=5000 " +
-                      "--window-size=" + size + " --screenshot=" + png.string() + " 'file://" +
-                      page + "#t=" + std::to_string(t) + "'");
+    CliRun run = run_command(chromium_command(dir / "profile") + " --virtual-time-budget=5000 " +
+                             "--window-size=" + size + " --screenshot=" + png.string() +
+                             " 'file://" + page + "#t=" + std::to_string(t) + "'");
     ASSERT_EQ(run.status, 0) << run.output;
     ASSERT_TRUE(fs::exists(png)) << run.output;
     EXPECT_GT(fs::file_size(png), 20000u) << png << ": a blank page compresses to less";
   }
 }
 
-TEST(ExportHtmlBrowser, AnImportedCaptureIsDrawnBesideTheAthlete) {
-  ASSERT_EQ(run_command("command -v chromium").status, 0)
-      << "chromium is needed for this test: tools/bootstrap.sh test installs it";
-  TempDir dir;
+/// The imported backflip capture in `dir`/bf and its page `dir`/bf.html.
+void make_capture_page(const TempDir& dir) {
   const std::string bvh = std::string(SALTUS_EXAMPLES_DIR) + "/captures/deepmimic-backflip.bvh";
   CliRun run = run_cli("import " + bvh + " --quiet --out " + (dir / "bf"));
   ASSERT_EQ(run.status, 0) << run.output;
-  const std::string page = dir / "bf.html";
-  run = run_cli("export " + (dir / "bf") + " --format html --out " + page);
+  run = run_cli("export " + (dir / "bf") + " --format html --out " + (dir / "bf.html"));
   ASSERT_EQ(run.status, 0) << run.output;
   EXPECT_NE(run.output.find("the motion capture beside it: " + (dir / "bf")), std::string::npos)
       << run.output;
-  run = run_cli("export " + (dir / "bf") + " --format bvh --capture " + (dir / "bf") + " --out " +
-                (dir / "bf.bvh"));
-  EXPECT_EQ(run.status, 2) << run.output;
-  EXPECT_NE(run.output.find("--capture"), std::string::npos) << run.output;
+}
 
-  const nlohmann::json found = selftest_findings(page, dir / "profile");
+/// What the self-test of the capture's page (make_capture_page) must find,.
+void expect_capture_findings(const nlohmann::json& found, const TempDir& dir) {
   SCOPED_TRACE(found.dump());
+  ASSERT_TRUE(found.contains("capture")) << "the self-test stopped early";
   EXPECT_EQ(found["problems"], nlohmann::json::array()) << "errors or refused requests";
   EXPECT_GT(found["non_background_fraction"].get<double>(), 0.05) << "the canvas is not blank";
   const nlohmann::json& capture = found["capture"];
@@ -196,17 +208,34 @@ TEST(ExportHtmlBrowser, AnImportedCaptureIsDrawnBesideTheAthlete) {
       read_json(dir / "bf/result.json")["capture"]["residual"]["avg_root_force"].get<double>();
   EXPECT_NEAR(std::stod(found["shown"]["capture.avg_root_force"].get<std::string>()), residual,
               5e-4 * residual);
+}
+
+/// 40 % of the capture's flight, where its picture is taken.
+double capture_picture_time(const TempDir& dir) {
+  return 0.4 *
+         read_json(dir / "bf/keyframes.motion.json")["keyframes"].back()["time"].get<double>();
+}
+
+TEST(ExportHtmlBrowser, AnImportedCaptureIsDrawnBesideTheAthlete) {
+  ASSERT_EQ(run_command("command -v chromium").status, 0)
+      << "chromium is needed for this test: tools/bootstrap.sh test installs it";
+  TempDir dir;
+  ASSERT_NO_FATAL_FAILURE(make_capture_page(dir));
+  const std::string page = dir / "bf.html";
+  CliRun run = run_cli("export " + (dir / "bf") + " --format bvh --capture " + (dir / "bf") +
+                       " --out " + (dir / "bf.bvh"));
+  EXPECT_EQ(run.status, 2) << run.output;
+  EXPECT_NE(run.output.find("--capture"), std::string::npos) << run.output;
+
+  expect_capture_findings(selftest_findings(page, dir / "profile"), dir);
 
   // A picture to look at, laptop sized, at 40 % of the flight.
-  const fs::path pictures = fs::path(SALTUS_BIN_DIR).parent_path() / "flight-page";
-  fs::create_directories(pictures);
-  const fs::path png = pictures / "capture-laptop.png";
+  const fs::path png = pictures_dir() / "capture-laptop.png";
   fs::remove(png);
-  const double t =
-      0.4 * read_json(dir / "bf/keyframes.motion.json")["keyframes"].back()["time"].get<double>();
-  run = run_command(chromium_command(dir / "profile") +
-                    " --virtual-time-budget=5000 --window-size=1280,720 --screenshot=" +
-                    png.string() + " 'file://" + page + "#t=" + std::to_string(t) + "'");
+  run = run_command(
+      chromium_command(dir / "profile") +
+      " --virtual-time-budget=5000 --window-size=1280,720 --screenshot=" + png.string() +
+      " 'file://" + page + "#t=" + std::to_string(capture_picture_time(dir)) + "'");
   ASSERT_EQ(run.status, 0) << run.output;
   EXPECT_GT(fs::file_size(png), 20000u) << png << ": a blank page compresses to less";
 }
