@@ -6,11 +6,15 @@
 // on the plot moving the time, and the title block's numbers equal to result.json's. The page of
 // an imported capture draws the capture beside the athlete: its figure changes the picture when
 // toggled, its curves are on the plot, its residual in the title block is result.json's.
+// The same pages pass the same checks in Firefox ESR (ExportHtmlFirefox.*): a real window on a
+// private X server (Mesa's software OpenGL), driven through WebDriver BiDi by
+// tests/support/firefox_page.py, which also reports the JavaScript errors Firefox logged.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 
 #include "support/cli_runner.h"
 
@@ -103,7 +107,7 @@ void make_m7_page(const TempDir& dir) {
   EXPECT_LE(fs::file_size(page), 3000000u) << "the issue's bound for M7";
 }
 
-/// What the self-test of the M7 page (make_m7_page) must find,.
+/// What the self-test of the M7 page (make_m7_page) must find, in any browser.
 void expect_m7_findings(const nlohmann::json& found, const TempDir& dir) {
   SCOPED_TRACE(found.dump());
   ASSERT_TRUE(found.contains("capture")) << "the self-test stopped early";
@@ -190,7 +194,7 @@ void make_capture_page(const TempDir& dir) {
       << run.output;
 }
 
-/// What the self-test of the capture's page (make_capture_page) must find,.
+/// What the self-test of the capture's page (make_capture_page) must find, in any browser.
 void expect_capture_findings(const nlohmann::json& found, const TempDir& dir) {
   SCOPED_TRACE(found.dump());
   ASSERT_TRUE(found.contains("capture")) << "the self-test stopped early";
@@ -237,6 +241,81 @@ TEST(ExportHtmlBrowser, AnImportedCaptureIsDrawnBesideTheAthlete) {
       " --virtual-time-budget=5000 --window-size=1280,720 --screenshot=" + png.string() +
       " 'file://" + page + "#t=" + std::to_string(capture_picture_time(dir)) + "'");
   ASSERT_EQ(run.status, 0) << run.output;
+  EXPECT_GT(fs::file_size(png), 20000u) << png << ": a blank page compresses to less";
+}
+
+// ---------- Firefox ----------
+
+/// Fails the test (not skips it) when Firefox or the script's websocket module is missing.
+void require_firefox() {
+  ASSERT_EQ(run_command("command -v firefox-esr").status, 0)
+      << "firefox-esr is needed for this test: tools/bootstrap.sh test installs it";
+  ASSERT_EQ(run_command("command -v Xvfb").status, 0)
+      << "Xvfb is needed for this test: tools/bootstrap.sh test installs it (xvfb)";
+  ASSERT_EQ(run_command("/usr/bin/python3 -c 'import websocket'").status, 0)
+      << "python3-websocket is needed for this test: tools/bootstrap.sh test installs it";
+}
+
+/// What tests/support/firefox_page.py read from `page` in Firefox: {"selftest": the page's
+/// findings (with `--selftest`), "browser_errors": the JavaScript errors Firefox logged}. Debian's
+/// python3 by its path: the websocket module is Debian's, which another python3 may not see.
+nlohmann::json firefox_page(const std::string& page, const std::string& options) {
+  const std::string script =
+      (fs::path(SALTUS_TEST_DATA_DIR).parent_path() / "support/firefox_page.py").string();
+  const CliRun run =
+      run_command("timeout -k 10 120 /usr/bin/python3 " + script + " '" + page + "' " + options);
+  EXPECT_EQ(run.status, 0) << run.output;
+  // The findings are the one line of JSON; the script's messages start with its name.
+  std::istringstream lines(run.output);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.empty() || line.front() != '{') continue;
+    nlohmann::json out = nlohmann::json::parse(line, nullptr, false);
+    if (out.is_object()) return out;
+  }
+  ADD_FAILURE() << "no findings from Firefox: " << run.output;
+  return nlohmann::json::object();
+}
+
+TEST(ExportHtmlFirefox, TheOptimisedM7PageRunsOfflineAndShowsTheResult) {
+  ASSERT_NO_FATAL_FAILURE(require_firefox());
+  TempDir dir;
+  ASSERT_NO_FATAL_FAILURE(make_m7_page(dir));
+  // The self-test in a laptop's and a phone's viewport, then pictures to look at in the same two,
+  // at 40 % of the flight.
+  const fs::path laptop = pictures_dir() / "firefox-laptop.png";
+  const fs::path phone = pictures_dir() / "firefox-phone.png";
+  fs::remove(laptop);
+  fs::remove(phone);
+  const double t = 0.4 * read_json(dir / "m7/result.json")["flight_time_s"].get<double>();
+  const nlohmann::json out =
+      firefox_page(dir / "m7.html", "--selftest 1280x720 --selftest 390x844 --at " +
+                                        std::to_string(t) + " --shot 1280x720:" + laptop.string() +
+                                        " --shot 390x844:" + phone.string());
+  for (const char* size : {"1280x720", "390x844"}) {
+    SCOPED_TRACE(size);
+    ASSERT_TRUE(out.contains("selftest") && out["selftest"].contains(size)) << out.dump();
+    expect_m7_findings(out["selftest"][size], dir);
+  }
+  EXPECT_EQ(out["browser_errors"], nlohmann::json::array()) << "JavaScript errors Firefox logged";
+  for (const fs::path& png : {laptop, phone}) {
+    ASSERT_TRUE(fs::exists(png)) << png;
+    EXPECT_GT(fs::file_size(png), 20000u) << png << ": a blank page compresses to less";
+  }
+}
+
+TEST(ExportHtmlFirefox, AnImportedCaptureIsDrawnBesideTheAthlete) {
+  ASSERT_NO_FATAL_FAILURE(require_firefox());
+  TempDir dir;
+  ASSERT_NO_FATAL_FAILURE(make_capture_page(dir));
+  const fs::path png = pictures_dir() / "firefox-capture-laptop.png";
+  fs::remove(png);
+  const nlohmann::json out = firefox_page(
+      dir / "bf.html", "--selftest 1280x720 --at " + std::to_string(capture_picture_time(dir)) +
+                           " --shot 1280x720:" + png.string());
+  ASSERT_TRUE(out.contains("selftest") && out["selftest"].contains("1280x720")) << out.dump();
+  expect_capture_findings(out["selftest"]["1280x720"], dir);
+  EXPECT_EQ(out["browser_errors"], nlohmann::json::array()) << "JavaScript errors Firefox logged";
+  ASSERT_TRUE(fs::exists(png)) << png;
   EXPECT_GT(fs::file_size(png), 20000u) << png << ": a blank page compresses to less";
 }
 
