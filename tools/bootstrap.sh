@@ -19,8 +19,10 @@ packages=(build-essential cmake ninja-build pkg-config clang-format
 # The test form also builds under AddressSanitizer and UndefinedBehaviorSanitizer with clang and
 # runs the readers' libFuzzer targets (llvm-symbolizer, from llvm, makes the reports readable).
 # The cluster tests start a private Slurm on this machine and run a study through GNU parallel.
-# The flight page's test opens it in headless Chromium.
-[ "$mode" = test ] && packages+=(clang libclang-rt-14-dev llvm slurm-wlm munge parallel chromium)
+# The flight page's tests open it in headless Chromium and in Firefox ESR (on Xvfb, driven over
+# WebDriver BiDi by a Python script with Debian's websocket client).
+[ "$mode" = test ] && packages+=(clang libclang-rt-14-dev llvm slurm-wlm munge parallel chromium
+                                 firefox-esr python3-websocket)
 
 # Each stage's wall time, so CI logs show where the time goes (CI's limit is 60 minutes).
 stage_start=$SECONDS

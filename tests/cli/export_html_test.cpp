@@ -6,11 +6,15 @@
 // on the plot moving the time, and the title block's numbers equal to result.json's. The page of
 // an imported capture draws the capture beside the athlete: its figure changes the picture when
 // toggled, its curves are on the plot, its residual in the title block is result.json's.
+// The same pages pass the same checks in Firefox ESR (ExportHtmlFirefox.*): a real window on a
+// private X server (Mesa's software OpenGL), driven through WebDriver BiDi by
+// tests/support/firefox_page.py, which also reports the JavaScript errors Firefox logged.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 
 #include "support/cli_runner.h"
 
@@ -91,10 +95,8 @@ nlohmann::json selftest_findings(const std::string& page, const std::string& pro
       unescape_html(run.output.substr(start + open.size(), end - start - open.size())));
 }
 
-TEST(ExportHtmlBrowser, TheOptimisedM7PageRunsOfflineAndShowsTheResult) {
-  ASSERT_EQ(run_command("command -v chromium").status, 0)
-      << "chromium is needed for this test: tools/bootstrap.sh test installs it";
-  TempDir dir;
+/// The optimised M7 in `dir`/m7 and its page `dir`/m7.html.
+void make_m7_page(const TempDir& dir) {
   const std::string m7 = std::string(SALTUS_EXAMPLES_DIR) +
                          "/motions/M7-double-front-one-and-a-half-twists.motion.json";
   CliRun run = run_cli("optimize " + m7 + " --quiet --out " + (dir / "m7"));
@@ -103,9 +105,12 @@ TEST(ExportHtmlBrowser, TheOptimisedM7PageRunsOfflineAndShowsTheResult) {
   run = run_cli("export " + (dir / "m7") + " --format html --out " + page);
   ASSERT_EQ(run.status, 0) << run.output;
   EXPECT_LE(fs::file_size(page), 3000000u) << "the issue's bound for M7";
+}
 
-  const nlohmann::json found = selftest_findings(page, dir / "profile");
+/// What the self-test of the M7 page (make_m7_page) must find, in any browser.
+void expect_m7_findings(const nlohmann::json& found, const TempDir& dir) {
   SCOPED_TRACE(found.dump());
+  ASSERT_TRUE(found.contains("capture")) << "the self-test stopped early";
   EXPECT_FALSE(found["capture"]["present"].get<bool>()) << "M7 came from no capture";
 
   EXPECT_EQ(found["problems"], nlohmann::json::array()) << "errors or refused requests";
@@ -145,43 +150,54 @@ TEST(ExportHtmlBrowser, TheOptimisedM7PageRunsOfflineAndShowsTheResult) {
   EXPECT_EQ(compared, 6);
   EXPECT_NEAR(std::stod(shown["duration_s"].get<std::string>()),
               result["flight_time_s"].get<double>(), 5e-4);
+}
 
-  // Pictures to look at, laptop and phone sized, at 40 % of the flight.
+/// Where the pictures to look at go: build/<preset>/flight-page/.
+fs::path pictures_dir() {
   const fs::path pictures = fs::path(SALTUS_BIN_DIR).parent_path() / "flight-page";
   fs::create_directories(pictures);
-  const double t = 0.4 * result["flight_time_s"].get<double>();
+  return pictures;
+}
+
+TEST(ExportHtmlBrowser, TheOptimisedM7PageRunsOfflineAndShowsTheResult) {
+  ASSERT_EQ(run_command("command -v chromium").status, 0)
+      << "chromium is needed for this test: tools/bootstrap.sh test installs it";
+  TempDir dir;
+  ASSERT_NO_FATAL_FAILURE(make_m7_page(dir));
+  const std::string page = dir / "m7.html";
+  expect_m7_findings(selftest_findings(page, dir / "profile"), dir);
+
+  // Pictures to look at, laptop and phone sized, at 40 % of the flight.
+  const fs::path pictures = pictures_dir();
+  const double t = 0.4 * read_json(dir / "m7/result.json")["flight_time_s"].get<double>();
   for (const auto& [name, size] :
        {std::pair<std::string, std::string>{"laptop", "1280,720"}, {"phone", "390,844"}}) {
     const fs::path png = pictures / (name + ".png");
     fs::remove(png);
-    run = run_command(chromium_command(dir / "profile") + " --virtual-time-budget=5000 " +
-                      "--window-size=" + size + " --screenshot=" + png.string() + " 'file://" +
-                      page + "#t=" + std::to_string(t) + "'");
+    CliRun run = run_command(chromium_command(dir / "profile") + " --virtual-time-budget=5000 " +
+                             "--window-size=" + size + " --screenshot=" + png.string() +
+                             " 'file://" + page + "#t=" + std::to_string(t) + "'");
     ASSERT_EQ(run.status, 0) << run.output;
     ASSERT_TRUE(fs::exists(png)) << run.output;
     EXPECT_GT(fs::file_size(png), 20000u) << png << ": a blank page compresses to less";
   }
 }
 
-TEST(ExportHtmlBrowser, AnImportedCaptureIsDrawnBesideTheAthlete) {
-  ASSERT_EQ(run_command("command -v chromium").status, 0)
-      << "chromium is needed for this test: tools/bootstrap.sh test installs it";
-  TempDir dir;
+/// The imported backflip capture in `dir`/bf and its page `dir`/bf.html.
+void make_capture_page(const TempDir& dir) {
   const std::string bvh = std::string(SALTUS_EXAMPLES_DIR) + "/captures/deepmimic-backflip.bvh";
   CliRun run = run_cli("import " + bvh + " --quiet --out " + (dir / "bf"));
   ASSERT_EQ(run.status, 0) << run.output;
-  const std::string page = dir / "bf.html";
-  run = run_cli("export " + (dir / "bf") + " --format html --out " + page);
+  run = run_cli("export " + (dir / "bf") + " --format html --out " + (dir / "bf.html"));
   ASSERT_EQ(run.status, 0) << run.output;
   EXPECT_NE(run.output.find("the motion capture beside it: " + (dir / "bf")), std::string::npos)
       << run.output;
-  run = run_cli("export " + (dir / "bf") + " --format bvh --capture " + (dir / "bf") + " --out " +
-                (dir / "bf.bvh"));
-  EXPECT_EQ(run.status, 2) << run.output;
-  EXPECT_NE(run.output.find("--capture"), std::string::npos) << run.output;
+}
 
-  const nlohmann::json found = selftest_findings(page, dir / "profile");
+/// What the self-test of the capture's page (make_capture_page) must find, in any browser.
+void expect_capture_findings(const nlohmann::json& found, const TempDir& dir) {
   SCOPED_TRACE(found.dump());
+  ASSERT_TRUE(found.contains("capture")) << "the self-test stopped early";
   EXPECT_EQ(found["problems"], nlohmann::json::array()) << "errors or refused requests";
   EXPECT_GT(found["non_background_fraction"].get<double>(), 0.05) << "the canvas is not blank";
   const nlohmann::json& capture = found["capture"];
@@ -196,18 +212,110 @@ TEST(ExportHtmlBrowser, AnImportedCaptureIsDrawnBesideTheAthlete) {
       read_json(dir / "bf/result.json")["capture"]["residual"]["avg_root_force"].get<double>();
   EXPECT_NEAR(std::stod(found["shown"]["capture.avg_root_force"].get<std::string>()), residual,
               5e-4 * residual);
+}
+
+/// 40 % of the capture's flight, where its picture is taken.
+double capture_picture_time(const TempDir& dir) {
+  return 0.4 *
+         read_json(dir / "bf/keyframes.motion.json")["keyframes"].back()["time"].get<double>();
+}
+
+TEST(ExportHtmlBrowser, AnImportedCaptureIsDrawnBesideTheAthlete) {
+  ASSERT_EQ(run_command("command -v chromium").status, 0)
+      << "chromium is needed for this test: tools/bootstrap.sh test installs it";
+  TempDir dir;
+  ASSERT_NO_FATAL_FAILURE(make_capture_page(dir));
+  const std::string page = dir / "bf.html";
+  CliRun run = run_cli("export " + (dir / "bf") + " --format bvh --capture " + (dir / "bf") +
+                       " --out " + (dir / "bf.bvh"));
+  EXPECT_EQ(run.status, 2) << run.output;
+  EXPECT_NE(run.output.find("--capture"), std::string::npos) << run.output;
+
+  expect_capture_findings(selftest_findings(page, dir / "profile"), dir);
 
   // A picture to look at, laptop sized, at 40 % of the flight.
-  const fs::path pictures = fs::path(SALTUS_BIN_DIR).parent_path() / "flight-page";
-  fs::create_directories(pictures);
-  const fs::path png = pictures / "capture-laptop.png";
+  const fs::path png = pictures_dir() / "capture-laptop.png";
   fs::remove(png);
-  const double t =
-      0.4 * read_json(dir / "bf/keyframes.motion.json")["keyframes"].back()["time"].get<double>();
-  run = run_command(chromium_command(dir / "profile") +
-                    " --virtual-time-budget=5000 --window-size=1280,720 --screenshot=" +
-                    png.string() + " 'file://" + page + "#t=" + std::to_string(t) + "'");
+  run = run_command(
+      chromium_command(dir / "profile") +
+      " --virtual-time-budget=5000 --window-size=1280,720 --screenshot=" + png.string() +
+      " 'file://" + page + "#t=" + std::to_string(capture_picture_time(dir)) + "'");
   ASSERT_EQ(run.status, 0) << run.output;
+  EXPECT_GT(fs::file_size(png), 20000u) << png << ": a blank page compresses to less";
+}
+
+// ---------- Firefox ----------
+
+/// Fails the test (not skips it) when Firefox or the script's websocket module is missing.
+void require_firefox() {
+  ASSERT_EQ(run_command("command -v firefox-esr").status, 0)
+      << "firefox-esr is needed for this test: tools/bootstrap.sh test installs it";
+  ASSERT_EQ(run_command("command -v Xvfb").status, 0)
+      << "Xvfb is needed for this test: tools/bootstrap.sh test installs it (xvfb)";
+  ASSERT_EQ(run_command("/usr/bin/python3 -c 'import websocket'").status, 0)
+      << "python3-websocket is needed for this test: tools/bootstrap.sh test installs it";
+}
+
+/// What tests/support/firefox_page.py read from `page` in Firefox: {"selftest": the page's
+/// findings (with `--selftest`), "browser_errors": the JavaScript errors Firefox logged}. Debian's
+/// python3 by its path: the websocket module is Debian's, which another python3 may not see.
+nlohmann::json firefox_page(const std::string& page, const std::string& options) {
+  const std::string script =
+      (fs::path(SALTUS_TEST_DATA_DIR).parent_path() / "support/firefox_page.py").string();
+  const CliRun run =
+      run_command("timeout -k 10 120 /usr/bin/python3 " + script + " '" + page + "' " + options);
+  EXPECT_EQ(run.status, 0) << run.output;
+  // The findings are the one line of JSON; the script's messages start with its name.
+  std::istringstream lines(run.output);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.empty() || line.front() != '{') continue;
+    nlohmann::json out = nlohmann::json::parse(line, nullptr, false);
+    if (out.is_object()) return out;
+  }
+  ADD_FAILURE() << "no findings from Firefox: " << run.output;
+  return nlohmann::json::object();
+}
+
+TEST(ExportHtmlFirefox, TheOptimisedM7PageRunsOfflineAndShowsTheResult) {
+  ASSERT_NO_FATAL_FAILURE(require_firefox());
+  TempDir dir;
+  ASSERT_NO_FATAL_FAILURE(make_m7_page(dir));
+  // The self-test in a laptop's and a phone's viewport, then pictures to look at in the same two,
+  // at 40 % of the flight.
+  const fs::path laptop = pictures_dir() / "firefox-laptop.png";
+  const fs::path phone = pictures_dir() / "firefox-phone.png";
+  fs::remove(laptop);
+  fs::remove(phone);
+  const double t = 0.4 * read_json(dir / "m7/result.json")["flight_time_s"].get<double>();
+  const nlohmann::json out =
+      firefox_page(dir / "m7.html", "--selftest 1280x720 --selftest 390x844 --at " +
+                                        std::to_string(t) + " --shot 1280x720:" + laptop.string() +
+                                        " --shot 390x844:" + phone.string());
+  for (const char* size : {"1280x720", "390x844"}) {
+    SCOPED_TRACE(size);
+    ASSERT_TRUE(out.contains("selftest") && out["selftest"].contains(size)) << out.dump();
+    expect_m7_findings(out["selftest"][size], dir);
+  }
+  EXPECT_EQ(out["browser_errors"], nlohmann::json::array()) << "JavaScript errors Firefox logged";
+  for (const fs::path& png : {laptop, phone}) {
+    ASSERT_TRUE(fs::exists(png)) << png;
+    EXPECT_GT(fs::file_size(png), 20000u) << png << ": a blank page compresses to less";
+  }
+}
+
+TEST(ExportHtmlFirefox, AnImportedCaptureIsDrawnBesideTheAthlete) {
+  ASSERT_NO_FATAL_FAILURE(require_firefox());
+  TempDir dir;
+  ASSERT_NO_FATAL_FAILURE(make_capture_page(dir));
+  const fs::path png = pictures_dir() / "firefox-capture-laptop.png";
+  fs::remove(png);
+  const nlohmann::json out = firefox_page(
+      dir / "bf.html", "--selftest 1280x720 --at " + std::to_string(capture_picture_time(dir)) +
+                           " --shot 1280x720:" + png.string());
+  ASSERT_TRUE(out.contains("selftest") && out["selftest"].contains("1280x720")) << out.dump();
+  expect_capture_findings(out["selftest"]["1280x720"], dir);
+  EXPECT_EQ(out["browser_errors"], nlohmann::json::array()) << "JavaScript errors Firefox logged";
+  ASSERT_TRUE(fs::exists(png)) << png;
   EXPECT_GT(fs::file_size(png), 20000u) << png << ": a blank page compresses to less";
 }
 
