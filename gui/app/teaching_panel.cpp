@@ -98,19 +98,45 @@ void TeachingPanel::refresh() {
                              ? tr("lands at its take-off height")
                              : (drop > 0 ? tr("ends %1 m lower").arg(num(drop, 2))
                                          : tr("ends %1 m higher").arg(num(-drop, 2)));
+  const FlightCheckVerdict verdict = judge_flight(c);
+  const auto mark = [](bool pass) {
+    return pass ? QStringLiteral("<span style='color:#2e7d32'>✓</span>")
+                : QStringLiteral("<span style='color:#c62828'>✗</span>");
+  };
+  // The closing sentence says what holds for the motion shown, never more.
+  const QString failing =
+      verdict.failed() == 1 ? tr("one check fails") : tr("%1 checks fail").arg(verdict.failed());
+  QString closing;
+  if (verdict.failed() == 0)
+    closing = tr("All three hold: gravity alone could fly this motion.");
+  else if (stage == Stage::kBefore)
+    closing = tr("Here %1: no free flight moves like this. Optimising lowers the root force that "
+                 "makes up the difference; View &gt; After shows what holds then.")
+                  .arg(failing);
+  else
+    closing =
+        tr("Even after optimisation %1: the root force left still moves the body.").arg(failing);
   checks_->setText(
       tr("<b>Is it a real flight?</b> Only gravity acts in the air, so:"
-         "<br>• the centre of mass stays on its take-off parabola: at most %1 mm off;"
-         "<br>• L stays as at take-off: it changes by up to %2 %;"
-         "<br>• the time in the air follows from the take-off (%3 m/s up; it %4): %5 s, "
-         "this motion %6 s."
-         "<br>The optimiser makes a motion pass these checks (View &gt; After).")
+         "<br>%1 the centre of mass stays on its take-off parabola: at most %2 mm off "
+         "(a real flight: within %3 mm);"
+         "<br>%4 L stays as at take-off: it changes by up to %5 % (within %6 %);"
+         "<br>%7 the time in the air follows from the take-off (%8 m/s up; it %9): %10 s, "
+         "this motion %11 s (within %12 s)."
+         "<br>%13")
+          .arg(mark(verdict.on_parabola))
           .arg(num(1000.0 * c.max_com_off_parabola_m, 1))
+          .arg(num(1000.0 * kFreeFlightComToleranceM, 0))
+          .arg(mark(verdict.angular_momentum_kept))
           .arg(num(c.max_angular_momentum_drift_percent, 1))
+          .arg(num(kFreeFlightAngularMomentumTolerancePercent, 0))
+          .arg(mark(verdict.flight_time_matches))
           .arg(num(takeoff.com_velocity.y(), 2), ending)
           .arg(std::isfinite(c.ballistic_flight_time) ? num(c.ballistic_flight_time, 2)
                                                       : QString("—"))
-          .arg(num(c.flight_time, 2)));
+          .arg(num(c.flight_time, 2))
+          .arg(num(kFreeFlightTimeToleranceS, 2))
+          .arg(closing));
   set_time(time_);
 }
 

@@ -37,8 +37,9 @@ std::string folder_settings(const ResultFolder& folder);
 /// average_root_force.png for all of them. Names are file-safe and unique.
 std::vector<Figure> result_figures(const std::vector<ResultFolder>& folders);
 
-/// Average root force before and after, a pair of bars per folder, each pair labelled with a
-/// short name (the folder name's first word, e.g. "M1", when those are unique; else a number
+/// Average root force before and after on a log axis, a pair of points per folder (after
+/// optimisation it is hundreds of times smaller: a linear axis hid it), each pair labelled with
+/// a short name (the folder name's first word, e.g. "M1", when those are unique; else a number
 /// with the names listed in the title).
 ChartSpec average_root_force_figure(const std::vector<ResultFolder>& folders);
 

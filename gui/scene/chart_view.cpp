@@ -151,7 +151,9 @@ struct ChartView::Impl {
         // Lines carry no markers (hundreds of samples); point series (keyframes) do.
         points->SetMarkerStyle(line.kind == LineKind::kPoints ? vtkPlotPoints::CIRCLE
                                                               : vtkPlotPoints::NONE);
-        if (line.kind == LineKind::kPoints) points->SetMarkerSize(10.0f);
+        if (line.kind == LineKind::kPoints) points->SetMarkerSize(bars ? 16.0f : 10.0f);
+        // On a categorical axis a point series is one value per category, not a row.
+        if (bars && line.kind == LineKind::kPoints) plot->GetPen()->SetLineType(vtkPen::NO_PEN);
       }
       if (line.right_axis) chart->SetPlotCorner(plot, 1);
     }

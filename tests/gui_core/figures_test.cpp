@@ -66,7 +66,23 @@ TEST(Figures, EveryFigureIsTitledWithTheMotionAndTheSettings) {
   EXPECT_TRUE(named);
 }
 
-TEST(Figures, AverageForceBarsHaveShortDistinctLabels) {
+TEST(Figures, AverageForceAfterOptimisationIsReadableBesideBefore) {
+  // 450 N before, 0.15 N after: on a linear axis the after value was a line of zero height.
+  const ChartSpec chart = average_root_force_figure(
+      {folder("M7-double-front", 450, 0.15), folder("M1-straight-back-somersault", 10, 0.09)});
+  EXPECT_TRUE(chart.log_y);
+  const AxisRange range = log_y_range(chart);
+  EXPECT_LE(range.min, 0.09);
+  EXPECT_GE(range.max, 450.0);
+  ASSERT_EQ(chart.lines.size(), 2u);
+  for (const LineSpec& line : chart.lines) {
+    EXPECT_EQ(line.kind, LineKind::kPoints) << "bars on a log axis would start at 1 N";
+    for (std::size_t i = 0; i < line.x.size(); ++i)
+      EXPECT_NEAR(line.x[i], static_cast<double>(i), 0.25) << "within its result's label";
+  }
+}
+
+TEST(Figures, AverageForcePairsHaveShortDistinctLabels) {
   const ChartSpec chart = average_root_force_figure(
       {folder("M1-straight-back-somersault", 10, 1), folder("M2-tucked-back-somersault", 20, 2)});
   ASSERT_EQ(chart.x_labels.size(), 2u);

@@ -48,4 +48,15 @@ double forward_somersault_sign(const SampleRecord& takeoff) {
   return forward_somersault_sign(takeoff.segment_rotation.front());
 }
 
+FlightCheckVerdict judge_flight(const FlightChecks& checks) {
+  FlightCheckVerdict v;
+  v.on_parabola = checks.max_com_off_parabola_m <= kFreeFlightComToleranceM;
+  v.angular_momentum_kept =
+      checks.max_angular_momentum_drift_percent <= kFreeFlightAngularMomentumTolerancePercent;
+  // NaN (thrown too low to come down to where the motion ends) fails.
+  v.flight_time_matches =
+      std::abs(checks.ballistic_flight_time - checks.flight_time) <= kFreeFlightTimeToleranceS;
+  return v;
+}
+
 }  // namespace saltus

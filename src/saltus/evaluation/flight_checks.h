@@ -36,6 +36,24 @@ struct FlightChecks {
   double height_change_m = 0.0;
 };
 
+/// How far a flight may be from the ballistic answer and still count as free: the centre of mass
+/// within a centimetre of its parabola (what video digitisation resolves), the angular momentum
+/// within 2 % of its take-off value (2 % of a double somersault's spin is 14° at landing), and
+/// the time in the air within 10 ms (half a frame of 50 Hz video) of the take-off's.
+inline constexpr double kFreeFlightComToleranceM = 0.01;
+inline constexpr double kFreeFlightAngularMomentumTolerancePercent = 2.0;
+inline constexpr double kFreeFlightTimeToleranceS = 0.01;
+
+/// Which checks a flight passes within those tolerances.
+struct FlightCheckVerdict {
+  bool on_parabola = false;
+  bool angular_momentum_kept = false;
+  bool flight_time_matches = false;
+  /// How many of the three fail.
+  int failed() const { return !on_parabola + !angular_momentum_kept + !flight_time_matches; }
+};
+FlightCheckVerdict judge_flight(const FlightChecks& checks);
+
 /// The checks over sampled motion (SampleRecords in time order, the first at take-off).
 /// Throws std::invalid_argument for no samples.
 FlightChecks flight_checks(const Takeoff& takeoff, const std::vector<SampleRecord>& samples);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "saltus/evaluation/flight_checks.h"
 #include "saltus/evaluation/simulate.h"
@@ -28,6 +29,9 @@ TEST(FlightChecks, AFreeFlightStaysOnItsParabolaAndKeepsItsAngularMomentum) {
   // The simulated CoM ends on the parabola, so the ballistic time to its final height is the
   // flight's own length.
   EXPECT_NEAR(checks.ballistic_flight_time, checks.flight_time, 1e-6);
+  const FlightCheckVerdict verdict = judge_flight(checks);
+  EXPECT_TRUE(verdict.on_parabola && verdict.angular_momentum_kept && verdict.flight_time_matches);
+  EXPECT_EQ(verdict.failed(), 0);
 }
 
 TEST(FlightChecks, AMotionOffItsParabolaIsMeasured) {
@@ -44,6 +48,19 @@ TEST(FlightChecks, AMotionOffItsParabolaIsMeasured) {
   EXPECT_NEAR(checks.max_com_off_parabola_m, 0.05, 1e-6);
   EXPECT_NEAR(checks.samples[30].angular_momentum_drift_percent, 10.0, 1e-2);
   EXPECT_NEAR(checks.max_angular_momentum_drift_percent, 10.0, 1e-2);
+  // 5 cm off the parabola and 10 % of L fail; the last CoM 5 cm higher comes down 5 cm later,
+  // about 10 ms at the landing speed here: the flight time is judged on its own.
+  const FlightCheckVerdict verdict = judge_flight(checks);
+  EXPECT_FALSE(verdict.on_parabola);
+  EXPECT_FALSE(verdict.angular_momentum_kept);
+  EXPECT_EQ(verdict.flight_time_matches, std::abs(checks.ballistic_flight_time -
+                                                  checks.flight_time) <= kFreeFlightTimeToleranceS);
+  FlightChecks late = checks;
+  late.ballistic_flight_time = late.flight_time + 0.011;
+  EXPECT_FALSE(judge_flight(late).flight_time_matches);
+  late.ballistic_flight_time = std::numeric_limits<double>::quiet_NaN();  // never comes down
+  EXPECT_FALSE(judge_flight(late).flight_time_matches);
+  EXPECT_EQ(judge_flight(late).failed(), 3);
 }
 
 TEST(FlightChecks, BallisticFlightTimeMatchesSteppingTheParabola) {
