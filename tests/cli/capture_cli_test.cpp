@@ -222,6 +222,12 @@ TEST(CaptureCli, HostileCapturesAreRefusedAtOnceWithOneLine) {
     for (int f = 0; f < 8000; ++f)
       long_clip += frames[f % frames.size()] + "\n";
     write_text(dir / "long.bvh", long_clip);
+    // 3000 frames 2 ms apart: a 6 s flight, but more frames than import fits (24 s here).
+    std::string many =
+        text.substr(0, text.find("MOTION")) + "MOTION\nFrames: 3000\nFrame Time: 0.002\n";
+    for (int f = 0; f < 3000; ++f)
+      many += frames[f % frames.size()] + "\n";
+    write_text(dir / "many.bvh", many);
   }
   write_text(dir / "huge-unit.json",
              R"({"format": "saltus-capture-mapping/1", "unit": 1e308, "joints": {}})");
@@ -250,6 +256,9 @@ TEST(CaptureCli, HostileCapturesAreRefusedAtOnceWithOneLine) {
       {"'" + (dir / "no\n\x1B[2Jsuch.bvh") + "'", "no\\x0A\\x1B[2Jsuch.bvh: "},
       {dir / "odd.bvh --mapping " + (dir / "pelvis-only.json"),
        "pelvis-only.json: /joints: the mapping gives no source joint for thigh_l"},
+      {dir / "many.bvh",
+       "many.bvh: line 87: the flight (no ground contact: frames 0-2999) holds 3000 frames; Saltus "
+       "imports at most 2500"},
       {good + " --keyframes '3\n\x1B[2J'",
        "--keyframes: expected a number, found \"3\\x0A\\x1B[2J\""},
       {good + " --mapping " + (dir / "huge-unit.json"),
@@ -269,6 +278,19 @@ TEST(CaptureCli, HostileCapturesAreRefusedAtOnceWithOneLine) {
     EXPECT_FALSE(fs::exists(dir / "out")) << arguments;
     EXPECT_LT(seconds, 3.0) << arguments;
   }
+}
+
+TEST(CaptureCli, FramesOneMillisecondApartImportAsTheFrameTimeBoundPromises) {
+  // Frame times i × 0.001 rounded put some keyframes a hair under 1 ms apart: the motion reader
+  // refused what the capture's frame-time bound (1 ms) accepts.
+  const TempDir dir;
+  write_text(dir / "fast.bvh", backflip_with("Frame Time: 0.062500", "Frame Time: 0.001"));
+  const auto run = run_cli("import " + (dir / "fast.bvh") + " --quiet --out " + (dir / "out"));
+  EXPECT_EQ(run.status, 0) << run.output;
+  EXPECT_EQ(run_cli("evaluate " + (dir / "out/capture.motion.json") + " --quiet --out " +
+                    (dir / "evaluated"))
+                .status,
+            0);
 }
 
 TEST(CaptureCli, AMappingFileMapsNamesNoConventionKnows) {

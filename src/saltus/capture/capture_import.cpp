@@ -198,6 +198,14 @@ CaptureImport import_capture(const MocapClip& clip, const BodyModel& model,
             std::to_string(flight.last_frame) + ") lasts " + format("%.6g", flight_span) +
             " s, longer than a motion may (" + format("%.6g", *options.max_flight_time) +
             " s); give the flight with --flight START:END");
+  const int flight_frames = flight.last_frame - flight.first_frame + 1;
+  if (options.max_flight_frames && flight_frames > *options.max_flight_frames)
+    throw CaptureError(
+        options.flight ? CapturePart::kFlightOption : CapturePart::kFrames,
+        "the flight (" + flight.method + ": frames " + std::to_string(flight.first_frame) + "-" +
+            std::to_string(flight.last_frame) + ") holds " + std::to_string(flight_frames) +
+            " frames; Saltus imports at most " + std::to_string(*options.max_flight_frames) +
+            " (every one is fitted as a keyframe): give a shorter flight with --flight START:END");
 
   // Heading: the somersault axis (the horizontal part of the flight's angular momentum) onto
   // x, the sign chosen so that the body's left at take-off points to +x as nearly as it can.

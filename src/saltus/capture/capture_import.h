@@ -40,6 +40,9 @@ struct CaptureImportOptions {
   /// before the flight is fitted (std::invalid_argument). Unset: no limit. `saltus import` sets
   /// the motion reader's flight-time limit.
   std::optional<double> max_flight_time;
+  /// The most frames a flight imported may hold (refused the same way). Unset: no limit.
+  /// `saltus import` sets plausible::kMaxCaptureFlightFrames.
+  std::optional<int> max_flight_frames;
   /// Samples of the capture's residual per captured frame interval (trajectory.csv).
   int samples_per_frame = 10;
   std::string name;  ///< motion name ("" = "captured flight")

@@ -214,7 +214,8 @@ std::vector<Keyframe> parse_keyframes(const JsonNode& node, const BodyModel& mod
           "keyframe " + std::to_string(i) + " time " + message_number(keyframe.time) +
           " is not after keyframe " + std::to_string(i - 1) + " time " +
           message_number(keyframes.back().time) + " (times must strictly increase)");
-    } else if (!(keyframe.time - keyframes.back().time >= plausible::kMinKeyframeGap)) {
+    } else if (!(keyframe.time - keyframes.back().time >=
+                 plausible::kMinKeyframeGap - plausible::kKeyframeGapRounding)) {
       item.at("time").fail("keyframe " + std::to_string(i) + " is only " +
                            message_number(keyframe.time - keyframes.back().time) +
                            " s after keyframe " + std::to_string(i - 1) +

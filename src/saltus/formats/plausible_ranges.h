@@ -44,6 +44,9 @@ inline constexpr double kMaxFlightTime = 60.0;
 /// s: the shortest gap between keyframes (a 1 kHz capture). Closer keyframes make the spline's
 /// second derivative, and so the inverse dynamics, blow up (a keyframe at t = 1e-9 gave NaN).
 inline constexpr double kMinKeyframeGap = 1e-3;
+/// s: rounding allowed below kMinKeyframeGap, so that frames exactly 1 ms apart (times i × dt,
+/// rounded) are accepted as the capture's frame-time bound promises.
+inline constexpr double kKeyframeGapRounding = 1e-9;
 /// s: the shortest gap between interior knots of a stored spline (K = 50 sub-intervals of the
 /// shortest keyframe gap).
 inline constexpr double kMinKnotGap = kMinKeyframeGap / 50;
@@ -52,6 +55,10 @@ inline constexpr double kMinKnotGap = kMinKeyframeGap / 50;
 /// is far slower than any capture (24-1000 Hz), which 100 or 3600 (minutes per frame) are not.
 inline constexpr double kMinCaptureFrameTime = kMinKeyframeGap;
 inline constexpr double kMaxCaptureFrameTime = 1.0;
+/// Frames of a captured flight that `import` fits (every one a keyframe of capture.motion.json):
+/// 2.5 s at 1000 Hz, 21 s at 120 Hz. Fitting and picking keyframes cost about 8 ms per frame here
+/// (3000 jerky frames: 24 s), so this bounds an import to about 20 s whatever the file holds.
+inline constexpr int kMaxCaptureFlightFrames = 2500;
 /// m: |take-off CoM|, |keyframe root position| per coordinate.
 inline constexpr double kMaxPosition = 1e4;
 /// m: |root translation control point| per coordinate (a 60 s fall is 18 km).

@@ -198,6 +198,8 @@ CaptureFile import_capture_file(const std::string& path, const CaptureFileOption
     CaptureImportOptions import_options = options.import;
     if (import_options.name.empty()) import_options.name = fs::path(path).stem().string();
     if (!import_options.max_flight_time) import_options.max_flight_time = plausible::kMaxFlightTime;
+    if (!import_options.max_flight_frames)
+      import_options.max_flight_frames = plausible::kMaxCaptureFlightFrames;
     capture.import = import_capture(capture.clip, capture.model, mapping, import_options);
   } catch (const CaptureError& e) {
     throw capture_input_error(e, capture, options, path, lines);
