@@ -2,6 +2,7 @@
 
 #include <QApplication>
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFileInfo>
 #include <QLoggingCategory>
 #include <cstdio>
@@ -12,7 +13,10 @@
 #include "app/compare_window.h"
 #include "app/file_controller.h"
 #include "app/main_window.h"
+#include "app/plots_panel.h"
 #include "app/run_controller.h"
+#include "app/teaching_panel.h"
+#include "app/twist_panel.h"
 #include "core/figures.h"
 #include "core/result_folder.h"
 #include "saltus/base/input_error.h"
@@ -109,6 +113,18 @@ int show_motion(const CommandLine& c) {
   if (c.stage) window.set_stage(*c.stage);
   if (c.time) window.seek(*c.time);
   QApplication::processEvents();
+  if (c.panel == "twist") {
+    window.show_twist_panel();
+    // The analysis runs off the GUI thread: the picture shows its result, not "working".
+    QElapsedTimer waited;
+    waited.start();
+    while (window.twist().busy() && waited.elapsed() < 120000)
+      QApplication::processEvents(QEventLoop::AllEvents, 20);
+    QApplication::processEvents();
+  } else if (c.panel == "teaching") {
+    window.plots().setCurrentWidget(window.plots().teaching());
+    QApplication::processEvents();
+  }
 
   if (!c.save_result.empty()) {
     if (!window.files().save_result(QString::fromStdString(c.save_result), &error)) {

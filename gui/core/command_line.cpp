@@ -93,6 +93,11 @@ std::unique_ptr<CLI::App> make_app(CommandLine& c, cli::OptionFlags& flags,
          "camera preset")
       ->type_name("side|front|top|follow")
       ->check(CLI::IsMember({"side", "front", "top", "follow"}).description(""));
+  app->add_option("--panel", c.panel,
+                  "bring a panel to the front for the screenshot: twist (where the twist comes "
+                  "from, its analysis finished) or teaching (why it spins)")
+      ->type_name("twist|teaching")
+      ->check(CLI::IsMember({"twist", "teaching"}).description(""));
   app->add_option_function<std::string>(
          "--size",
          [&c](const std::string& v) {

@@ -31,6 +31,9 @@ struct CommandLine {
   std::optional<double> time;  ///< s
   std::optional<Stage> stage;
   std::optional<CameraPreset> camera;
+  /// A panel brought to the front before the screenshot: "twist" (Where does the twist come
+  /// from?, its analysis finished) or "teaching" (Why it spins); "" none.
+  std::string panel;
   int width = 1600;
   int height = 1000;
   std::string screenshot;       ///< whole window PNG

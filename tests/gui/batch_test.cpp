@@ -7,6 +7,7 @@
 #include <QProcess>
 #include <QStandardPaths>
 #include <filesystem>
+#include <map>
 
 #include "core/video_plan.h"
 #include "gui/support/image_checks.h"
@@ -49,6 +50,34 @@ TEST(GuiBatch, OptimisesAndWritesAScreenshotWithoutInteraction) {
   for (const char* file : {"result.json", "trajectory_before.csv", "trajectory_after.csv",
                            "optimized.motion.json", "model.json"})
     EXPECT_TRUE(std::filesystem::exists(dir.path() / "result" / file)) << file;
+}
+
+TEST(GuiBatch, PanelFlagBringsTheTwistAndTeachingPanelsToTheFront) {
+  saltus::test::TempDir dir;
+  const std::string m5 = std::string(SALTUS_EXAMPLES_DIR) +
+                         "/motions/M5-front-somersault-one-and-a-half-twists.motion.json";
+  std::map<std::string, QImage> shots;
+  for (const std::string panel : {"", "twist", "teaching"}) {
+    const std::string png = dir / ("shot-" + (panel.empty() ? "none" : panel) + ".png");
+    const saltus::test::CliRun run =
+        run_gui("'" + m5 + "' --time 1.0 --size 1366x768 " +
+                (panel.empty() ? "" : "--panel " + panel + " ") + "--screenshot '" + png + "'");
+    ASSERT_EQ(run.status, 0) << run.output;
+    expect_sane_png(png, 1366, 768);
+    shots[panel] = QImage(QString::fromStdString(png));
+  }
+  // The twist panel fills the right-hand dock, the teaching view the plots under the 3D view.
+  const auto changed = [](const QImage& a, const QImage& b, const QRect& area) {
+    int differ = 0;
+    for (int y = area.top(); y <= area.bottom(); ++y)
+      for (int x = area.left(); x <= area.right(); ++x)
+        differ += a.pixel(x, y) != b.pixel(x, y);
+    return static_cast<double>(differ) / (area.width() * area.height());
+  };
+  const QRect dock(1000, 100, 300, 500), plots(0, 560, 900, 200);
+  EXPECT_GT(changed(shots[""], shots["twist"], dock), 0.05);
+  EXPECT_GT(changed(shots[""], shots["teaching"], plots), 0.05);
+  EXPECT_EQ(run_gui("'" + m5 + "' --panel nope --screenshot '" + (dir / "x.png") + "'").status, 2);
 }
 
 TEST(GuiBatch, CompareFlagWritesTheCompareWindow) {
