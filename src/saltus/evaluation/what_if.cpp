@@ -443,14 +443,23 @@ WhatIfResult WhatIf::fly(const WhatIfChange& change) const {
 
   // The words: the twist only for a twisting motion, or when this flight twists after all.
   const bool twisting = std::abs(target_.twists) >= kNoTurn || std::abs(out.twist_over_deg) >= 1.0;
-  if (twisting) {
+  const bool on_target = over_words(out.somersault_over_deg) == "on target" &&
+                         (!twisting || over_words(out.twist_over_deg) == "on target");
+  if (on_target)
+    out.verdict = "you land on target";
+  else if (twisting)
     out.verdict = "you land " + over_words(out.somersault_over_deg) + " in somersault, " +
                   over_words(out.twist_over_deg) + " in twist";
-  } else {
+  else
     out.verdict = "you land " + over_words(out.somersault_over_deg);
-  }
   std::string counts = format_number("%.2f somersaults", std::abs(out.landing.somersaults));
-  if (twisting) counts += format_number(", %.2f twists", std::abs(out.landing.twists));
+  if (twisting) {
+    counts += format_number(", %.2f twists", std::abs(out.landing.twists));
+    // A twist the other way than the motion's is not "fewer twists".
+    if (std::abs(target_.twists) >= kNoTurn && std::abs(out.landing.twists) >= 0.005 &&
+        (out.landing.twists < 0) != (target_.twists < 0))
+      counts += " the other way";
+  }
   out.sentence = "Same take-off, " + out.change_words + ": " + counts + " — " + out.verdict +
                  (out.within_tolerance ? format_number(" (within %.0f°).", tolerance_deg_)
                                        : format_number(" (more than %.0f° off).", tolerance_deg_));

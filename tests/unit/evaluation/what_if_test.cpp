@@ -222,8 +222,11 @@ TEST(WhatIf, ATighterTuckTurnsFurtherALooserOneLess) {
     looser.tuck_scale = 0.9;
     const WhatIfResult tight = w.fly(tighter);
     const WhatIfResult loose = w.fly(looser);
-    std::printf("%s: tuck 110 %% %+.1f°, 90 %% %+.1f° of somersault\n", name,
-                tight.somersault_vs_unchanged_deg, loose.somersault_vs_unchanged_deg);
+    std::printf(
+        "%s: tuck 110 %% %+.1f°, 90 %% %+.1f° of somersault; twists %.2f, %.2f (as it "
+        "is %.2f)\n",
+        name, tight.somersault_vs_unchanged_deg, loose.somersault_vs_unchanged_deg,
+        tight.landing.twists, loose.landing.twists, w.unchanged_landing().twists);
     EXPECT_GT(std::abs(tight.landing.somersaults), unchanged);
     EXPECT_LT(std::abs(loose.landing.somersaults), unchanged);
     // The hips and knees of these motions flex about one axis from a straight take-off: their
@@ -326,6 +329,18 @@ TEST(WhatIf, LandingWordsSayShortOrOverInTheDirectionOfTheSomersault) {
   EXPECT_NE(r.sentence.find(format_number("%.2f twists", std::abs(r.landing.twists))),
             std::string::npos)
       << r.sentence;
+  // As keyframed M7 lands where it was keyframed to, to the degree.
+  const WhatIfResult as_it_is = what_if(m7.motion, m7.model, WhatIfChange{});
+  EXPECT_LT(std::abs(as_it_is.somersault_over_deg), 0.5) << as_it_is.sentence;
+  EXPECT_LT(std::abs(as_it_is.twist_over_deg), 0.5) << as_it_is.sentence;
+  EXPECT_EQ(as_it_is.verdict, "you land on target");
+  // A looser tuck there twists the other way (its twist is that sensitive to the tuck): said so.
+  WhatIfChange looser;
+  looser.tuck_scale = 0.9;
+  const WhatIfResult loose = what_if(m7.motion, m7.model, looser);
+  ASSERT_LT(loose.landing.twists, 0.0);
+  EXPECT_NE(loose.sentence.find("twists the other way"), std::string::npos) << loose.sentence;
+  EXPECT_LT(loose.twist_over_deg, -360.0);
 }
 
 TEST(WhatIf, RefusesChangesTheMotionDoesNotAllow) {
