@@ -33,6 +33,7 @@
 #include "app/twist_panel.h"
 #include "app/video_exporter.h"
 #include "app/view_controller.h"
+#include "app/what_if_panel.h"
 
 namespace saltus::gui {
 
@@ -78,6 +79,7 @@ MainWindow::MainWindow(bool interactive, QWidget* parent) : QMainWindow(parent) 
   video_ = new VideoExporter(*context_, *view_, this);
   twist_ = new TwistPanel(*context_, this);
   context_->add_shortcut_scope(twist_->chart());
+  what_if_ = new WhatIfPanel(*context_, this);
   remembered_ = {files_, view_, playback_, runs_, plots_};
 
   // A frame counts when the window shows a new 3D picture (chart-only redraws do not).
@@ -91,6 +93,9 @@ MainWindow::MainWindow(bool interactive, QWidget* parent) : QMainWindow(parent) 
   connect(edits_->capture_panel(), &CapturePanel::seek_requested, this, &MainWindow::seek);
   connect(plots_, &PlotsPanel::seek_requested, this, &MainWindow::seek);
   connect(twist_, &TwistPanel::seek_requested, this, &MainWindow::seek);
+  // The what-if flight is drawn beside the athlete while the What if panel is in view.
+  connect(what_if_, &WhatIfPanel::flight_changed, this,
+          [this] { view_->set_what_if(what_if_->flight(), what_if_->flight_label()); });
   connect(edits_, &EditController::keyframe_chosen, this, &MainWindow::seek);
   connect(edits_->keyframe_panel(), &KeyframePanel::add_requested, this,
           [this] { edits_->add_keyframe(time()); });
@@ -225,14 +230,19 @@ void MainWindow::build_docks(QMenu* view_menu) {
   // It computes only while in view (a tab raised): a hidden panel costs no CPU per edit.
   connect(twist_dock_, &QDockWidget::visibilityChanged, twist_,
           [this](bool visible) { twist_->set_active(visible); });
+  what_if_dock_ = dock(tr("What if"), "what_if_dock", what_if_);
+  what_if_dock_->toggleViewAction()->setText(tr("What if panel"));
+  // It flies only while in view, and the 3D view shows its figure only then.
+  connect(what_if_dock_, &QDockWidget::visibilityChanged, what_if_,
+          [this](bool visible) { what_if_->set_active(visible); });
   // One column of panels, tabbed, the tabs standing on the window's right edge: on a
   // 1366×768 laptop six tab titles in a row would not fit a panel narrow enough to leave the
   // 3D view three quarters of the width (they were elided to "Optim… Keyfra…"), while a
   // column holds them whole; and one panel at a time gets the full height, so the Optimise
   // panel's run list and status stay in view.
   setTabPosition(Qt::RightDockWidgetArea, QTabWidget::East);
-  const std::vector<QDockWidget*> docks = {optimise, keyframes, capture,    model,
-                                           display,  history,   twist_dock_};
+  const std::vector<QDockWidget*> docks = {optimise, keyframes, capture,     model,
+                                           display,  history,   twist_dock_, what_if_dock_};
   for (std::size_t i = 1; i < docks.size(); ++i)
     tabifyDockWidget(docks[i - 1], docks[i]);
   optimise->raise();
@@ -245,12 +255,18 @@ void MainWindow::build_docks(QMenu* view_menu) {
     view_menu->addAction(d->toggleViewAction());
   view_menu->addSeparator();
   view_menu->addAction(tr("Where does the &twist come from?"), this, &MainWindow::show_twist_panel);
+  view_menu->addAction(tr("&What if…"), this, &MainWindow::show_what_if_panel);
   resizeDocks({optimise}, {kDockWidth}, Qt::Horizontal);
 }
 
 void MainWindow::show_twist_panel() {
   twist_dock_->show();
   twist_dock_->raise();
+}
+
+void MainWindow::show_what_if_panel() {
+  what_if_dock_->show();
+  what_if_dock_->raise();
 }
 
 void MainWindow::load_settings() {

@@ -5,9 +5,9 @@
 /// (FileController), edits with the undo stack (EditController), optimisation runs and the
 /// result list (RunController), the 3D view (ViewController), playback (PlaybackController), the
 /// plots (PlotsPanel), compare (CompareController), studies (StudyController), where the twist
-/// comes from (TwistPanel). All of them share the workspace through the AppContext; settings are
-/// remembered by every part that has any. Qt types only in this header: tests and batch mode
-/// include it.
+/// comes from (TwistPanel), what if the tuck were another (WhatIfPanel). All of them share the
+/// workspace through the AppContext; settings are remembered by every part that has any. Qt types
+/// only in this header: tests and batch mode include it.
 
 #include <QImage>
 #include <QMainWindow>
@@ -35,6 +35,7 @@ class TimelineWidget;
 class TwistPanel;
 class VideoExporter;
 class ViewController;
+class WhatIfPanel;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -64,6 +65,9 @@ class MainWindow : public QMainWindow {
   TwistPanel& twist() { return *twist_; }
   /// Brings the Twist panel to the front (View > Where does the twist come from?).
   void show_twist_panel();
+  WhatIfPanel& what_if() { return *what_if_; }
+  /// Brings the What if panel to the front (View > What if…).
+  void show_what_if_panel();
 
   // Shortcuts to what batch mode and tests use most.
   bool open_motion(const QString& path, QString* error = nullptr);
@@ -114,6 +118,8 @@ class MainWindow : public QMainWindow {
   VideoExporter* video_ = nullptr;
   TwistPanel* twist_ = nullptr;
   QDockWidget* twist_dock_ = nullptr;
+  WhatIfPanel* what_if_ = nullptr;
+  QDockWidget* what_if_dock_ = nullptr;
   /// Parts that remember settings, in the order they are loaded.
   std::vector<RemembersSettings*> remembered_;
   int frames_drawn_ = 0;

@@ -185,6 +185,12 @@ void ViewController::set_time(double t, bool playing) {
   scene_->request_render();
 }
 
+void ViewController::set_what_if(const SimulationResult* flight, const QString& label) {
+  scene_->scene().set_what_if(flight ? flight->samples : std::vector<SampleRecord>{},
+                              label.toStdString());
+  scene_->request_render();
+}
+
 void ViewController::highlight(int segment) {
   scene_->scene().set_highlight(segment);
   scene_->request_render();

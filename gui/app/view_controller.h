@@ -6,10 +6,12 @@
 /// scene in step with the workspace.
 
 #include <QObject>
+#include <QString>
 #include <vector>
 
 #include "app/app_context.h"
 #include "core/scene_options.h"
+#include "saltus/evaluation/simulate.h"
 
 class QAction;
 class QMenu;
@@ -41,6 +43,9 @@ class ViewController : public QObject, public RemembersSettings {
   SceneOptions scene_options() const;
   /// Poses the body at t (texts refresh less often while playing).
   void set_time(double t, bool playing);
+  /// Draws a what-if flight beside the athlete, labelled (null: none).
+  void set_what_if(const SimulationResult* flight, const QString& label);
+
   /// Marks a segment in the 3D view (-1: none).
   void highlight(int segment);
   int highlighted_segment() const;

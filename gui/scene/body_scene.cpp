@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <string>
 
+#include "core/what_if_report.h"
 #include "saltus/evaluation/apparatus.h"
 #include "saltus/evaluation/flight_checks.h"
 #include "saltus/evaluation/residual_measures.h"
@@ -35,6 +36,9 @@ constexpr double kInsetViewport[4] = {0.745, 0.015, 0.99, 0.40};
 /// standing body's height, to the right on the screen.
 const Rgb kCaptureColour{0.72, 0.78, 0.70};
 constexpr double kCaptureGapPerHeight = 0.95;
+/// A what-if flight's figure (the What if panel): gold, beside the athlete on the other side from
+/// a capture's.
+const Rgb kWhatIfColour{0.93, 0.74, 0.30};
 /// Labels above the figures, this far above the highest joint (m).
 constexpr double kLabelHeight = 0.45;
 
@@ -71,6 +75,10 @@ struct BodyScene::Impl {
   vtkNew<vtkBillboardTextActor3D> athlete_label;
   std::optional<SampleRecord> capture_now;  ///< the capture at the time shown
   std::optional<SampleRecord> athlete_now;  ///< the motion at the time shown
+  scene::BodyLayer what_if_body{renderer};  ///< a what-if flight beside the athlete
+  vtkNew<vtkBillboardTextActor3D> what_if_label;
+  std::vector<SampleRecord> what_if_samples;
+  std::optional<SampleRecord> what_if_now;  ///< posed, its offset included
   scene::EnvironmentLayer environment{renderer};
   scene::PathLayer paths{renderer, overlay};
   scene::GlyphLayer glyphs{renderer, overlay};
@@ -110,10 +118,11 @@ struct BodyScene::Impl {
       Impl& impl = *static_cast<Impl*>(self);
       impl.texts.fit(size[1]);
       // The user may have turned the camera: the capture stays to the right on the screen.
-      if (impl.capture_shown() && impl.athlete_now) impl.place_capture(*impl.athlete_now);
+      if (impl.athlete_now) impl.place_beside(*impl.athlete_now);
     });
     renderer->AddObserver(vtkCommand::StartEvent, on_resize);
-    for (vtkBillboardTextActor3D* label : {capture_label.Get(), athlete_label.Get()}) {
+    for (vtkBillboardTextActor3D* label :
+         {capture_label.Get(), athlete_label.Get(), what_if_label.Get()}) {
       vtkTextProperty* p = label->GetTextProperty();
       p->SetFontSize(18);
       p->SetJustificationToCentered();
@@ -127,6 +136,14 @@ struct BodyScene::Impl {
   }
 
   bool capture_shown() const { return document && document->capture() && options.capture_figure; }
+  /// A what-if flight is drawn when it has samples that fit the document's model.
+  bool what_if_drawn() const {
+    return document && !what_if_samples.empty() &&
+           what_if_samples.front().segment_rotation.size() ==
+               static_cast<std::size_t>(document->file().model.size());
+  }
+  /// Whether the athlete has a figure beside it, so that both are labelled.
+  bool figure_beside() const { return capture_shown() || what_if_drawn(); }
 
   /// Where the capture's figure goes: to the right of the athlete as the camera sees it.
   Eigen::Vector3d capture_offset() const {
@@ -147,24 +164,47 @@ struct BodyScene::Impl {
     return top;
   }
 
-  /// Poses the capture's figure beside the athlete (again after the camera turned).
-  void place_capture(const SampleRecord& athlete) {
-    if (!capture_shown() || !capture_now) return;
-    const Eigen::Vector3d offset = capture_offset();
-    capture_body.pose(*capture_now, offset);
+  /// Where the what-if figure goes: to the right of the athlete, or to its left when a capture
+  /// is there.
+  Eigen::Vector3d what_if_offset() const {
+    return capture_shown() ? Eigen::Vector3d(-capture_offset()) : capture_offset();
+  }
+
+  /// Puts a label above a figure posed at `sample` moved by `offset`.
+  static void label_above(vtkBillboardTextActor3D* label, const SampleRecord& sample,
+                          const Eigen::Vector3d& offset) {
     const Eigen::Vector3d at =
-        capture_now->com + offset +
-        Eigen::Vector3d(0, top_of(*capture_now) - capture_now->com.y() + kLabelHeight, 0);
-    capture_label->SetPosition(at.x(), at.y(), at.z());
-    const Eigen::Vector3d own =
-        athlete.com + Eigen::Vector3d(0, top_of(athlete) - athlete.com.y() + kLabelHeight, 0);
-    athlete_label->SetPosition(own.x(), own.y(), own.z());
+        sample.com + offset + Eigen::Vector3d(0, top_of(sample) - sample.com.y() + kLabelHeight, 0);
+    label->SetPosition(at.x(), at.y(), at.z());
+  }
+
+  /// Poses the figures beside the athlete, the capture's and the what-if flight's (again after
+  /// the camera turned), and labels them.
+  void place_beside(const SampleRecord& athlete) {
+    if (capture_shown() && capture_now) {
+      capture_body.pose(*capture_now, capture_offset());
+      label_above(capture_label, *capture_now, capture_offset());
+    }
+    what_if_now.reset();
+    if (what_if_drawn()) {
+      const Eigen::Vector3d offset = what_if_offset();
+      SampleRecord s = flight_sample_at(what_if_samples, time);
+      what_if_body.pose(s, offset);
+      label_above(what_if_label, s, offset);
+      for (Eigen::Vector3d& p : s.segment_position)
+        p += offset;
+      s.com += offset;
+      what_if_now = s;
+    }
+    if (figure_beside()) label_above(athlete_label, athlete, Eigen::Vector3d::Zero());
   }
 
   void clear() {
     body.clear();
     capture_body.clear();
     capture_now.reset();
+    what_if_body.clear();
+    what_if_now.reset();
     athlete_now.reset();
     environment.clear();
     paths.clear();
@@ -175,6 +215,7 @@ struct BodyScene::Impl {
     const MotionFile& file = d.file();
     body.build(file.model);
     if (d.capture()) capture_body.build(file.model, kCaptureColour);
+    what_if_body.build(file.model, kWhatIfColour);
     athlete_label->SetInput(stage == Stage::kAfter || file.motion.spline ? "optimised"
                                                                          : "keyframes");
     paths.build(d, stage);
@@ -221,7 +262,9 @@ struct BodyScene::Impl {
     body.set_ghosts_visible(options.ghosts);
     capture_body.set_visible(capture_shown());
     capture_label->SetVisibility(capture_shown());
-    athlete_label->SetVisibility(capture_shown());
+    what_if_body.set_visible(what_if_drawn());
+    what_if_label->SetVisibility(what_if_drawn());
+    athlete_label->SetVisibility(figure_beside());
     if (!has_doc) glyphs.hide();
     const bool inset_shown = has_doc && options.flight_inset;
     inset->SetDraw(inset_shown);
@@ -259,6 +302,8 @@ struct BodyScene::Impl {
     if (options.ghosts) text += "\nPale thin figures: the keyframe poses";
     if (capture_shown())
       text += "\nGrey figure: the motion capture itself (its residual: the grey-green curves)";
+    if (what_if_drawn())
+      text += "\nGold figure: the What if panel's free flight from the same take-off";
     return text;
   }
 
@@ -270,10 +315,8 @@ struct BodyScene::Impl {
     paths.set_com(s.com);
     glyphs.update(s, options.residual_arrows, options.joint_arrows);
     athlete_now = s;
-    if (capture_shown()) {
-      capture_now = document->capture_sample_at(time);
-      place_capture(s);
-    }
+    if (capture_shown()) capture_now = document->capture_sample_at(time);
+    place_beside(s);
     camera.follow(renderer->GetActiveCamera(), focus(s.com));
     // The overlay shares this camera and so its clipping range, which covers its props too.
     renderer->ResetCameraClippingRange();
@@ -316,10 +359,20 @@ struct BodyScene::Impl {
     texts.set_legend(legend_text());
   }
 
-  /// What the camera follows: the athlete's CoM, or with the capture beside it the point
-  /// between the two.
+  /// What the camera follows: the athlete's CoM, or with figures beside it the middle of them
+  /// all.
   Eigen::Vector3d focus(const Eigen::Vector3d& athlete_com) const {
-    return capture_shown() ? Eigen::Vector3d(athlete_com + 0.5 * capture_offset()) : athlete_com;
+    Eigen::Vector3d sum = athlete_com;
+    int count = 1;
+    if (capture_shown()) {
+      sum += athlete_com + capture_offset();
+      ++count;
+    }
+    if (what_if_drawn()) {
+      sum += athlete_com + what_if_offset();
+      ++count;
+    }
+    return sum / count;
   }
 
   void apply_camera() {
@@ -411,6 +464,22 @@ double BodyScene::residual_force_arrow_length() const {
 
 double BodyScene::residual_force_full_scale() const {
   return impl_->glyphs.force_scale().full_scale();
+}
+
+void BodyScene::set_what_if(std::vector<SampleRecord> samples, const std::string& label) {
+  Impl& d = *impl_;
+  d.what_if_samples = std::move(samples);
+  d.what_if_label->SetInput(label.c_str());
+  d.apply_visibility();
+  d.update_time();
+}
+
+bool BodyScene::what_if_shown() const {
+  return impl_->what_if_drawn();
+}
+
+std::optional<SampleRecord> BodyScene::what_if_pose() const {
+  return impl_->what_if_now;
 }
 
 std::string BodyScene::legend() const {

@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/document.h"
 #include "core/scene_options.h"
@@ -79,6 +80,17 @@ class BodyScene {
   /// bottom, device pixels): its index in the model, the nearest along the line of sight; -1
   /// where no segment is (background, apparatus, arrows, or no document).
   int segment_at(int x, int y) const;
+  /// A second figure beside the athlete flying `samples` (a what-if flight of the same take-off,
+  /// its samples in time order, one rotation per segment of the document's model), labelled
+  /// `label`; an empty vector removes it. It stays across set_document (the What if panel says
+  /// when it goes) but is drawn only while its samples fit the document's model. Posed at the
+  /// time shown, between its samples.
+  void set_what_if(std::vector<SampleRecord> samples, const std::string& label);
+  bool what_if_shown() const;
+  /// Where the what-if figure is drawn now, its offset from the flight it flies included (world,
+  /// m), and the sample it is posed at; nullopt when it is not drawn.
+  std::optional<SampleRecord> what_if_pose() const;
+
   /// Draws a segment brighter and outlined (-1: none). Stays across set_document while the
   /// index exists in the new model.
   void set_highlight(int segment);

@@ -24,6 +24,7 @@
 #include "saltus/evaluation/joint_loads.h"
 #include "saltus/evaluation/simulate.h"
 #include "saltus/evaluation/twist_sources.h"
+#include "saltus/evaluation/what_if.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/formats/output_folder.h"
 #include "saltus/formats/result_json.h"
@@ -335,6 +336,63 @@ int run_analyse_twist(const CommonArgs& args) {
   return 0;
 }
 
+/// --tuck-later, --open-later and --tuck-scale of `analyse what-if`: the library's WhatIfChange,
+/// its ranges checked by the library (they depend on the motion).
+void add_what_if_change(CLI::App* cmd, saltus::WhatIfChange& change) {
+  cmd->add_option("--tuck-later", change.tuck_later_s,
+                  "the tuck-in this much later, s (< 0: earlier); the motion's range is printed")
+      ->capture_default_str();
+  cmd->add_option("--open-later", change.open_later_s,
+                  "the opening this much later, s (< 0: earlier)")
+      ->capture_default_str();
+  cmd->add_option("--tuck-scale", change.tuck_scale,
+                  "the hips' and knees' turn from their take-off pose times this, 0.8-1.2 "
+                  "(> 1: a tighter tuck)")
+      ->capture_default_str();
+}
+
+int run_analyse_what_if(const CommonArgs& args, const saltus::WhatIfChange& change) {
+  const auto start = std::chrono::steady_clock::now();
+  saltus::check_output_folder(args.out_dir);
+  const saltus::MotionFile file = load_for(args);
+  const saltus::EvaluateOptions options = options_from(args);
+  const saltus::WhatIf prepared(file.motion, file.model, options);
+  const saltus::WhatIfResult result = prepared.fly(change);
+  const nlohmann::json written =
+      saltus::write_what_if_outputs(args.out_dir, file, prepared, result);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!args.quiet) {
+    print_header("analyse what-if", file, options);
+    print_takeoff_adaptation(file);
+    const saltus::TuckPhases& t = prepared.tuck();
+    if (t.found) {
+      std::printf("  the tuck: in %.3f-%.3f s, ", t.tuck_start_s, t.tucked_s);
+      if (t.opens)
+        std::printf("opens %.3f-%.3f s", t.open_start_s, t.opened_s);
+      else
+        std::printf("lands in it");
+      std::printf(", hips and knees bend up to %.0f deg; --tuck-later %+.3f..%+.3f s",
+                  t.peak_bend_deg, t.tuck_later_min_s, t.tuck_later_max_s);
+      if (t.opens)
+        std::printf(", --open-later %+.3f..%+.3f s", t.open_later_min_s, t.open_later_max_s);
+      std::printf("\n");
+    } else {
+      std::printf("  %s\n", t.reason.c_str());
+    }
+    std::printf("  %s\n", result.sentence.c_str());
+    std::printf(
+        "  keyframed: %.3f somersaults, %.3f twists; flown as it is: %.3f, %.3f; this flight: "
+        "%.3f, %.3f\n",
+        prepared.target().somersaults, prepared.target().twists,
+        prepared.unchanged_landing().somersaults, prepared.unchanged_landing().twists,
+        result.landing.somersaults, result.landing.twists);
+    std::printf("  wrote %s/{result.json, what_if.csv, trajectory.csv, model.json} in %.3f s\n",
+                absolute(args.out_dir).c_str(), seconds);
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -371,7 +429,9 @@ int main(int argc, char** argv) {
   add_common(optimize, optimize_args, saltus::OptionUse::kOptimization);
 
   CLI::App* analyse = app.add_subcommand(
-      "analyse", "Analyses of a motion: `analyse twist` (where the twist comes from)");
+      "analyse",
+      "Analyses of a motion: `analyse twist` (where the twist comes from), `analyse what-if` "
+      "(the same take-off, another tuck)");
   analyse->require_subcommand(1);
   CommonArgs twist_args;
   CLI::App* twist = analyse->add_subcommand(
@@ -381,6 +441,18 @@ int main(int argc, char** argv) {
       "Yeadon's counterfactual free flights; writes result.json, twist.csv, twist.md");
   add_common(twist, twist_args, saltus::OptionUse::kEvaluation);
   add_takeoff(twist, twist_args);
+
+  CommonArgs what_if_args;
+  saltus::WhatIfChange what_if_change;
+  CLI::App* what_if = analyse->add_subcommand(
+      "what-if",
+      "The same take-off with the tuck moved earlier or later, the opening moved, or the tuck "
+      "tighter or looser, flown again: somersaults and twists at landing and how far short or "
+      "over the landing the motion was keyframed to; writes result.json, what_if.csv, "
+      "trajectory.csv, model.json");
+  add_common(what_if, what_if_args, saltus::OptionUse::kEvaluation);
+  add_takeoff(what_if, what_if_args);
+  add_what_if_change(what_if, what_if_change);
 
   saltus::cli::StudyVerbs study_verbs(app, argc, argv);  // study convergence|mass|merge, paper
 
@@ -413,6 +485,7 @@ int main(int argc, char** argv) {
     if (simulate->parsed()) return run_simulate(simulate_args);
     if (optimize->parsed()) return run_optimize(optimize_args);
     if (twist->parsed()) return run_analyse_twist(twist_args);
+    if (what_if->parsed()) return run_analyse_what_if(what_if_args, what_if_change);
     if (const auto status = study_verbs.run()) return *status;
     if (auto status = saltus_cli::run_capture_verbs(capture_verbs)) return *status;
     if (auto status = saltus_cli::run_model_verbs(model_verbs)) return *status;

@@ -3,6 +3,7 @@
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "saltus/dynamics/inverse_dynamics.h"
@@ -72,9 +73,19 @@ struct RootRate {
   Eigen::Vector3d domega, dposition, dvelocity;
 };
 
+/// The joints' state in `scratch` is for this time (NaN: none yet). An RK4 step asks for the
+/// joints twice at its midpoint and its end is the next step's start: each is evaluated once.
+struct JointsAt {
+  double time = std::numeric_limits<double>::quiet_NaN();
+};
+
 RootRate rate(const BodyModel& model, const JointMotion& joint_motion, double t, const RootState& y,
-              BodyState<double>& scratch) {
-  joint_motion(t, scratch);
+              BodyState<double>& scratch, JointsAt& joints_at) {
+  // The root solve below changes only the root's entries of `scratch`.
+  if (!(t == joints_at.time)) {
+    joint_motion(t, scratch);
+    joints_at.time = t;
+  }
   scratch.joints[0].q = y.q.normalized();
   scratch.joints[0].omega = y.omega;
   scratch.root_position = y.position;
@@ -100,11 +111,13 @@ RootState advance(const RootState& y, const RootRate& r, double h) {
 }
 
 RootState rk4_step(const BodyModel& model, const JointMotion& joint_motion, double t,
-                   const RootState& y, double h, BodyState<double>& scratch) {
-  const RootRate k1 = rate(model, joint_motion, t, y, scratch);
-  const RootRate k2 = rate(model, joint_motion, t + h / 2, advance(y, k1, h / 2), scratch);
-  const RootRate k3 = rate(model, joint_motion, t + h / 2, advance(y, k2, h / 2), scratch);
-  const RootRate k4 = rate(model, joint_motion, t + h, advance(y, k3, h), scratch);
+                   const RootState& y, double h, BodyState<double>& scratch, JointsAt& joints_at) {
+  const RootRate k1 = rate(model, joint_motion, t, y, scratch, joints_at);
+  const RootRate k2 =
+      rate(model, joint_motion, t + h / 2, advance(y, k1, h / 2), scratch, joints_at);
+  const RootRate k3 =
+      rate(model, joint_motion, t + h / 2, advance(y, k2, h / 2), scratch, joints_at);
+  const RootRate k4 = rate(model, joint_motion, t + h, advance(y, k3, h), scratch, joints_at);
   RootState out;
   out.q.coeffs() = y.q.coeffs() + h / 6 * (k1.dq + 2 * k2.dq + 2 * k3.dq + k4.dq);
   out.q.normalize();
@@ -138,6 +151,7 @@ std::vector<BodyState<double>> simulate_free_flight(const BodyModel& model,
 
   RootState y{state.joints[0].q, state.joints[0].omega, state.root_position, state.root_velocity};
   BodyState<double> scratch(model.size());
+  JointsAt joints_at;
   std::vector<BodyState<double>> out;
   out.reserve(times.size());
   // RK4 steps end exactly at the breakpoints: the joints' acceleration kinks there (a spline's
@@ -162,7 +176,7 @@ std::vector<BodyState<double>> simulate_free_flight(const BodyModel& model,
       const int steps = std::max(1, static_cast<int>(step_count));
       for (int k = 0; k < steps; ++k) {
         const double h = gap / steps;
-        y = rk4_step(model, joint_motion, t, y, h, scratch);
+        y = rk4_step(model, joint_motion, t, y, h, scratch, joints_at);
         t += h;
       }
       t = end;

@@ -44,14 +44,37 @@ WholeBodyMomentum<Scalar> whole_body_momentum(const BodyModel& model,
 /// (6×6, [angular; linear] ordering): the root's wrench is I_c·a_root + bias.
 template <typename Scalar>
 Mat6<Scalar> composite_inertia_at_root(const BodyModel& model, const DynamicsData<Scalar>& data) {
-  std::vector<Mat6<Scalar>> ic(model.size());
-  for (int i = 0; i < model.size(); ++i)
-    ic[i] = data.inertia[i].matrix();
+  // Each subtree's inertia as one rigid body (mass, CoM, inertia about the CoM), carried into
+  // its parent's frame (x ↦ R·x + t, I ↦ R·I·Rᵀ) and added by the parallel-axis theorem:
+  // 3×3 work per segment instead of Xᵀ·I·X with 6×6 matrices, the same spatial inertia.
+  std::vector<RigidInertia<Scalar>> ic = data.inertia;
+  const auto add = [](const RigidInertia<Scalar>& a, const RigidInertia<Scalar>& b) {
+    RigidInertia<Scalar> sum;
+    sum.mass = a.mass + b.mass;
+    if (!(value_of(sum.mass) > 0)) {
+      sum.com = a.com;
+      sum.inertia_com = a.inertia_com + b.inertia_com;
+      return sum;
+    }
+    sum.com = (a.mass * a.com + b.mass * b.com) / sum.mass;
+    const Vec3<Scalar> da = a.com - sum.com;
+    const Vec3<Scalar> db = b.com - sum.com;
+    const Mat3<Scalar> eye = Mat3<Scalar>::Identity();
+    sum.inertia_com = a.inertia_com + b.inertia_com +
+                      a.mass * (da.squaredNorm() * eye - da * da.transpose()) +
+                      b.mass * (db.squaredNorm() * eye - db * db.transpose());
+    return sum;
+  };
   for (int i = model.size() - 1; i > 0; --i) {
-    const Mat6<Scalar> x = data.placement[i].motion_matrix_to_child();
-    ic[model.segments[i].parent] += x.transpose() * ic[i] * x;
+    const FramePlacement<Scalar>& p = data.placement[i];
+    RigidInertia<Scalar> moved;
+    moved.mass = ic[i].mass;
+    moved.com = p.rotation * ic[i].com + p.translation;
+    moved.inertia_com = p.rotation * ic[i].inertia_com * p.rotation.transpose();
+    const int parent = model.segments[i].parent;
+    ic[parent] = add(ic[parent], moved);
   }
-  return ic[0];
+  return ic[0].matrix();
 }
 
 }  // namespace saltus

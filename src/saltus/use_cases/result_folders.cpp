@@ -12,6 +12,7 @@
 #include "saltus/formats/result_json.h"
 #include "saltus/formats/trajectory_csv.h"
 #include "saltus/formats/twist_files.h"
+#include "saltus/formats/what_if_files.h"
 
 namespace saltus {
 
@@ -106,6 +107,19 @@ nlohmann::json write_twist_outputs(const std::string& out_dir, const MotionFile&
   write_text(folder.file("result.json"), result.dump(2) + "\n");
   folder.commit();
   return result;
+}
+
+nlohmann::json write_what_if_outputs(const std::string& out_dir, const MotionFile& file,
+                                     const WhatIf& prepared, const WhatIfResult& result) {
+  const nlohmann::json r = what_if_result_json(file, prepared, result);
+  require_finite(r, file.path);
+  require_finite(result.flight.samples, file.path, "trajectory.csv");
+  OutputFolder folder(out_dir);
+  write_text(folder.file("what_if.csv"), what_if_csv(prepared, result));
+  write_csv(folder, "trajectory.csv", file.model, result.flight.samples);
+  write_common_files(folder, file, r);
+  folder.commit();
+  return r;
 }
 
 nlohmann::json write_mass_outputs(const std::string& out_dir, const MotionFile& file,

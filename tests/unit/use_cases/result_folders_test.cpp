@@ -45,6 +45,11 @@ TEST(ResultFolders, EachVerbWritesExactlyItsFiles) {
   EXPECT_EQ(names_in_folder(dir / "s"),
             (std::set<std::string>{"result.json", "trajectory.csv", "model.json"}));
 
+  const WhatIf prepared(file.motion, file.model, options);
+  write_what_if_outputs(dir / "w", file, prepared, prepared.fly(WhatIfChange{}));
+  EXPECT_EQ(names_in_folder(dir / "w"),
+            (std::set<std::string>{"result.json", "what_if.csv", "trajectory.csv", "model.json"}));
+
   OptimizeOptions optimize;
   optimize.nlp.samples = 21;
   optimize.solver.max_iterations = 3;
