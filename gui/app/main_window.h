@@ -64,6 +64,9 @@ class MainWindow : public QMainWindow {
   TwistPanel& twist() { return *twist_; }
   /// Brings the Twist panel to the front (View > Where does the twist come from?).
   void show_twist_panel();
+  /// Brings the Study panel to the front (a study starts or ends, the status bar's strip).
+  void show_study_panel();
+  QDockWidget* study_dock() const { return study_dock_; }
 
   // Shortcuts to what batch mode and tests use most.
   bool open_motion(const QString& path, QString* error = nullptr);
@@ -114,6 +117,7 @@ class MainWindow : public QMainWindow {
   VideoExporter* video_ = nullptr;
   TwistPanel* twist_ = nullptr;
   QDockWidget* twist_dock_ = nullptr;
+  QDockWidget* study_dock_ = nullptr;
   /// Parts that remember settings, in the order they are loaded.
   std::vector<RemembersSettings*> remembered_;
   int frames_drawn_ = 0;
