@@ -29,6 +29,7 @@
 #include "app/run_controller.h"
 #include "app/scene_widget.h"
 #include "app/study_controller.h"
+#include "app/study_panel.h"
 #include "app/timeline_widget.h"
 #include "app/twist_panel.h"
 #include "app/video_exporter.h"
@@ -80,7 +81,7 @@ MainWindow::MainWindow(bool interactive, QWidget* parent) : QMainWindow(parent) 
   twist_ = new TwistPanel(*context_, this);
   context_->add_shortcut_scope(twist_->chart());
   what_if_ = new WhatIfPanel(*context_, this);
-  remembered_ = {files_, view_, playback_, runs_, plots_};
+  remembered_ = {files_, view_, playback_, runs_, plots_, studies_};
 
   // A frame counts when the window shows a new 3D picture (chart-only redraws do not).
   connect(scene_, &SceneWidget::frame_shown, this, [this] { ++frames_drawn_; });
@@ -226,6 +227,8 @@ void MainWindow::build_docks(QMenu* view_menu) {
   QDockWidget* history = dock(tr("History"), "history_dock", edits_->make_history_view(this));
   history->toggleViewAction()->setText(tr("Edit history"));
   twist_dock_ = dock(tr("Twist"), "twist_dock", twist_);
+  study_dock_ = dock(tr("Study"), "study_dock", studies_->panel());
+  study_dock_->toggleViewAction()->setText(tr("Study panel"));
   twist_dock_->toggleViewAction()->setText(tr("Twist panel"));
   // It computes only while in view (a tab raised): a hidden panel costs no CPU per edit.
   connect(twist_dock_, &QDockWidget::visibilityChanged, twist_,
@@ -241,11 +244,28 @@ void MainWindow::build_docks(QMenu* view_menu) {
   // column holds them whole; and one panel at a time gets the full height, so the Optimise
   // panel's run list and status stay in view.
   setTabPosition(Qt::RightDockWidgetArea, QTabWidget::East);
-  const std::vector<QDockWidget*> docks = {optimise, keyframes, capture,     model,
-                                           display,  history,   twist_dock_, what_if_dock_};
+  const std::vector<QDockWidget*> docks = {optimise,    keyframes,     capture,
+                                           model,       display,       history,
+                                           twist_dock_, what_if_dock_, study_dock_};
   for (std::size_t i = 1; i < docks.size(); ++i)
     tabifyDockWidget(docks[i - 1], docks[i]);
   optimise->raise();
+  // The Study panel is a tab of its own once a study runs (View > Study panel before that): its
+  // progress and results never cover the 3D view.
+  study_dock_->hide();
+  connect(studies_, &StudyController::panel_wanted, this, &MainWindow::show_study_panel);
+  // The study's tables are wide: a tab under the 3D view, beside the plots, while there are
+  // results to show.
+  connect(studies_, &StudyController::tables_changed, this, [this](bool results) {
+    QWidget* tables = studies_->panel()->tables();
+    const int index = plots_->indexOf(tables);
+    if (!results) {
+      if (index >= 0) plots_->removeTab(index);
+      return;
+    }
+    if (index < 0) plots_->addTab(tables, tr("Study results"));
+    plots_->setCurrentWidget(tables);
+  });
   // An imported capture brings its panel to the front (its keyframes are picked there).
   connect(files_, &FileController::motion_opened, this, [this, capture] {
     if (document().capture()) capture->raise();
@@ -257,6 +277,11 @@ void MainWindow::build_docks(QMenu* view_menu) {
   view_menu->addAction(tr("Where does the &twist come from?"), this, &MainWindow::show_twist_panel);
   view_menu->addAction(tr("&What if…"), this, &MainWindow::show_what_if_panel);
   resizeDocks({optimise}, {kDockWidth}, Qt::Horizontal);
+}
+
+void MainWindow::show_study_panel() {
+  study_dock_->show();
+  study_dock_->raise();
 }
 
 void MainWindow::show_twist_panel() {

@@ -68,6 +68,9 @@ class MainWindow : public QMainWindow {
   WhatIfPanel& what_if() { return *what_if_; }
   /// Brings the What if panel to the front (View > What if…).
   void show_what_if_panel();
+  /// Brings the Study panel to the front (a study starts or ends, the status bar's strip).
+  void show_study_panel();
+  QDockWidget* study_dock() const { return study_dock_; }
 
   // Shortcuts to what batch mode and tests use most.
   bool open_motion(const QString& path, QString* error = nullptr);
@@ -120,6 +123,7 @@ class MainWindow : public QMainWindow {
   QDockWidget* twist_dock_ = nullptr;
   WhatIfPanel* what_if_ = nullptr;
   QDockWidget* what_if_dock_ = nullptr;
+  QDockWidget* study_dock_ = nullptr;
   /// Parts that remember settings, in the order they are loaded.
   std::vector<RemembersSettings*> remembered_;
   int frames_drawn_ = 0;

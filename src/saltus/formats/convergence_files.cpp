@@ -112,38 +112,73 @@ DefinitionSettings read_settings(const nlohmann::json& definition) {
 
 }  // namespace
 
-std::string convergence_markdown(const std::vector<StudyOutcome>& outcomes) {
-  std::ostringstream out;
-  // Summary per formulation, in order of first appearance.
-  std::vector<std::string> labels;
+std::vector<ConvergenceSummaryRow> convergence_summary(const std::vector<StudyOutcome>& outcomes) {
+  std::vector<ConvergenceSummaryRow> rows;
   for (const StudyOutcome& o : outcomes) {
     const std::string label = formulation_label(o.study_case);
-    if (std::find(labels.begin(), labels.end(), label) == labels.end()) labels.push_back(label);
+    if (std::none_of(rows.begin(), rows.end(),
+                     [&](const ConvergenceSummaryRow& r) { return r.model == label; }))
+      rows.push_back({label});
   }
-  out << "| model | cases | solved | median iterations | median time (s) | median avg root force "
-         "after (N) | worst avg root force after, solved cases (N) |\n"
-      << "|---|---|---|---|---|---|---|\n";
-  for (const std::string& label : labels) {
-    int total = 0, solved = 0;
+  for (ConvergenceSummaryRow& row : rows) {
     std::vector<double> iterations, seconds, force;
-    double worst = 0.0;
+    double worst = std::nan("");
     for (const StudyOutcome& o : outcomes) {
-      if (formulation_label(o.study_case) != label) continue;
-      ++total;
+      if (formulation_label(o.study_case) != row.model) continue;
+      ++row.cases;
       if (!finished(o)) continue;  // listed below the table
       iterations.push_back(o.iterations);
       seconds.push_back(o.seconds);
       force.push_back(o.avg_force_after);
       if (o.solved) {
-        ++solved;
-        worst = std::max(worst, o.avg_force_after);
+        ++row.solved;
+        worst = std::isnan(worst) ? o.avg_force_after : std::max(worst, o.avg_force_after);
       }
     }
-    out << "| " << label << " | " << total << " | " << solved << " ("
-        << format_number("%.0f", 100.0 * solved / std::max(total, 1)) << " %) | "
-        << format_number("%.0f", median(iterations)) << " | "
-        << format_number("%.2f", median(seconds)) << " | " << format_number("%.3g", median(force))
-        << " | " << (solved ? format_number("%.3g", worst) : std::string("–")) << " |\n";
+    row.median_iterations = median(iterations);
+    row.median_seconds = median(seconds);
+    row.median_force_after_N = median(force);
+    row.worst_force_after_N = worst;
+  }
+  return rows;
+}
+
+std::vector<std::string> convergence_summary_headings() {
+  return {"model",
+          "cases",
+          "solved",
+          "median iterations",
+          "median time (s)",
+          "median avg root force after (N)",
+          "worst avg root force after, solved cases (N)"};
+}
+
+std::vector<std::string> convergence_summary_cells(const ConvergenceSummaryRow& row) {
+  return {row.model,
+          std::to_string(row.cases),
+          std::to_string(row.solved) + " (" +
+              format_number("%.0f", 100.0 * row.solved / std::max(row.cases, 1)) + " %)",
+          format_number("%.0f", row.median_iterations),
+          format_number("%.2f", row.median_seconds),
+          format_number("%.3g", row.median_force_after_N),
+          row.solved ? format_number("%.3g", row.worst_force_after_N) : std::string("–")};
+}
+
+std::string convergence_markdown(const std::vector<StudyOutcome>& outcomes) {
+  std::ostringstream out;
+  const std::vector<std::string> headings = convergence_summary_headings();
+  out << "|";
+  for (const std::string& h : headings)
+    out << ' ' << h << " |";
+  out << "\n|";
+  for (std::size_t i = 0; i < headings.size(); ++i)
+    out << "---|";
+  out << '\n';
+  for (const ConvergenceSummaryRow& row : convergence_summary(outcomes)) {
+    out << "|";
+    for (const std::string& cell : convergence_summary_cells(row))
+      out << ' ' << cell << " |";
+    out << '\n';
   }
   // Cases whose process crashed or ran out of time count as unsolved; their figures are not in
   // the medians.
@@ -260,6 +295,34 @@ nlohmann::json write_convergence_files(const std::string& dir,
              "# Convergence study\n\n" + convergence_markdown(outcomes));
   write_text((folder / "result.json").string(), result.dump(2) + "\n");
   return result;
+}
+
+ConvergenceStudyFolder read_convergence_study_folder(const std::string& dir) {
+  const StudyManifest manifest = read_study_manifest(dir);
+  const std::string study_json = (std::filesystem::path(dir) / "study.json").string();
+  if (manifest.study != "convergence")
+    throw InputError(study_json, "/study",
+                     "is \"" + manifest.study + "\", not a convergence study");
+  if (!manifest.shard.whole())
+    throw InputError(study_json, "/shard",
+                     "is shard " + manifest.shard.text() +
+                         " of a study; merge the shards first (saltus study merge)");
+  ConvergenceStudyFolder folder;
+  folder.path = dir;
+  folder.cases = manifest.cases;
+  for (const auto& [index, record] : read_case_records(dir, manifest.cases, nullptr)) {
+    if (record.kind != CaseKind::kConvergence)
+      throw InputError((std::filesystem::path(dir) / case_record_name(index)).string(), "/kind",
+                       "not a case of a convergence study");
+    folder.outcomes.push_back(record.convergence);
+    folder.unfinished += finished(record.convergence) ? 0 : 1;
+  }
+  folder.summary = convergence_summary(folder.outcomes);
+  const std::filesystem::path markdown = std::filesystem::path(dir) / "convergence.md";
+  const std::filesystem::path csv = std::filesystem::path(dir) / "convergence.csv";
+  if (std::filesystem::is_regular_file(markdown)) folder.markdown_path = markdown.string();
+  if (std::filesystem::is_regular_file(csv)) folder.csv_path = csv.string();
+  return folder;
 }
 
 }  // namespace saltus
