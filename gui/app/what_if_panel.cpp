@@ -150,6 +150,8 @@ void WhatIfPanel::set_active(bool active) {
   active_ = active;
   if (active && busy()) {
     if (!shown_) show_message(tr("Flying the motion as it is…"));
+    // Asked for now: the change may have been made while out of view.
+    since_change_.restart();
     start();
   }
   emit flight_changed();
@@ -271,8 +273,9 @@ void WhatIfPanel::request() {
   if (!subject_now_) return;
   since_change_.restart();
   if (!busy()) {
-    // Already on screen (e.g. a slider moved and back before its flight was asked for).
+    // Already on screen (a slider moved and back): the answer shown is this one's again.
     set_what_if_grey(sentence_, false);
+    timing_->clear();
     return;
   }
   if (shown_) {
