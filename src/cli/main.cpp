@@ -287,22 +287,9 @@ int run_optimize(const CommonArgs& args) {
                 rotation_words(written.at("rotation").at("after")).c_str());
     const saltus::JointLoadRise rise =
         saltus::largest_joint_load_rise(file.model, result.before.check, result.after.check);
-    if (!rise.joint.empty()) {
-      const bool moment = rise.moment_ratio >= rise.force_ratio;
-      const double weight = saltus::body_weight_N(file.model);
-      if (moment)
-        std::printf(
-            "  joint loads: largest rise at %s, moment %.3g N·m at t = %.3f s after, %.3g N·m "
-            "before (%.2fx)\n",
-            rise.joint.c_str(), rise.after.moment_Nm, rise.after.moment_time_s,
-            rise.before.moment_Nm, rise.moment_ratio);
-      else
-        std::printf(
-            "  joint loads: largest rise at %s, force %.3g N (%.0f %% of body weight) at t = "
-            "%.3f s after, %.3g N before (%.2fx)\n",
-            rise.joint.c_str(), rise.after.force_N, 100.0 * rise.after.force_N / weight,
-            rise.after.force_time_s, rise.before.force_N, rise.force_ratio);
-    }
+    if (!rise.joint.empty())
+      std::printf("  joint loads: largest rise at %s\n",
+                  saltus::joint_load_rise_words(rise, saltus::body_weight_N(file.model)).c_str());
     std::printf(
         "  wrote %s/{result.json, trajectory_before.csv, trajectory_after.csv, model.json, "
         "optimized.motion.json} in %.3f s\n",

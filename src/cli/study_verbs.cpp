@@ -169,6 +169,7 @@ struct StudyVerbs::State {
     std::vector<std::string> scaled_segments{"thigh_l", "thigh_r"};
     double factor = 1.5;
     std::vector<std::string> load_segments{"thigh_r", "upper_arm_r"};
+    bool paper_protocol = false;
   } mass_args;
 
   struct Athletes {
@@ -250,7 +251,8 @@ StudyVerbs::StudyVerbs(CLI::App& app, int argc, char** argv) : state_(std::make_
   s.mass = study->add_subcommand(
       "mass",
       "The motion optimised with the model's mass parameters and with some segments scaled "
-      "(default: thighs +50 %); joint loads over time in mass.csv, a summary in mass.md");
+      "(default: thighs +50 %); joint loads over time in mass.csv, a summary in mass.md with "
+      "each load's peak against the peak the interpolated input needs on the same model");
   s.mass->add_option("MOTION", m.motion, "motion file (*.motion.json) or capture (*.bvh)")
       ->required();
   add_study_common(s.mass, m.common);
@@ -263,6 +265,10 @@ StudyVerbs::StudyVerbs(CLI::App& app, int argc, char** argv) : state_(std::make_
   s.mass->add_option("--loads", m.load_segments, "segments whose joint loads are written")
       ->delimiter(',')
       ->capture_default_str();
+  s.mass->add_flag("--paper-protocol", m.paper_protocol,
+                   "optimise at the paper's resolution (knots at the keyframes, no keyframe "
+                   "prior) instead of optimize's: its joints pay for the root force with "
+                   "loads many times the input's");
 
   auto& t = s.athletes_args;
   s.athletes = study->add_subcommand(
@@ -444,7 +450,8 @@ int StudyVerbs::State::run_mass() const {
   const Mass& a = mass_args;
   const MotionFile file = load_motion_or_capture(a.motion);
   MassStudyOptions options;
-  options.optimize = study_optimize_options(a.common);
+  options.optimize = a.common.options.values().optimize_options();
+  options.paper_protocol = a.paper_protocol;
   options.scaled_segments = a.scaled_segments;
   options.factor = a.factor;
   options.load_segments = a.load_segments;

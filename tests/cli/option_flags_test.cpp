@@ -151,6 +151,11 @@ TEST(CliOptions, StudiesAndThreadsTakeTheTablesValues) {
   const auto study = test::run_cli("study mass " + test::m1_path() + " --out " + (dir / "m") +
                                    " --samples 21 --max-iter 0 --quiet");
   EXPECT_EQ(study.status, 0) << study.output;
+  EXPECT_EQ(test::read_json(dir / "m/result.json")["protocol"], "optimize");
+  const auto paper = test::run_cli("study mass " + test::m1_path() + " --out " + (dir / "p") +
+                                   " --samples 21 --max-iter 0 --paper-protocol --quiet");
+  EXPECT_EQ(paper.status, 0) << paper.output;
+  EXPECT_EQ(test::read_json(dir / "p/result.json")["protocol"], "paper");
   const auto threads = test::run_cli("optimize " + test::m1_path() + " --out " + (dir / "o") +
                                      " --samples 21 --max-iter 1 --threads auto --quiet");
   EXPECT_TRUE(threads.status == 0 || threads.status == 3) << threads.output;

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "saltus/base/constants.h"
+#include "saltus/base/text_format.h"
 
 namespace saltus {
 
@@ -36,6 +37,19 @@ JointLoadRise largest_joint_load_rise(const BodyModel& model, const DenseCheck& 
 
 double body_weight_N(const BodyModel& model) {
   return model.total_mass() * kStandardGravity;
+}
+
+std::string joint_load_rise_words(const JointLoadRise& rise, double body_weight) {
+  if (rise.moment_ratio >= rise.force_ratio)
+    return rise.joint + format_number(", moment %.3g N·m", rise.after.moment_Nm) +
+           format_number(" at t = %.3f s after, ", rise.after.moment_time_s) +
+           format_number("%.3g N·m before", rise.before.moment_Nm) +
+           format_number(" (%.2fx)", rise.moment_ratio);
+  return rise.joint + format_number(", force %.3g N", rise.after.force_N) +
+         format_number(" (%.0f %% of body weight)", 100.0 * rise.after.force_N / body_weight) +
+         format_number(" at t = %.3f s after, ", rise.after.force_time_s) +
+         format_number("%.3g N before", rise.before.force_N) +
+         format_number(" (%.2fx)", rise.force_ratio);
 }
 
 }  // namespace saltus

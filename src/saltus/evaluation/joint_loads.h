@@ -37,4 +37,8 @@ JointLoadRise largest_joint_load_rise(const BodyModel& model, const DenseCheck& 
 /// Body weight m·g, N: the scale of "% of body weight".
 double body_weight_N(const BodyModel& model);
 
+/// The rise in words, by its larger ratio: "elbow_l, moment 7.17 N·m at t = 0.224 s after,
+/// 2.6 N·m before (2.76x)"; a force also in % of `body_weight` (N).
+std::string joint_load_rise_words(const JointLoadRise& rise, double body_weight);
+
 }  // namespace saltus

@@ -10,6 +10,7 @@
 #include "saltus/base/input_error.h"
 #include "saltus/base/json_reader.h"
 #include "saltus/base/text_format.h"
+#include "saltus/evaluation/joint_loads.h"
 #include "saltus/formats/model_file.h"
 #include "saltus/formats/output_folder.h"
 #include "saltus/formats/result_json.h"
@@ -56,30 +57,50 @@ std::string mass_study_csv(const MassStudyResult& study) {
 
 std::string mass_study_markdown(const MassStudyResult& study) {
   std::ostringstream out;
-  out << "| model | segment | RMS force (N) | peak force (N) | RMS moment (N·m) | peak moment "
-         "(N·m) | avg root force after (N) |\n|---|---|---|---|---|---|---|\n";
+  out << "| model | segment | RMS force (N) | peak force (N) | input's peak (N) | RMS moment (N·m) "
+         "| peak moment (N·m) | input's peak (N·m) | rise | avg root force after (N) |\n"
+         "|---|---|---|---|---|---|---|---|---|---|\n";
   std::map<std::string, std::vector<double>> figures;  // segment -> per run RMS force, moment
   for (const MassStudyRun& run : study.runs) {
+    const std::vector<JointLoadRise> rises =
+        joint_load_rises(run.model, run.result.before.check, run.result.after.check);
     for (const std::string& s : study.load_segments) {
       const int index = run.model.segment_index(s);
-      double force2 = 0, moment2 = 0, peak_force = 0, peak_moment = 0;
+      double force2 = 0, moment2 = 0;
       const auto& samples = run.result.after.samples;
       for (const SampleRecord& sample : samples) {
         const Vector6d& w = load(sample, index);
         force2 += w.head<3>().squaredNorm();
         moment2 += w.tail<3>().squaredNorm();
-        peak_force = std::max(peak_force, w.head<3>().norm());
-        peak_moment = std::max(peak_moment, w.tail<3>().norm());
       }
       const double n = std::max<std::size_t>(samples.size(), 1);
       const double rms_force = std::sqrt(force2 / n), rms_moment = std::sqrt(moment2 / n);
       figures[s].push_back(rms_force);
       figures[s].push_back(rms_moment);
+      // rises[k - 1] is segment k's joint (the root has none); peaks from the dense checks.
+      const JointLoadRise rise = index >= 1 && index <= static_cast<int>(rises.size())
+                                     ? rises[index - 1]
+                                     : JointLoadRise{};
       out << "| " << run.label << " | " << s << " | " << format_number("%.1f", rms_force) << " | "
-          << format_number("%.1f", peak_force) << " | " << format_number("%.2f", rms_moment)
-          << " | " << format_number("%.2f", peak_moment) << " | "
+          << format_number("%.1f", rise.after.force_N) << " | "
+          << format_number("%.1f", rise.before.force_N) << " | "
+          << format_number("%.2f", rms_moment) << " | "
+          << format_number("%.2f", rise.after.moment_Nm) << " | "
+          << format_number("%.2f", rise.before.moment_Nm) << " | "
+          << format_number("%.2fx", rise.ratio()) << " | "
           << format_number("%.3g", run.result.after.metrics.avg_root_force) << " |\n";
     }
+  }
+  out << "\nPeaks and rises from the dense checks; the input is the interpolated keyframes on the "
+         "same model (the optimiser's starting point); rise: the larger of the force and moment "
+         "ratios, peaks under 10 N or 1 N·m counted as those. RMS over mass.csv's samples.\n\n"
+         "Largest rise over every joint:\n\n";
+  for (const MassStudyRun& run : study.runs) {
+    const JointLoadRise rise =
+        largest_joint_load_rise(run.model, run.result.before.check, run.result.after.check);
+    if (!rise.joint.empty())
+      out << "- " << run.label << ": " << joint_load_rise_words(rise, body_weight_N(run.model))
+          << "\n";
   }
   if (study.runs.size() == 2) {
     out << "\nScaled / given (RMS):\n\n| segment | force | moment |\n|---|---|---|\n";
@@ -103,14 +124,29 @@ nlohmann::json mass_result_json(const MotionFile& file, const MassStudyResult& s
   result["factor"] = options.factor;
   result["scaled_segments"] = options.scaled_segments;
   result["load_segments"] = study.load_segments;
+  result["protocol"] = options.paper_protocol ? "paper" : "optimize";
   result["runs"] = nlohmann::json::array();
-  for (const MassStudyRun& run : study.runs)
-    result["runs"].push_back({{"label", run.label},
-                              {"model", run.model.name},
-                              {"status", run.result.solve.status},
-                              {"iterations", run.result.solve.iterations},
-                              {"avg_force_before_N", run.result.before.metrics.avg_root_force},
-                              {"avg_force_after_N", run.result.after.metrics.avg_root_force}});
+  for (const MassStudyRun& run : study.runs) {
+    const double weight = body_weight_N(run.model);
+    nlohmann::json loads = nlohmann::json::object();
+    for (const JointLoadRise& r :
+         joint_load_rises(run.model, run.result.before.check, run.result.after.check))
+      loads[r.joint] = {{"before", joint_peak_json(r.before, weight)},
+                        {"after", joint_peak_json(r.after, weight)},
+                        {"rise", r.ratio()}};
+    const JointLoadRise largest =
+        largest_joint_load_rise(run.model, run.result.before.check, run.result.after.check);
+    result["runs"].push_back(
+        {{"label", run.label},
+         {"model", run.model.name},
+         {"status", run.result.solve.status},
+         {"iterations", run.result.solve.iterations},
+         {"avg_force_before_N", run.result.before.metrics.avg_root_force},
+         {"avg_force_after_N", run.result.after.metrics.avg_root_force},
+         {"body_weight_N", weight},
+         {"joint_loads", loads},
+         {"largest_joint_rise", {{"joint", largest.joint}, {"rise", largest.ratio()}}}});
+  }
   return result;
 }
 

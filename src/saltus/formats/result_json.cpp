@@ -126,6 +126,8 @@ nlohmann::json resolution_json(const ResultJson::Optimization::Resolution& resol
   return j;
 }
 
+}  // namespace
+
 nlohmann::json joint_peak_json(const JointLoadPeak& p, double body_weight) {
   return {{"peak_force_N", p.force_N},
           {"peak_force_pct_bw", 100.0 * p.force_N / body_weight},
@@ -133,6 +135,8 @@ nlohmann::json joint_peak_json(const JointLoadPeak& p, double body_weight) {
           {"peak_moment_Nm", p.moment_Nm},
           {"peak_moment_time_s", p.moment_time_s}};
 }
+
+namespace {
 
 nlohmann::json rotation_json(const YeadonSummary& s) {
   return {{"somersaults", s.somersaults},

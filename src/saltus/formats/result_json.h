@@ -135,6 +135,9 @@ ResultJson read_result_json(const std::string& path);
 
 /// before/after block of result.json.
 nlohmann::json force_metrics_to_json(const ForceMetrics& metrics);
+/// One joint's peak load as result.json writes it: force (N, % of `body_weight` N, time) and
+/// moment (N·m, time).
+nlohmann::json joint_peak_json(const JointLoadPeak& peak, double body_weight);
 
 /// What result.json records of an evaluation, a simulation and an optimisation.
 ResultJson evaluation_result(const MotionFile& file, const MotionEvaluation& evaluation,

@@ -25,8 +25,10 @@ MassStudyResult run_mass_study(const MotionFile& file, const MassStudyOptions& o
   label += format_number(" x%g", options.factor);
   study.runs.push_back({file.model.name, file.model, {}});
   study.runs.push_back({label, scaled, {}});
+  OptimizeOptions optimize = options.optimize;
+  if (options.paper_protocol) use_paper_protocol(optimize);
   for (MassStudyRun& run : study.runs)
-    run.result = optimize_motion(file.motion, run.model, options.optimize);
+    run.result = optimize_motion(file.motion, run.model, optimize);
   return study;
 }
 

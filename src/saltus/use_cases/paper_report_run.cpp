@@ -114,7 +114,8 @@ StudyJob paper_report_job(const PaperReportOptions& options) {
       {"mass",
        {{"scaled_segments", plan->mass.scaled_segments},
         {"factor", plan->mass.factor},
-        {"load_segments", plan->mass.load_segments}}},
+        {"load_segments", plan->mass.load_segments},
+        {"paper_protocol", plan->mass.paper_protocol}}},
       {"convergence", convergence_definition(plan->convergence_motions, plan->convergence)}};
   for (const PaperCase& c : plan->cases)
     job.case_names.push_back(paper_case_label(c));

@@ -71,6 +71,11 @@ TEST(JointLoads, RatiosAreAfterOverBeforeWithFloors) {
   const JointLoadRise largest = largest_joint_load_rise(model, before, after);
   EXPECT_EQ(largest.joint, "knee_l");
   EXPECT_NEAR(body_weight_N(model), model.total_mass() * 9.81, 1e-9);
+  // In words, by the larger ratio: the knee's moment, the hip's force in % of body weight.
+  EXPECT_EQ(joint_load_rise_words(largest, 640.0),
+            "knee_l, moment 4 N·m at t = 2.040 s after, 0 N·m before (4.00x)");
+  EXPECT_EQ(joint_load_rise_words(h, 640.0),
+            "hip_r, force 300 N (47 % of body weight) at t = 1.900 s after, 200 N before (1.50x)");
 }
 
 }  // namespace
