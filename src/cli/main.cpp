@@ -225,9 +225,11 @@ int run_optimize(const CommonArgs& args) {
         std::printf(" [");
         for (std::size_t i = 0; i < level.subdivisions.size(); ++i)
           std::printf("%s%d", i ? "," : "", level.subdivisions[i]);
-        std::printf("] %.3g N;", level.avg_root_force);
+        std::printf("] %.3g N, %.1f deg;", level.avg_root_force, level.landing_drift_deg);
       }
-      std::printf(" knot spans per keyframe interval, true average root force\n");
+      std::printf(
+          " knot spans per keyframe interval, true average root force, free flight's landing "
+          "from the motion\n");
     } else if (result.knots_per_interval != options.nlp.knots_per_interval) {
       std::printf(
           "  knots refined to %d per keyframe interval: on %d the interpolation misses the "
@@ -236,9 +238,17 @@ int run_optimize(const CommonArgs& args) {
           result.knots_per_interval, options.nlp.knots_per_interval);
     }
     if (const auto& polish = result.joint_load_polish)
-      std::printf("  least joint effort at these times: %.3g N -> %.3g N average root force, %s\n",
-                  polish->avg_root_force_before, polish->avg_root_force_after,
-                  polish->kept ? "kept" : ("not kept: " + polish->status).c_str());
+      std::printf(
+          "  least joint effort at these times: %.3g N -> %.3g N average root force, free "
+          "flight landing %.1f -> %.1f deg from the motion, %s\n",
+          polish->avg_root_force_before, polish->avg_root_force_after,
+          polish->landing_drift_before_deg, polish->landing_drift_after_deg,
+          polish->kept ? "kept" : ("not kept (" + polish->status + ")").c_str());
+    if (result.landing_drift_deg)
+      std::printf(
+          "  free flight of the optimised motion (its own take-off state): lands %.2f deg from "
+          "it\n",
+          *result.landing_drift_deg);
     if (result.solve.restarts > 0)
       std::printf("  the solver restarted %d time(s) from its best feasible iterate\n",
                   result.solve.restarts);

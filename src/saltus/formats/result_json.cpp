@@ -111,15 +111,19 @@ nlohmann::json resolution_json(const ResultJson::Optimization::Resolution& resol
   for (const OptimizationResult::Level& level : resolution.levels)
     levels.push_back({{"subdivisions", level.subdivisions},
                       {"avg_root_force", level.avg_root_force},
+                      {"landing_drift_deg", level.landing_drift_deg},
                       {"iterations", level.iterations},
                       {"status", level.status}});
   nlohmann::json j = {{"automatic", resolution.automatic},
                       {"subdivisions", resolution.subdivisions},
                       {"knots", resolution.knots},
                       {"levels", levels}};
+  if (resolution.landing_drift_deg) j["landing_drift_deg"] = *resolution.landing_drift_deg;
   if (const auto& p = resolution.joint_load_polish)
     j["joint_load_polish"] = {{"avg_root_force_before", p->avg_root_force_before},
                               {"avg_root_force_after", p->avg_root_force_after},
+                              {"landing_drift_before_deg", p->landing_drift_before_deg},
+                              {"landing_drift_after_deg", p->landing_drift_after_deg},
                               {"iterations", p->iterations},
                               {"status", p->status},
                               {"kept", p->kept}};
@@ -211,6 +215,7 @@ ResultJson::Optimization::Resolution read_resolution(const JsonNode& node) {
   r.automatic = read_bool(node.at("automatic"));
   r.subdivisions = read_int_array(node.at("subdivisions"), 1);
   r.knots = node.at("knots").as_double_array();
+  if (const auto drift = node.find("landing_drift_deg")) r.landing_drift_deg = drift->as_double();
   const JsonNode levels = node.at("levels");
   levels.require_array();
   for (std::size_t i = 0; i < levels.size(); ++i) {
@@ -219,6 +224,8 @@ ResultJson::Optimization::Resolution read_resolution(const JsonNode& node) {
     OptimizationResult::Level l;
     l.subdivisions = read_int_array(level.at("subdivisions"), 1);
     l.avg_root_force = level.at("avg_root_force").as_double();
+    if (const auto drift = level.find("landing_drift_deg"))
+      l.landing_drift_deg = drift->as_double();
     l.iterations = level.at("iterations").as_int();
     l.status = level.at("status").as_string();
     r.levels.push_back(std::move(l));
@@ -228,6 +235,10 @@ ResultJson::Optimization::Resolution read_resolution(const JsonNode& node) {
     JointLoadPolish& p = r.joint_load_polish.emplace();
     p.avg_root_force_before = polish->at("avg_root_force_before").as_double();
     p.avg_root_force_after = polish->at("avg_root_force_after").as_double();
+    if (const auto d = polish->find("landing_drift_before_deg"))
+      p.landing_drift_before_deg = d->as_double();
+    if (const auto d = polish->find("landing_drift_after_deg"))
+      p.landing_drift_after_deg = d->as_double();
     p.iterations = polish->at("iterations").as_int();
     p.status = polish->at("status").as_string();
     p.kept = read_bool(polish->at("kept"));
@@ -540,6 +551,7 @@ ResultJson optimization_result(const MotionFile& file, const OptimizationResult&
     resolution.knots = result.after.trajectory.rotations.front().knots();
   resolution.levels = result.levels;
   resolution.joint_load_polish = result.joint_load_polish;
+  resolution.landing_drift_deg = result.landing_drift_deg;
   o.resolution = std::move(resolution);
   o.largest_joint_turn_deg =
       std::make_pair(largest_control_turn(result.before.trajectory, 1) * kDegreesPerRadian,

@@ -118,6 +118,8 @@ struct ResultJson {
       std::vector<OptimizationResult::Level> levels;  ///< each level tried, in order
       /// The last solve with least joint effort, when there was one.
       std::optional<JointLoadPolish> joint_load_polish;
+      /// OptimizationResult::landing_drift_deg, when measured.
+      std::optional<double> landing_drift_deg;
     };
     std::optional<Resolution> resolution;
   };

@@ -8,6 +8,7 @@
 
 #include "saltus/dynamics/inverse_dynamics.h"
 #include "saltus/evaluation/flight_state.h"
+#include "saltus/evaluation/simulate.h"
 #include "saltus/motion/interpolate.h"
 #include "saltus/optim/option_table.h"
 
@@ -56,6 +57,27 @@ struct Solved {
   /// factorization of the Hessian: 3 % of M7's run per level).
   std::unique_ptr<MotionNlp> nlp;
 };
+
+/// The motion as optimized.motion.json holds it: its own take-off state, fitted to its evaluation
+/// (so `simulate` starts where it starts), and the keyframes' root targets as the optimiser met
+/// them (they came from the given take-off's parabola, which the file no longer holds).
+Motion with_own_flight_state(Motion optimized, const MotionEvaluation& evaluation) {
+  const FlightState own = fit_flight_state(evaluation.samples);
+  optimized.takeoff.com_position = own.com_position;
+  optimized.takeoff.com_velocity = own.com_velocity;
+  optimized.takeoff.angular_momentum = own.angular_momentum;
+  for (std::size_t i = 0; i < optimized.keyframes.size(); ++i)
+    optimized.keyframes[i].root_position = evaluation.root_targets[i];
+  return optimized;
+}
+
+/// OptimizationResult::landing_drift_deg of a solved motion (its stored spline), from an
+/// evaluation and a free flight on `samples` times.
+double landing_drift_deg(const Motion& optimized, const BodyModel& model, int samples) {
+  const EvaluateOptions grid = evaluate_options(samples, {});
+  const Motion own = with_own_flight_state(optimized, evaluate_motion(optimized, model, grid));
+  return simulate_motion(own, model, grid).landing_vs_motion_deg;
+}
 
 /// How far each keyframe time of `solved` may move before the average root force rises by
 /// kTimeSpreadForceRise (OptimizationResult::keyframe_time_spreads).
@@ -227,6 +249,7 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
   Solved best;
   std::vector<int> best_subdivisions;
   double best_force = 0.0;
+  std::optional<double> best_drift;  // OptimizationResult::landing_drift_deg, when measured
   bool have_best = false;
   int iterations = 0, restarts = 0;
   double seconds = 0.0;
@@ -278,7 +301,13 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
         force = check.metrics.avg_root_force;
       }
     }
-    result.levels.push_back({subdivisions, force, solved.solve.iterations, solved.solve.status});
+    // Only the automatic resolution decides by the drift in its levels (a free flight: ~50 ms).
+    const std::optional<double> drift =
+        automatic
+            ? std::optional<double>(landing_drift_deg(solved.optimized, model, options.nlp.samples))
+            : std::nullopt;
+    result.levels.push_back(
+        {subdivisions, force, drift.value_or(0.0), solved.solve.iterations, solved.solve.status});
     if (level == 0) result.optimizer_objective_before = solved.objective_before;
     const bool better = !have_best || (solved.solve.solved && !best.solve.solved) ||
                         (solved.solve.solved == best.solve.solved && force < best_force);
@@ -287,15 +316,21 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       best = std::move(solved);
       best_subdivisions = subdivisions;
       best_force = force;
+      best_drift = drift;
       have_best = true;
     }
-    if (!automatic || !best.solve.solved || force <= rules.target_force ||
+    const bool force_met = force <= rules.target_force;
+    if (!automatic || !best.solve.solved ||
+        (force_met && drift.value_or(0.0) <= rules.max_landing_drift_deg) ||
         level >= rules.max_refinements || (cancel && cancel->load()))
       break;
     if (level > 0 && !(force < (1.0 - rules.min_gain) * previous_force)) break;  // stopped paying
     if (!better) break;
     const std::vector<double> times = keyframe_times_of(best.optimized);
-    if (!refine(subdivisions, residual_per_interval(check, times), times, rules)) break;
+    // Below the force target but drifting: aim at half the force the level reached.
+    AutomaticResolution aim = rules;
+    if (force_met) aim.target_force = 0.5 * force;
+    if (!refine(subdivisions, residual_per_interval(check, times), times, aim)) break;
     // The finer level starts from this optimum, refitted onto the finer knots at its times.
     at_start = best.optimized;
     at_start.spline.reset();
@@ -324,15 +359,24 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
     iterations += polished.solve.iterations;
     restarts += polished.solve.restarts;
     seconds += polished.solve.seconds;
+    if (!best_drift) best_drift = landing_drift_deg(best.optimized, model, options.nlp.samples);
     JointLoadPolish& p = result.joint_load_polish.emplace();
     p.avg_root_force_before = best_force;
     p.avg_root_force_after =
         dense_check(model, polished.trajectory, options.nlp.samples).metrics.avg_root_force;
+    p.landing_drift_before_deg = *best_drift;
+    p.landing_drift_after_deg = landing_drift_deg(polished.optimized, model, options.nlp.samples);
     p.iterations = polished.solve.iterations;
     p.status = polished.solve.status;
-    p.kept = polished.solve.solved && (p.avg_root_force_after <= kPolishMaxRootForce ||
-                                       p.avg_root_force_after <= p.avg_root_force_before);
-    if (p.kept) best = std::move(polished);
+    p.kept = polished.solve.solved &&
+             (p.avg_root_force_after <= kPolishMaxRootForce ||
+              p.avg_root_force_after <= p.avg_root_force_before) &&
+             (p.landing_drift_after_deg <= rules.max_landing_drift_deg ||
+              p.landing_drift_after_deg <= p.landing_drift_before_deg);
+    if (p.kept) {
+      best = std::move(polished);
+      best_drift = p.landing_drift_after_deg;
+    }
   }
 
   result.solve = best.solve;
@@ -343,18 +387,9 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
   result.subdivisions = best_subdivisions;
   result.knots_per_interval = *std::max_element(best_subdivisions.begin(), best_subdivisions.end());
 
-  Motion optimized = best.optimized;
-  result.after = evaluate_motion(optimized, model, evaluate_options(options.nlp.samples, {}));
-  // The file describes the optimised motion: its own take-off state (so `simulate` starts where
-  // it starts), and the keyframes' root targets as the optimiser met them (they came from the
-  // given take-off's parabola, which the file no longer holds).
-  const FlightState own = fit_flight_state(result.after.samples);
-  optimized.takeoff.com_position = own.com_position;
-  optimized.takeoff.com_velocity = own.com_velocity;
-  optimized.takeoff.angular_momentum = own.angular_momentum;
-  for (std::size_t i = 0; i < optimized.keyframes.size(); ++i)
-    optimized.keyframes[i].root_position = result.after.root_targets[i];
-  result.optimized_motion = std::move(optimized);
+  result.after = evaluate_motion(best.optimized, model, evaluate_options(options.nlp.samples, {}));
+  result.optimized_motion = with_own_flight_state(best.optimized, result.after);
+  result.landing_drift_deg = best_drift;
   return result;
 }
 

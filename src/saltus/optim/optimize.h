@@ -49,8 +49,15 @@ struct AutomaticResolution {
   double turn_per_span = 1.6;  // 92°
   /// ... and no span is longer than this (s).
   double max_span = 0.26;
-  /// Stop once the true average root force (the dense check) is at most this (N)...
+  /// Stop once the true average root force (the dense check) is at most this (N) and the
+  /// motion's own free flight lands within max_landing_drift_deg of it...
   double target_force = 0.25;
+  /// ... degrees: the whole-body orientation at landing of the free flight from the optimised
+  /// motion's own take-off state with its joint movements, against the motion's (what
+  /// `saltus simulate optimized.motion.json` reports). A small absolute root force is not enough:
+  /// on a light athlete or a twisting skill 0.2-0.4 N turned into 34-83° (docs/optimizer.md,
+  /// "Landing drift").
+  double max_landing_drift_deg = 3.0;
   /// ... or a refinement cut it by less than this fraction (more knots stop paying).
   double min_gain = 0.3;
   /// A refinement splits each interval's spans by the factor its own mean squared wrench asks
@@ -102,10 +109,13 @@ inline constexpr double kPolishMaxRootForce = 0.5;
 
 /// Least joint effort (MotionNlpOptions::joint_load_weight > 0): a last solve at the keyframe
 /// times the levels found, with the joint loads in the objective; kept when it solved with an
-/// average root force within kPolishMaxRootForce, or no larger than before.
+/// average root force within kPolishMaxRootForce, or no larger than before, and its free flight
+/// lands within AutomaticResolution::max_landing_drift_deg of it, or no farther than before.
 struct JointLoadPolish {
-  double avg_root_force_before = 0.0;  ///< N, the best level's (dense check)
-  double avg_root_force_after = 0.0;   ///< N, the polished motion's
+  double avg_root_force_before = 0.0;     ///< N, the best level's (dense check)
+  double avg_root_force_after = 0.0;      ///< N, the polished motion's
+  double landing_drift_before_deg = 0.0;  ///< see OptimizationResult::landing_drift_deg
+  double landing_drift_after_deg = 0.0;
   int iterations = 0;
   std::string status;
   bool kept = false;
@@ -125,10 +135,16 @@ struct OptimizationResult {
   struct Level {
     std::vector<int> subdivisions;
     double avg_root_force = 0.0;
+    double landing_drift_deg = 0.0;
     int iterations = 0;
     std::string status;
   };
   std::vector<Level> levels;
+  /// Degrees between the optimised motion's whole-body orientation at landing and that of the
+  /// free flight from its own take-off state with its joint movements (simulate_motion's
+  /// landing_vs_motion_deg for optimized_motion); measured when the automatic resolution or
+  /// least joint effort decided by it.
+  std::optional<double> landing_drift_deg;
   /// Least joint effort's last solve, when there was one.
   std::optional<JointLoadPolish> joint_load_polish;
   MotionEvaluation before;  ///< the interpolated motion (the starting point)

@@ -59,17 +59,18 @@ auto fields(const ResultJson::ResidualCheck& c) {
   return std::tie(c.rule, c.points, c.halvings, c.converged, c.optimizer_agrees);
 }
 auto fields(const OptimizationResult::Level& l) {
-  return std::tie(l.subdivisions, l.avg_root_force, l.iterations, l.status);
+  return std::tie(l.subdivisions, l.avg_root_force, l.landing_drift_deg, l.iterations, l.status);
 }
 auto fields(const ResultJson::Optimization::Resolution& r) {
   std::vector<decltype(fields(r.levels.front()))> levels;
   for (const OptimizationResult::Level& l : r.levels)
     levels.push_back(fields(l));
-  std::optional<std::tuple<double, double, int, std::string, bool>> polish;
+  std::optional<std::tuple<double, double, double, double, int, std::string, bool>> polish;
   if (const auto& p = r.joint_load_polish)
-    polish = std::make_tuple(p->avg_root_force_before, p->avg_root_force_after, p->iterations,
+    polish = std::make_tuple(p->avg_root_force_before, p->avg_root_force_after,
+                             p->landing_drift_before_deg, p->landing_drift_after_deg, p->iterations,
                              p->status, p->kept);
-  return std::make_tuple(r.automatic, r.subdivisions, r.knots, levels, polish);
+  return std::make_tuple(r.automatic, r.subdivisions, r.knots, levels, polish, r.landing_drift_deg);
 }
 auto fields(const ResultJson::Optimization& o) {
   return std::make_tuple(
@@ -195,11 +196,13 @@ ResultJson random_result(ResultJson::Kind kind, std::mt19937& rng) {
       resolution.subdivisions.push_back(1 + static_cast<int>(rng() % 8));
     resolution.knots = times(count(rng) + 7);
     for (int level = 0; resolution.automatic && level < 1 + static_cast<int>(rng() % 3); ++level)
-      resolution.levels.push_back({resolution.subdivisions, positive(rng), count(rng),
-                                   rng() % 2 ? "solved" : "acceptable"});
+      resolution.levels.push_back({resolution.subdivisions, positive(rng), positive(rng),
+                                   count(rng), rng() % 2 ? "solved" : "acceptable"});
     if (rng() % 2)
       resolution.joint_load_polish =
-          JointLoadPolish{positive(rng), positive(rng), count(rng), "solved", rng() % 2 == 0};
+          JointLoadPolish{positive(rng), positive(rng), positive(rng), positive(rng),
+                          count(rng),    "solved",      rng() % 2 == 0};
+    if (rng() % 2) resolution.landing_drift_deg = positive(rng);
     o.resolution = resolution;
     r.optimization = o;
   }
