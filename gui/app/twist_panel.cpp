@@ -127,14 +127,15 @@ QString TwistPanel::subject() const {
   return subject_->text();
 }
 
-const TwistPanel::Result* TwistPanel::cached(const TwistSubject::Key& key) const {
+const TwistPanel::Result* TwistPanel::cached(const ShownMotion::Key& key) const {
   for (const Result& r : cache_)
     if (r.key == key) return &r;
   return nullptr;
 }
 
 void TwistPanel::refresh() {
-  const std::optional<TwistSubject> subject = twist_subject(context_.workspace());
+  const std::optional<ShownMotion> subject =
+      shown_motion_subject(context_.workspace(), SavedTrajectory::kReinterpolated);
   if (!subject) {
     wanted_.reset();
     subject_->clear();
@@ -153,7 +154,7 @@ void TwistPanel::refresh() {
   if (active_ && !running_) start(*subject);
 }
 
-void TwistPanel::start(const TwistSubject& subject) {
+void TwistPanel::start(const ShownMotion& subject) {
   if (thread_.joinable()) thread_.join();
   running_ = subject.key;
   thread_ = std::thread([this, subject] {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "app/app_context.h"
+#include "core/shown_motion.h"
 #include "core/twist_report.h"
 
 class QLabel;
@@ -54,17 +55,17 @@ class TwistPanel : public QWidget {
 
  private:
   struct Result {
-    TwistSubject::Key key;
+    ShownMotion::Key key;
     std::optional<TwistSources> sources;  ///< empty: the library threw `error`
     QString error;
   };
 
   void refresh();
-  void start(const TwistSubject& subject);
+  void start(const ShownMotion& subject);
   void on_finished(Result result, double seconds);
   void show_result(const Result& result);
   void show_message(const QString& text);
-  const Result* cached(const TwistSubject::Key& key) const;
+  const Result* cached(const ShownMotion::Key& key) const;
 
   AppContext& context_;
   QLabel* subject_ = nullptr;
@@ -76,8 +77,8 @@ class TwistPanel : public QWidget {
   ChartWidget* chart_ = nullptr;
 
   bool active_ = false;
-  std::optional<TwistSubject::Key> wanted_;  ///< the motion shown; none without one
-  std::optional<TwistSubject::Key> running_;
+  std::optional<ShownMotion::Key> wanted_;  ///< the motion shown; none without one
+  std::optional<ShownMotion::Key> running_;
   std::thread thread_;
   /// The last few results, newest last: B/A and picking runs show them again at once.
   std::vector<Result> cache_;

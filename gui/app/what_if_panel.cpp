@@ -195,7 +195,8 @@ QString WhatIfPanel::flight_label() const {
 }
 
 void WhatIfPanel::refresh() {
-  std::optional<WhatIfSubject> subject = what_if_subject(context_.workspace());
+  std::optional<ShownMotion> subject =
+      shown_motion_subject(context_.workspace(), SavedTrajectory::kFlown);
   if (subject && subject_now_ && subject->key == subject_now_->key) return;
   // Another motion (or none): nothing of the previous one stays on screen.
   subject_now_ = std::move(subject);
@@ -293,7 +294,7 @@ void WhatIfPanel::start() {
   // The motion is prepared once (its tuck, take-off and unchanged flight), then each change is
   // one flight; the prepared object is only read, so it can be shared with the worker.
   std::shared_ptr<const WhatIf> prepared = prepared_;
-  std::optional<WhatIfSubject> subject;
+  std::optional<ShownMotion> subject;
   if (!prepared) subject = *subject_now_;
   thread_ = std::thread([this, asked, prepared, subject] {
     auto done = std::make_shared<Done>();

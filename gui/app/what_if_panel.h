@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "app/app_context.h"
+#include "core/shown_motion.h"
 #include "core/what_if_report.h"
 
 class QLabel;
@@ -76,7 +77,7 @@ class WhatIfPanel : public QWidget {
 
  private:
   struct Request {
-    WhatIfSubject::Key key;
+    ShownMotion::Key key;
     WhatIfChange change;
   };
   struct Done {
@@ -113,9 +114,9 @@ class WhatIfPanel : public QWidget {
   QLabel* timing_ = nullptr;
 
   bool active_ = false;
-  std::optional<WhatIfSubject> subject_now_;  ///< the motion shown; none without one
-  std::shared_ptr<const WhatIf> prepared_;    ///< for subject_now_, once worked out
-  QString prepare_error_;                     ///< the library's message for subject_now_
+  std::optional<ShownMotion> subject_now_;  ///< the motion shown; none without one
+  std::shared_ptr<const WhatIf> prepared_;  ///< for subject_now_, once worked out
+  QString prepare_error_;                   ///< the library's message for subject_now_
   bool running_ = false;
   std::thread thread_;
   QElapsedTimer since_change_;  ///< since the newest change asked for

@@ -29,26 +29,6 @@ Rgb source_colour(const std::string& source) {
 
 }  // namespace
 
-std::optional<TwistSubject> twist_subject(const Workspace& workspace) {
-  if (!workspace.loaded()) return std::nullopt;
-  const Document& d = workspace.document();
-  TwistSubject s;
-  s.model = d.file().model;
-  s.options = d.evaluate_options();
-  s.key.generation = workspace.generation();
-  const std::optional<int> run = workspace.shown_run();
-  if (run && workspace.stage() == Stage::kAfter && d.has_optimization()) {
-    s.motion = d.optimization().optimized_motion;
-    s.description =
-        "the optimised motion of run " + std::to_string(workspace.runs().at(*run).number);
-    s.key.run = *run;
-  } else {
-    s.motion = d.file().motion;
-    s.description = "the interpolated keyframes";
-  }
-  return s;
-}
-
 std::string tilt_text(double degrees) {
   return signed_text("%.1f°", degrees, 0.1);
 }

@@ -1,43 +1,17 @@
 #pragma once
 /// @file
-/// What the Twist panel shows of the library's `twist_sources`: which motion it analyses (the one
-/// the 3D view shows), the rows of its table (each source's tilt and share, the interaction, the
-/// total) and the chart of tilt over time of the actual flight and of each counterfactual. The
-/// numbers are the library's; this file only picks, labels and formats them.
+/// What the Twist panel shows of the library's `twist_sources`: the rows of its table (each
+/// source's tilt and share, the interaction, the total) and the chart of tilt over time of the
+/// actual flight and of each counterfactual. Which motion it analyses is the one the 3D view shows
+/// (core/shown_motion.h). The numbers are the library's; this file only labels and formats them.
 
-#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/chart_spec.h"
-#include "core/workspace.h"
 #include "saltus/evaluation/twist_sources.h"
 
 namespace saltus::gui {
-
-/// The motion the Twist panel analyses: the interpolated keyframes, or with the "after" stage
-/// shown, the optimised motion of the run shown.
-struct TwistSubject {
-  Motion motion;
-  BodyModel model;
-  EvaluateOptions options;
-  /// "the interpolated keyframes" or "the optimised motion of run 2".
-  std::string description;
-  /// Which result this is: the workspace's generation (a new motion, model, edit or undo) and
-  /// the run analysed (-1: the interpolated keyframes). Equal keys, same motion and model.
-  struct Key {
-    int generation = -1;
-    int run = -1;
-    bool operator==(const Key& other) const {
-      return generation == other.generation && run == other.run;
-    }
-    bool operator!=(const Key& other) const { return !(*this == other); }
-  };
-  Key key;
-};
-
-/// The subject for the workspace as it is; nullopt without a motion.
-std::optional<TwistSubject> twist_subject(const Workspace& workspace);
 
 /// One row of the table.
 struct TwistRow {

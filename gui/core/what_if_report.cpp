@@ -20,27 +20,6 @@ int steps_of(double seconds, bool up) {
 
 }  // namespace
 
-std::optional<WhatIfSubject> what_if_subject(const Workspace& workspace) {
-  if (!workspace.loaded()) return std::nullopt;
-  const Document& d = workspace.document();
-  WhatIfSubject s;
-  s.model = d.file().model;
-  s.options = d.evaluate_options();
-  s.key.generation = workspace.generation();
-  const std::optional<int> run = workspace.shown_run();
-  if (run && workspace.stage() == Stage::kAfter && d.has_optimization()) {
-    s.motion = d.optimization().optimized_motion;
-    s.description =
-        "the optimised motion of run " + std::to_string(workspace.runs().at(*run).number);
-    s.key.run = *run;
-  } else {
-    s.motion = d.file().motion;
-    s.description =
-        s.motion.spline ? "the optimised trajectory, as saved" : "the interpolated keyframes";
-  }
-  return s;
-}
-
 SliderSteps shift_slider_steps(double min_s, double max_s) {
   SliderSteps out;
   out.min = std::min(0, steps_of(min_s, true));

@@ -1,44 +1,17 @@
 #pragma once
 /// @file
-/// What the What if panel shows of the library's `what_if`: which motion it flies (the one the
-/// 3D view shows), its sliders' steps and words, the tuck the library found, how the flight
-/// lands against the motion as keyframed, and the what-if flight at any time for the figure drawn
-/// beside the athlete. The numbers are the library's; this file only picks, steps and words
-/// them.
+/// What the What if panel shows of the library's `what_if`: its sliders' steps and words, the
+/// tuck the library found, how the flight lands against the motion as keyframed, and the what-if
+/// flight at any time for the figure drawn beside the athlete. Which motion it flies is the one
+/// the 3D view shows (core/shown_motion.h). The numbers are the library's; this file only steps
+/// and words them.
 
-#include <optional>
 #include <string>
 #include <vector>
 
-#include "core/workspace.h"
 #include "saltus/evaluation/what_if.h"
 
 namespace saltus::gui {
-
-/// The motion the What if panel flies: the interpolated keyframes (or a saved optimised
-/// trajectory, as saved), or with the "after" stage shown, the optimised motion of the run shown.
-struct WhatIfSubject {
-  Motion motion;
-  BodyModel model;
-  EvaluateOptions options;
-  /// "the interpolated keyframes", "the optimised trajectory, as saved", "the optimised motion
-  /// of run 2".
-  std::string description;
-  /// Which motion this is: the workspace's generation (a new motion, model, edit or undo) and the
-  /// run flown (-1: the motion itself). Equal keys, same motion and model.
-  struct Key {
-    int generation = -1;
-    int run = -1;
-    bool operator==(const Key& other) const {
-      return generation == other.generation && run == other.run;
-    }
-    bool operator!=(const Key& other) const { return !(*this == other); }
-  };
-  Key key;
-};
-
-/// The subject for the workspace as it is; nullopt without a motion.
-std::optional<WhatIfSubject> what_if_subject(const Workspace& workspace);
 
 /// The sliders move the tuck and the opening in steps of this, s, and the tightness in steps of
 /// 1 %.

@@ -15,6 +15,8 @@
 #include <cmath>
 #include <filesystem>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "support/cli_runner.h"
 
@@ -57,6 +59,12 @@ TEST(ExportHtml, WritesOnePageAndNeverOverAnotherFile) {
       << "nothing else written, no temporary left";
 }
 
+/// Fails the test (not skips it) when Chromium is missing.
+void require_chromium() {
+  ASSERT_EQ(run_command("command -v chromium").status, 0)
+      << "chromium is needed for this test: tools/bootstrap.sh test installs it";
+}
+
 /// Chromium headless with software WebGL (SwiftShader through ANGLE), its profile in `profile`.
 std::string chromium_command(const std::string& profile) {
   return "timeout 60 chromium --headless --no-sandbox --disable-gpu --use-angle=swiftshader "
@@ -93,6 +101,36 @@ nlohmann::json selftest_findings(const std::string& page, const std::string& pro
   const std::size_t end = run.output.find("</pre>", start);
   return nlohmann::json::parse(
       unescape_html(run.output.substr(start + open.size(), end - start - open.size())));
+}
+
+/// Fails the test (not skips it) when Firefox or the script's websocket module is missing.
+void require_firefox() {
+  ASSERT_EQ(run_command("command -v firefox-esr").status, 0)
+      << "firefox-esr is needed for this test: tools/bootstrap.sh test installs it";
+  ASSERT_EQ(run_command("command -v Xvfb").status, 0)
+      << "Xvfb is needed for this test: tools/bootstrap.sh test installs it (xvfb)";
+  ASSERT_EQ(run_command("/usr/bin/python3 -c 'import websocket'").status, 0)
+      << "python3-websocket is needed for this test: tools/bootstrap.sh test installs it";
+}
+
+/// What tests/support/firefox_page.py read from `page` in Firefox: {"selftest": the page's
+/// findings (with `--selftest`), "browser_errors": the JavaScript errors Firefox logged}. Debian's
+/// python3 by its path: the websocket module is Debian's, which another python3 may not see.
+nlohmann::json firefox_page(const std::string& page, const std::string& options) {
+  const std::string script =
+      (fs::path(SALTUS_TEST_DATA_DIR).parent_path() / "support/firefox_page.py").string();
+  const CliRun run =
+      run_command("timeout -k 10 120 /usr/bin/python3 " + script + " '" + page + "' " + options);
+  EXPECT_EQ(run.status, 0) << run.output;
+  // The findings are the one line of JSON; the script's messages start with its name.
+  std::istringstream lines(run.output);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.empty() || line.front() != '{') continue;
+    nlohmann::json out = nlohmann::json::parse(line, nullptr, false);
+    if (out.is_object()) return out;
+  }
+  ADD_FAILURE() << "no findings from Firefox: " << run.output;
+  return nlohmann::json::object();
 }
 
 /// The optimised M7 in `dir`/m7 and its page `dir`/m7.html.
@@ -159,28 +197,76 @@ fs::path pictures_dir() {
   return pictures;
 }
 
+enum class PageBrowser { kChromium, kFirefox };
+
+/// A viewport a page is pictured in.
+struct PageViewport {
+  std::string name;  ///< "laptop", in the picture's file name
+  int width = 0;
+  int height = 0;
+  /// "1280,720" (Chromium's --window-size) or "1280x720" (firefox_page.py's).
+  std::string size(char between) const {
+    return std::to_string(width) + between + std::to_string(height);
+  }
+};
+const PageViewport kLaptopView{"laptop", 1280, 720};
+const PageViewport kPhoneView{"phone", 390, 844};
+
+/// Pictures to look at of `page` at time `t` in `browser`, one a viewport, left in pictures_dir()
+/// as <prefix><viewport>.png (Firefox's as firefox-<prefix><viewport>.png), each checked to be
+/// there and not blank. Chromium takes each in a run of its own (its profile in `dir`); Firefox
+/// takes them all in one window, which first runs the page's self-test in each viewport: its
+/// findings (firefox_page) are returned. Chromium's self-test is read by selftest_findings.
+nlohmann::json take_pictures(PageBrowser browser, const TempDir& dir, const std::string& page,
+                             double t, const std::string& prefix,
+                             const std::vector<PageViewport>& viewports) {
+  const bool firefox = browser == PageBrowser::kFirefox;
+  std::vector<fs::path> pngs;
+  for (const PageViewport& v : viewports) {
+    pngs.push_back(pictures_dir() / ((firefox ? "firefox-" : "") + prefix + v.name + ".png"));
+    fs::remove(pngs.back());
+  }
+  nlohmann::json out = nlohmann::json::object();
+  std::string output;
+  if (firefox) {
+    std::string options;
+    for (const PageViewport& v : viewports)
+      options += "--selftest " + v.size('x') + " ";
+    options += "--at " + std::to_string(t);
+    for (std::size_t i = 0; i < viewports.size(); ++i)
+      options += " --shot " + viewports[i].size('x') + ":" + pngs[i].string();
+    out = firefox_page(page, options);
+  } else {
+    for (std::size_t i = 0; i < viewports.size(); ++i) {
+      const CliRun run =
+          run_command(chromium_command(dir / "profile") +
+                      " --virtual-time-budget=5000 --window-size=" + viewports[i].size(',') +
+                      " --screenshot=" + pngs[i].string() + " 'file://" + page +
+                      "#t=" + std::to_string(t) + "'");
+      EXPECT_EQ(run.status, 0) << run.output;
+      output += run.output;
+    }
+  }
+  for (const fs::path& png : pngs) {
+    if (!fs::exists(png)) {
+      ADD_FAILURE() << png << " was not written" << (output.empty() ? "" : ": " + output);
+      continue;
+    }
+    EXPECT_GT(fs::file_size(png), 20000u) << png << ": a blank page compresses to less";
+  }
+  return out;
+}
+
 TEST(ExportHtmlBrowser, TheOptimisedM7PageRunsOfflineAndShowsTheResult) {
-  ASSERT_EQ(run_command("command -v chromium").status, 0)
-      << "chromium is needed for this test: tools/bootstrap.sh test installs it";
+  ASSERT_NO_FATAL_FAILURE(require_chromium());
   TempDir dir;
   ASSERT_NO_FATAL_FAILURE(make_m7_page(dir));
   const std::string page = dir / "m7.html";
   expect_m7_findings(selftest_findings(page, dir / "profile"), dir);
 
   // Pictures to look at, laptop and phone sized, at 40 % of the flight.
-  const fs::path pictures = pictures_dir();
   const double t = 0.4 * read_json(dir / "m7/result.json")["flight_time_s"].get<double>();
-  for (const auto& [name, size] :
-       {std::pair<std::string, std::string>{"laptop", "1280,720"}, {"phone", "390,844"}}) {
-    const fs::path png = pictures / (name + ".png");
-    fs::remove(png);
-    CliRun run = run_command(chromium_command(dir / "profile") + " --virtual-time-budget=5000 " +
-                             "--window-size=" + size + " --screenshot=" + png.string() +
-                             " 'file://" + page + "#t=" + std::to_string(t) + "'");
-    ASSERT_EQ(run.status, 0) << run.output;
-    ASSERT_TRUE(fs::exists(png)) << run.output;
-    EXPECT_GT(fs::file_size(png), 20000u) << png << ": a blank page compresses to less";
-  }
+  take_pictures(PageBrowser::kChromium, dir, page, t, "", {kLaptopView, kPhoneView});
 }
 
 /// The imported backflip capture in `dir`/bf and its page `dir`/bf.html.
@@ -221,8 +307,7 @@ double capture_picture_time(const TempDir& dir) {
 }
 
 TEST(ExportHtmlBrowser, AnImportedCaptureIsDrawnBesideTheAthlete) {
-  ASSERT_EQ(run_command("command -v chromium").status, 0)
-      << "chromium is needed for this test: tools/bootstrap.sh test installs it";
+  ASSERT_NO_FATAL_FAILURE(require_chromium());
   TempDir dir;
   ASSERT_NO_FATAL_FAILURE(make_capture_page(dir));
   const std::string page = dir / "bf.html";
@@ -234,47 +319,11 @@ TEST(ExportHtmlBrowser, AnImportedCaptureIsDrawnBesideTheAthlete) {
   expect_capture_findings(selftest_findings(page, dir / "profile"), dir);
 
   // A picture to look at, laptop sized, at 40 % of the flight.
-  const fs::path png = pictures_dir() / "capture-laptop.png";
-  fs::remove(png);
-  run = run_command(
-      chromium_command(dir / "profile") +
-      " --virtual-time-budget=5000 --window-size=1280,720 --screenshot=" + png.string() +
-      " 'file://" + page + "#t=" + std::to_string(capture_picture_time(dir)) + "'");
-  ASSERT_EQ(run.status, 0) << run.output;
-  EXPECT_GT(fs::file_size(png), 20000u) << png << ": a blank page compresses to less";
+  take_pictures(PageBrowser::kChromium, dir, page, capture_picture_time(dir), "capture-",
+                {kLaptopView});
 }
 
 // ---------- Firefox ----------
-
-/// Fails the test (not skips it) when Firefox or the script's websocket module is missing.
-void require_firefox() {
-  ASSERT_EQ(run_command("command -v firefox-esr").status, 0)
-      << "firefox-esr is needed for this test: tools/bootstrap.sh test installs it";
-  ASSERT_EQ(run_command("command -v Xvfb").status, 0)
-      << "Xvfb is needed for this test: tools/bootstrap.sh test installs it (xvfb)";
-  ASSERT_EQ(run_command("/usr/bin/python3 -c 'import websocket'").status, 0)
-      << "python3-websocket is needed for this test: tools/bootstrap.sh test installs it";
-}
-
-/// What tests/support/firefox_page.py read from `page` in Firefox: {"selftest": the page's
-/// findings (with `--selftest`), "browser_errors": the JavaScript errors Firefox logged}. Debian's
-/// python3 by its path: the websocket module is Debian's, which another python3 may not see.
-nlohmann::json firefox_page(const std::string& page, const std::string& options) {
-  const std::string script =
-      (fs::path(SALTUS_TEST_DATA_DIR).parent_path() / "support/firefox_page.py").string();
-  const CliRun run =
-      run_command("timeout -k 10 120 /usr/bin/python3 " + script + " '" + page + "' " + options);
-  EXPECT_EQ(run.status, 0) << run.output;
-  // The findings are the one line of JSON; the script's messages start with its name.
-  std::istringstream lines(run.output);
-  for (std::string line; std::getline(lines, line);) {
-    if (line.empty() || line.front() != '{') continue;
-    nlohmann::json out = nlohmann::json::parse(line, nullptr, false);
-    if (out.is_object()) return out;
-  }
-  ADD_FAILURE() << "no findings from Firefox: " << run.output;
-  return nlohmann::json::object();
-}
 
 TEST(ExportHtmlFirefox, TheOptimisedM7PageRunsOfflineAndShowsTheResult) {
   ASSERT_NO_FATAL_FAILURE(require_firefox());
@@ -282,41 +331,26 @@ TEST(ExportHtmlFirefox, TheOptimisedM7PageRunsOfflineAndShowsTheResult) {
   ASSERT_NO_FATAL_FAILURE(make_m7_page(dir));
   // The self-test in a laptop's and a phone's viewport, then pictures to look at in the same two,
   // at 40 % of the flight.
-  const fs::path laptop = pictures_dir() / "firefox-laptop.png";
-  const fs::path phone = pictures_dir() / "firefox-phone.png";
-  fs::remove(laptop);
-  fs::remove(phone);
   const double t = 0.4 * read_json(dir / "m7/result.json")["flight_time_s"].get<double>();
   const nlohmann::json out =
-      firefox_page(dir / "m7.html", "--selftest 1280x720 --selftest 390x844 --at " +
-                                        std::to_string(t) + " --shot 1280x720:" + laptop.string() +
-                                        " --shot 390x844:" + phone.string());
+      take_pictures(PageBrowser::kFirefox, dir, dir / "m7.html", t, "", {kLaptopView, kPhoneView});
   for (const char* size : {"1280x720", "390x844"}) {
     SCOPED_TRACE(size);
     ASSERT_TRUE(out.contains("selftest") && out["selftest"].contains(size)) << out.dump();
     expect_m7_findings(out["selftest"][size], dir);
   }
   EXPECT_EQ(out["browser_errors"], nlohmann::json::array()) << "JavaScript errors Firefox logged";
-  for (const fs::path& png : {laptop, phone}) {
-    ASSERT_TRUE(fs::exists(png)) << png;
-    EXPECT_GT(fs::file_size(png), 20000u) << png << ": a blank page compresses to less";
-  }
 }
 
 TEST(ExportHtmlFirefox, AnImportedCaptureIsDrawnBesideTheAthlete) {
   ASSERT_NO_FATAL_FAILURE(require_firefox());
   TempDir dir;
   ASSERT_NO_FATAL_FAILURE(make_capture_page(dir));
-  const fs::path png = pictures_dir() / "firefox-capture-laptop.png";
-  fs::remove(png);
-  const nlohmann::json out = firefox_page(
-      dir / "bf.html", "--selftest 1280x720 --at " + std::to_string(capture_picture_time(dir)) +
-                           " --shot 1280x720:" + png.string());
+  const nlohmann::json out = take_pictures(PageBrowser::kFirefox, dir, dir / "bf.html",
+                                           capture_picture_time(dir), "capture-", {kLaptopView});
   ASSERT_TRUE(out.contains("selftest") && out["selftest"].contains("1280x720")) << out.dump();
   expect_capture_findings(out["selftest"]["1280x720"], dir);
   EXPECT_EQ(out["browser_errors"], nlohmann::json::array()) << "JavaScript errors Firefox logged";
-  ASSERT_TRUE(fs::exists(png)) << png;
-  EXPECT_GT(fs::file_size(png), 20000u) << png << ": a blank page compresses to less";
 }
 
 }  // namespace

@@ -28,6 +28,7 @@
 #include "app/scene_widget.h"
 #include "core/capture_keyframes.h"
 #include "gui/support/image_checks.h"
+#include "gui/support/open_motion_fixture.h"
 #include "gui_core/test_motion.h"
 #include "saltus/evaluation/force_metrics.h"
 #include "saltus/evaluation/residual_measures.h"
@@ -50,18 +51,8 @@ const QString& capture_path() {
   return path;
 }
 
-class CaptureTest : public ::testing::Test {
+class CaptureTest : public test::EmptyWindowTest {
  protected:
-  void SetUp() override {
-    window_ = std::make_unique<MainWindow>(false);
-    window_->resize(1280, 800);
-    window_->show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(window_.get()));
-  }
-  void TearDown() override {
-    window_->close();
-    window_.reset();
-  }
   void import() {
     QString error;
     ASSERT_TRUE(window_->open_motion(capture_path(), &error)) << error.toStdString();
@@ -81,8 +72,6 @@ class CaptureTest : public ::testing::Test {
           if (a->text().remove('&').startsWith(text)) return a;
     return nullptr;
   }
-
-  std::unique_ptr<MainWindow> window_;
 };
 
 TEST_F(CaptureTest, FileMenuImportsACaptureAndThePanelSaysWhatItFound) {

@@ -15,6 +15,7 @@
 #include "app/plots_panel.h"
 #include "app/run_controller.h"
 #include "app/teaching_panel.h"
+#include "gui/support/open_motion_fixture.h"
 #include "saltus/evaluation/flight_checks.h"
 
 namespace saltus::gui {
@@ -24,18 +25,8 @@ QString motion(const std::string& name) {
   return QString(SALTUS_EXAMPLES_DIR) + "/motions/" + QString::fromStdString(name);
 }
 
-class TeachingPanelTest : public ::testing::Test {
+class TeachingPanelTest : public test::EmptyWindowTest {
  protected:
-  void SetUp() override {
-    window_ = std::make_unique<MainWindow>(false);
-    window_->resize(1280, 800);
-    window_->show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(window_.get()));
-  }
-  void TearDown() override {
-    window_->close();
-    window_.reset();
-  }
   QString text() const { return window_->plots().teaching()->text(); }
   /// The panel's marks and sentence agree with the library's verdict on the stage shown.
   void expect_marks(Stage stage) {
@@ -45,8 +36,6 @@ class TeachingPanelTest : public ::testing::Test {
     EXPECT_EQ(shown.count(QStringLiteral("✓")), 3 - verdict.failed()) << shown.toStdString();
     EXPECT_EQ(shown.contains("All three hold"), verdict.failed() == 0) << shown.toStdString();
   }
-
-  std::unique_ptr<MainWindow> window_;
 };
 
 TEST_F(TeachingPanelTest, TheChecksSayWhatHoldsForTheMotionShown) {

@@ -8,7 +8,6 @@
 
 #include <cmath>
 
-#include "core/workspace.h"
 #include "saltus/formats/motion_file.h"
 
 namespace saltus::gui {
@@ -168,22 +167,6 @@ TEST(TwistReport, TheStraightBackSomersaultHasNothingToShare) {
   EXPECT_FALSE(r.tilted);
   EXPECT_TRUE(r.rows.empty());
   EXPECT_NE(r.sentence.find("nothing to twist with"), std::string::npos) << r.sentence;
-}
-
-TEST(TwistSubject, TheInterpolatedKeyframesUntilARunIsShown) {
-  Workspace ws;
-  EXPECT_FALSE(twist_subject(ws));
-  ws.open(motion_path("M1-straight-back-somersault.motion.json"), "", 41);
-  const std::optional<TwistSubject> s = twist_subject(ws);
-  ASSERT_TRUE(s);
-  EXPECT_EQ(s->description, "the interpolated keyframes");
-  EXPECT_EQ(s->key.run, -1);
-  EXPECT_EQ(s->options.samples, 41);
-  EXPECT_EQ(s->motion.keyframes.size(), ws.document().file().motion.keyframes.size());
-  // Another motion (or an edit) is another subject, even with the same run.
-  const TwistSubject::Key first = s->key;
-  ws.open(motion_path("M1-straight-back-somersault.motion.json"), "", 41);
-  EXPECT_NE(twist_subject(ws)->key, first);
 }
 
 }  // namespace
