@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "saltus/base/constants.h"
 #include "saltus/base/input_error.h"
@@ -149,15 +150,11 @@ void check_capture_readable(const CaptureFile& capture, const BvhSourceLines& li
   require_finite(capture.import.samples, capture.path, "trajectory.csv");
 }
 
-}  // namespace
-
-CaptureFile import_capture_file(const std::string& path, const CaptureFileOptions& options) {
-  CaptureFile capture;
-  capture.path = path;
-  capture.model_reference = options.model.empty() ? kDefaultCaptureModel : options.model;
-  capture.model = load_body_model(resolve_model(capture.model_reference, path));
-  BvhSourceLines lines;
-  capture.clip = load_bvh_file(path, &lines);
+/// import_capture_file and import_capture_text after reading: `capture` holds the path, the
+/// model and the clip read from the BVH text (`lines` where its fields were).
+CaptureFile import_read_capture(CaptureFile capture, const BvhSourceLines& lines,
+                                const CaptureFileOptions& options) {
+  const std::string& path = capture.path;
   check_frame_time(options.import.frame_time, capture.clip.frame_time, path, lines);
   SkeletonMapping mapping;
   SkeletonMapping given;
@@ -194,6 +191,29 @@ CaptureFile import_capture_file(const std::string& path, const CaptureFileOption
   }
   check_capture_readable(capture, lines, options.import.frame_time.has_value());
   return capture;
+}
+
+}  // namespace
+
+CaptureFile import_capture_file(const std::string& path, const CaptureFileOptions& options) {
+  CaptureFile capture;
+  capture.path = path;
+  capture.model_reference = options.model.empty() ? kDefaultCaptureModel : options.model;
+  capture.model = load_body_model(resolve_model(capture.model_reference, path));
+  BvhSourceLines lines;
+  capture.clip = load_bvh_file(path, &lines);
+  return import_read_capture(std::move(capture), lines, options);
+}
+
+CaptureFile import_capture_text(const std::string& text, const std::string& path,
+                                const BodyModel& model, const CaptureFileOptions& options) {
+  CaptureFile capture;
+  capture.path = path;
+  capture.model_reference = options.model.empty() ? kDefaultCaptureModel : options.model;
+  capture.model = model;
+  BvhSourceLines lines;
+  capture.clip = parse_bvh(text, path, &lines);
+  return import_read_capture(std::move(capture), lines, options);
 }
 
 nlohmann::json captured_motion_json(const CaptureFile& capture, const std::string& model_field) {

@@ -35,6 +35,13 @@ struct CaptureFile {
 /// mapping file).
 CaptureFile import_capture_file(const std::string& path, const CaptureFileOptions& options = {});
 
+/// import_capture_file's step after reading the files: `text`, a BVH capture's contents, imported
+/// onto `model` with the same checks (messages name `path`, which also names the motion).
+/// `options.model` only names the model in the outputs ("" = kDefaultCaptureModel); a mapping
+/// file (`options.mapping`) is still read from disk.
+CaptureFile import_capture_text(const std::string& text, const std::string& path,
+                                const BodyModel& model, const CaptureFileOptions& options = {});
+
 /// result.json of an import ("format": "saltus-result/1", "status": "imported").
 nlohmann::json capture_result_json(const CaptureFile& capture);
 

@@ -1,7 +1,8 @@
 // Captures in and out (use_cases/captures.h): a motion exported as BVH and imported again
 // gives back its joint rotations frame by frame (Saltus's own skeleton keeps its heading), the
 // import's folder holds the five files and its motion files load; which paths are captures, the
-// export's default rate, and a folder with nothing to export.
+// export's default rate, and a folder with nothing to export; a capture's text imports as its file
+// does.
 
 #include "saltus/use_cases/captures.h"
 
@@ -56,6 +57,28 @@ TEST(CaptureFiles, ExportThenImportGivesTheMotionBack) {
   EXPECT_EQ(load_export_source(folder.string()).motion.keyframes.size(), captured.keyframes.size());
   EXPECT_EQ(load_motion_or_capture(bvh.string()).motion.keyframes.size(),
             capture.import.keyframes.keyframes.size());
+}
+
+TEST(CaptureFiles, TheTextImportsAsTheFileDoes) {
+  MotionFile source;
+  source.model = test::bundled_model();
+  source.motion = test::tuck_motion(source.model);
+  const fs::path bvh = test::temp_path("tuck-text.bvh");
+  const MocapClip written = export_motion_bvh(source, bvh.string(), 30.0);
+  const CaptureFile from_file = import_capture_file(bvh.string());
+  const CaptureFile from_text =
+      import_capture_text(bvh_text(written), bvh.string(), test::bundled_model());
+  EXPECT_EQ(from_text.model_reference, kDefaultCaptureModel);
+  EXPECT_EQ(captured_motion_json(from_text, "model.json"),
+            captured_motion_json(from_file, "model.json"));
+  EXPECT_EQ(keyframes_motion_json(from_text, "model.json"),
+            keyframes_motion_json(from_file, "model.json"));
+  try {
+    import_capture_text("HIERARCHY\nROOT hips\n", "bad.bvh", test::bundled_model());
+    FAIL() << "a truncated capture";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "bad.bvh");
+  }
 }
 
 TEST(CaptureFiles, CapturePathsAndTheDefaultRate) {
