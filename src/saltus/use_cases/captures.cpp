@@ -409,10 +409,11 @@ double default_export_fps(const Motion& motion) {
   return 60.0;
 }
 
-MocapClip export_motion_bvh(const MotionFile& motion, const std::string& out_path, double fps) {
+MocapClip export_motion_clip(const MotionFile& motion, double fps) {
   // What Saltus writes it reads back: no more frames than the BVH reader takes (--fps 1e6 wrote
-  // 836 MB using 3.6 GB; 1e9 ended in bad_alloc).
-  const double frames = std::floor(motion.motion.flight_time() * fps) + 1.0;
+  // 836 MB using 3.6 GB; 1e9 ended in bad_alloc), counted as motion_clip counts them (rounded:
+  // a count floored here let 100001 frames through).
+  const double frames = motion_clip_frame_count(motion.motion.flight_time(), fps);
   if (!(fps > 0) || !(frames <= kMaxBvhFrames))
     throw InputError("--fps", "",
                      message_number(fps) + " frames per second over " +
@@ -420,7 +421,11 @@ MocapClip export_motion_bvh(const MotionFile& motion, const std::string& out_pat
                          std::to_string(kMaxBvhFrames) +
                          " frames, the most a BVH file Saltus reads may hold");
   const Trajectory<double> trajectory = motion_trajectory(motion.motion, motion.model);
-  const MocapClip clip = motion_clip(motion.model, trajectory, fps);
+  return motion_clip(motion.model, trajectory, fps);
+}
+
+MocapClip export_motion_bvh(const MotionFile& motion, const std::string& out_path, double fps) {
+  const MocapClip clip = export_motion_clip(motion, fps);
   save_bvh_file(out_path, clip);
   return clip;
 }

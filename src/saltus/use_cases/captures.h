@@ -69,6 +69,11 @@ MotionFile load_export_source(const std::string& path);
 /// captured flight exports its frames), else 60 frames per second.
 double default_export_fps(const Motion& motion);
 
+/// The clip export_motion_bvh writes: the motion's trajectory on the model's skeleton at about
+/// `fps` frames per second (motion_clip). InputError naming --fps when fps <= 0 or the clip
+/// would have more frames than kMaxBvhFrames (the BVH reader would refuse the file).
+MocapClip export_motion_clip(const MotionFile& motion, double fps);
+
 /// Writes the motion's trajectory as a BVH file on the model's skeleton (capture/model_clip.h),
 /// atomically. Returns the clip written.
 MocapClip export_motion_bvh(const MotionFile& motion, const std::string& out_path, double fps);

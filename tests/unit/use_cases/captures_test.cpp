@@ -2,15 +2,17 @@
 // gives back its joint rotations frame by frame (Saltus's own skeleton keeps its heading), the
 // import's folder holds the five files and its motion files load; which paths are captures, the
 // export's default rate, and a folder with nothing to export; a capture's text imports as its file
-// does.
+// does; an export's frame count is the BVH reader's limit at most.
 
 #include "saltus/use_cases/captures.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 
 #include "saltus/base/input_error.h"
+#include "saltus/capture/model_clip.h"
 #include "saltus/formats/bvh_file.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/math/quaternion.h"
@@ -79,6 +81,22 @@ TEST(CaptureFiles, TheTextImportsAsTheFileDoes) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.file(), "bad.bvh");
   }
+}
+
+TEST(CaptureFiles, AnExportHasNoMoreFramesThanTheBvhReaderTakes) {
+  MotionFile source;
+  source.model = test::bundled_model();
+  source.motion = test::tuck_motion(source.model);
+  const double flight_time = source.motion.flight_time();
+  const MocapClip clip = export_motion_clip(source, 30.0);
+  EXPECT_EQ(clip.frame_count(), motion_clip_frame_count(flight_time, 30.0));
+  // T·fps = kMaxBvhFrames − 0.4: kMaxBvhFrames + 1 frames once rounded (a floored count let
+  // them through, into a file the reader refuses).
+  const double fps = (kMaxBvhFrames - 0.4) / flight_time;
+  ASSERT_EQ(motion_clip_frame_count(flight_time, fps), kMaxBvhFrames + 1.0);
+  EXPECT_THROW(export_motion_clip(source, fps), InputError);
+  EXPECT_THROW(export_motion_clip(source, 0.0), InputError);
+  EXPECT_THROW(export_motion_clip(source, std::nan("")), InputError);
 }
 
 TEST(CaptureFiles, CapturePathsAndTheDefaultRate) {
