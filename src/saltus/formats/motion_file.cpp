@@ -214,7 +214,8 @@ std::vector<Keyframe> parse_keyframes(const JsonNode& node, const BodyModel& mod
           "keyframe " + std::to_string(i) + " time " + message_number(keyframe.time) +
           " is not after keyframe " + std::to_string(i - 1) + " time " +
           message_number(keyframes.back().time) + " (times must strictly increase)");
-    } else if (!(keyframe.time - keyframes.back().time >= plausible::kMinKeyframeGap)) {
+    } else if (!(keyframe.time - keyframes.back().time >=
+                 plausible::kMinKeyframeGap * (1.0 - plausible::kGapRoundingSlack))) {
       item.at("time").fail("keyframe " + std::to_string(i) + " is only " +
                            message_number(keyframe.time - keyframes.back().time) +
                            " s after keyframe " + std::to_string(i - 1) +
@@ -256,7 +257,7 @@ void check_stored_knots(const JsonNode& knots, const std::vector<double>& k, dou
                            message_number(k[n + i]));
   }
   for (std::size_t i = 4; i <= n; ++i) {
-    if (!(k[i] - k[i - 1] >= plausible::kMinKnotGap))
+    if (!(k[i] - k[i - 1] >= plausible::kMinKnotGap * (1.0 - plausible::kGapRoundingSlack)))
       knots.at(i).fail("knot " + message_number(k[i]) + " is only " +
                        message_number(k[i] - k[i - 1]) + " s after the previous one " +
                        message_number(k[i - 1]) + "; interior knots must increase by at least " +

@@ -47,6 +47,10 @@ inline constexpr double kMinKeyframeGap = 1e-3;
 /// s: the shortest gap between interior knots of a stored spline (K = 50 sub-intervals of the
 /// shortest keyframe gap).
 inline constexpr double kMinKnotGap = kMinKeyframeGap / 50;
+/// Relative slack of the two gap checks above for rounding: a 1 kHz capture's frame times are
+/// k·0.001, and 10·0.001 − 9·0.001 = 0.000999…9 s; an optimised spline's knots are such gaps
+/// divided by 50. Without it a capture at the shortest frame time below was refused.
+inline constexpr double kGapRoundingSlack = 1e-9;
 /// s per frame of a capture (its "Frame Time", or `import --frame-time`): every captured flight
 /// frame becomes a keyframe, so the shortest is the keyframe gap (1 kHz); the longest, 1 s,
 /// is far slower than any capture (24-1000 Hz), which 100 or 3600 (minutes per frame) are not.

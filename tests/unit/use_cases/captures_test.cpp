@@ -2,7 +2,7 @@
 // gives back its joint rotations frame by frame (Saltus's own skeleton keeps its heading), the
 // import's folder holds the five files and its motion files load; which paths are captures, the
 // export's default rate, and a folder with nothing to export; a capture's text imports as its file
-// does; an export's frame count is the BVH reader's limit at most.
+// does, also at 1 ms per frame; an export's frame count is the BVH reader's limit at most.
 
 #include "saltus/use_cases/captures.h"
 
@@ -81,6 +81,20 @@ TEST(CaptureFiles, TheTextImportsAsTheFileDoes) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.file(), "bad.bvh");
   }
+}
+
+TEST(CaptureFiles, ACaptureAtTheShortestFrameTimeImports) {
+  // 1 ms per frame, the shortest accepted: the keyframes are k·0.001 s, and 10·0.001 − 9·0.001
+  // falls short of 0.001 by a rounding (the motion reader refused the import's own motion).
+  MotionFile source;
+  source.model = test::bundled_model();
+  source.motion = test::tuck_motion(source.model);
+  MocapClip clip = export_motion_clip(source, 1000.0);
+  clip.frames.resize(41);
+  clip.frame_time = 0.001;
+  const CaptureFile capture = import_capture_text(bvh_text(clip), "khz.bvh", source.model);
+  ASSERT_EQ(capture.import.captured.keyframes.size(), 41u);
+  EXPECT_EQ(capture.import.captured.keyframes[10].time, 10 * 0.001);
 }
 
 TEST(CaptureFiles, AnExportHasNoMoreFramesThanTheBvhReaderTakes) {
