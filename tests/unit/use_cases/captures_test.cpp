@@ -3,20 +3,23 @@
 // import's folder holds the five files and its motion files load; the capture on another model
 // (every mass and inertia 1.5 times: the root force of the same kinematics 1.5 times); which
 // paths are captures, the export's default rate, and a folder with nothing to export; a capture's
-// text imports as its file does, also at 1 ms per frame; an export's frame count is the BVH
-// reader's limit at most.
+// text imports as its file does, also at 1 ms per frame, and is refused as its file is; an
+// export's frame count is the BVH reader's limit at most.
 
 #include "saltus/use_cases/captures.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 
 #include "saltus/base/input_error.h"
 #include "saltus/capture/model_clip.h"
 #include "saltus/formats/bvh_file.h"
 #include "saltus/formats/motion_file.h"
+#include "saltus/formats/plausible_ranges.h"
 #include "saltus/math/quaternion.h"
 #include "saltus/motion/interpolate.h"
 #include "support/temp_path.h"
@@ -113,6 +116,56 @@ TEST(CaptureFiles, TheTextImportsAsTheFileDoes) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.file(), "bad.bvh");
   }
+}
+
+TEST(CaptureFiles, TheTextIsRefusedAsTheFileIs) {
+  // The text and the file share every check after reading: a capture problem names the part of
+  // the input at fault (the BVH file's MOTION line, --flight), and a flight of more frames than
+  // import fits is refused before it is fitted.
+  MotionFile source;
+  source.model = test::bundled_model();
+  source.motion = test::tuck_motion(source.model);
+  const MocapClip clip = export_motion_clip(source, 1000.0);
+  const auto refusal = [&](const MocapClip& bad, const CaptureFileOptions& options) {
+    const fs::path bvh = test::temp_path("refused.bvh");
+    const std::string text = bvh_text(bad);
+    {
+      std::ofstream out(bvh);
+      out << text;
+    }
+    std::string from_file, from_text;
+    try {
+      import_capture_file(bvh.string(), options);
+    } catch (const InputError& e) {
+      from_file = e.what();
+    }
+    try {
+      import_capture_text(text, bvh.string(), source.model, options);
+    } catch (const InputError& e) {
+      from_text = e.what();
+    }
+    EXPECT_EQ(from_text, from_file);
+    return from_text;
+  };
+
+  MocapClip two = clip;
+  two.frames.resize(2);
+  const std::string text = bvh_text(two);
+  const int motion_line =
+      1 + static_cast<int>(std::count(text.begin(), text.begin() + text.find("MOTION"), '\n'));
+  EXPECT_NE(refusal(two, {}).find(": line " + std::to_string(motion_line) + ": a clip of fewer"),
+            std::string::npos);
+
+  MocapClip many = clip;
+  many.frames.resize(plausible::kMaxCaptureFlightFrames + 1, clip.frames.back());
+  many.frame_time = 0.001;
+  CaptureFileOptions whole;  // every frame, 0-2.5 s
+  whole.import.flight = std::make_pair(0.0, 3.0);
+  const std::string too_many = refusal(many, whole);
+  EXPECT_EQ(too_many.rfind("--flight: ", 0), 0u) << too_many;
+  EXPECT_NE(too_many.find("imports at most " + std::to_string(plausible::kMaxCaptureFlightFrames)),
+            std::string::npos)
+      << too_many;
 }
 
 TEST(CaptureFiles, ACaptureAtTheShortestFrameTimeImports) {
