@@ -17,7 +17,8 @@ packages=(build-essential cmake ninja-build pkg-config clang-format
           libgtest-dev libbenchmark-dev
           libvtk9-qt-dev libvtk9-dev qtbase5-dev xvfb xauth libgl1-mesa-dri ffmpeg libjs-three)
 # The test form also builds under AddressSanitizer and UndefinedBehaviorSanitizer with clang and
-# runs the readers' libFuzzer targets (llvm-symbolizer, from llvm, makes the reports readable).
+# runs the libFuzzer targets of the readers, import and export (llvm-symbolizer, from llvm, makes
+# the reports readable).
 # The cluster tests start a private Slurm on this machine and run a study through GNU parallel.
 # The flight page's tests open it in headless Chromium and in Firefox ESR (on Xvfb, driven over
 # WebDriver BiDi by a Python script with Debian's websocket client).
@@ -80,8 +81,8 @@ stage "tests"
 ctest --preset release --output-on-failure --no-tests=error -j"$(nproc)"
 
 # The same unit, integration and cli tests with clang under AddressSanitizer and
-# UndefinedBehaviorSanitizer (float-cast-overflow included), and the readers' libFuzzer targets
-# for a short seeded run each (docs/safety.md). No GUI: it adds nothing the sanitizers look at.
+# UndefinedBehaviorSanitizer (float-cast-overflow included), and the libFuzzer targets of the
+# readers, import and export for a short seeded run each (docs/safety.md). No GUI: it adds nothing the sanitizers look at.
 stage "sanitizer build (clang, ASan + UBSan, libFuzzer targets)"
 cmake --preset sanitize >/dev/null
 cmake --build --preset sanitize -j"$(nproc)"

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <stdexcept>
 
 namespace saltus {
@@ -77,13 +78,21 @@ MocapClip model_clip_from_states(const BodyModel& model, double frame_time,
   return clip;
 }
 
+double motion_clip_frame_count(double duration, double fps) {
+  const double frames = std::round(duration * fps) + 1.0;
+  return frames < 2.0 ? 2.0 : frames;  // NaN stays NaN
+}
+
 MocapClip motion_clip(const BodyModel& model, const Trajectory<double>& trajectory, double fps) {
   if (!(fps > 0) || !std::isfinite(fps))
     throw std::invalid_argument("frames per second must be > 0");
   if (trajectory.segment_count() != model.size())
     throw std::invalid_argument("motion_clip: the trajectory does not fit the model");
   const double duration = trajectory.duration();
-  const int frames = std::max(2, static_cast<int>(std::lround(duration * fps)) + 1);
+  const double count = motion_clip_frame_count(duration, fps);
+  if (!(count <= std::numeric_limits<int>::max()))
+    throw std::invalid_argument("motion_clip: too many frames");
+  const int frames = static_cast<int>(count);
   const double frame_time = duration / (frames - 1);
   std::vector<BodyState<double>> states(frames, BodyState<double>(model.size()));
   for (int f = 0; f < frames; ++f)

@@ -27,8 +27,13 @@ MocapClip model_skeleton_clip(const BodyModel& model);
 MocapClip model_clip_from_states(const BodyModel& model, double frame_time,
                                  const std::vector<BodyState<double>>& states);
 
-/// The trajectory sampled on [0, T] at about `fps` frames per second: round(T·fps) + 1 frames
-/// (at least 2), spaced exactly T/(frames − 1) so the last frame is the landing. Throws
+/// Frames of motion_clip's clip `duration` s long at about `fps` frames per second:
+/// round(duration·fps) + 1, at least 2. A double, so that a caller checks it against a limit
+/// before sampling (a huge rate gives a huge count, a NaN rate NaN, never an int overflow).
+double motion_clip_frame_count(double duration, double fps);
+
+/// The trajectory sampled on [0, T] at about `fps` frames per second: motion_clip_frame_count
+/// frames, spaced exactly T/(frames − 1) so the last frame is the landing. Throws
 /// std::invalid_argument for fps <= 0 or a trajectory that does not fit the model.
 MocapClip motion_clip(const BodyModel& model, const Trajectory<double>& trajectory, double fps);
 

@@ -240,7 +240,8 @@ void require_control_count(const JsonNode& node, std::size_t count) {
 }
 
 /// Knots of a stored spline: the clamped cubic layout of bspline_basis.h on [0, T] (T the last
-/// keyframe time), breakpoints strictly increasing at least kMinKnotGap apart.
+/// keyframe time), breakpoints strictly increasing at least kMinKnotGap apart (less a rounding,
+/// kKeyframeGapRounding).
 void check_stored_knots(const JsonNode& knots, const std::vector<double>& k, double flight_time) {
   const std::size_t n = k.size() - 4;  // control points; breakpoints are k[3..n]
   const double slack = 1e-9 * std::max(1.0, flight_time);
@@ -257,7 +258,7 @@ void check_stored_knots(const JsonNode& knots, const std::vector<double>& k, dou
                            message_number(k[n + i]));
   }
   for (std::size_t i = 4; i <= n; ++i) {
-    if (!(k[i] - k[i - 1] >= plausible::kMinKnotGap))
+    if (!(k[i] - k[i - 1] >= plausible::kMinKnotGap - plausible::kKeyframeGapRounding))
       knots.at(i).fail("knot " + message_number(k[i]) + " is only " +
                        message_number(k[i] - k[i - 1]) + " s after the previous one " +
                        message_number(k[i - 1]) + "; interior knots must increase by at least " +

@@ -45,10 +45,11 @@ inline constexpr double kMaxFlightTime = 60.0;
 /// second derivative, and so the inverse dynamics, blow up (a keyframe at t = 1e-9 gave NaN).
 inline constexpr double kMinKeyframeGap = 1e-3;
 /// s: rounding allowed below kMinKeyframeGap, so that frames exactly 1 ms apart (times i × dt,
-/// rounded) are accepted as the capture's frame-time bound promises.
+/// rounded: 10·0.001 − 9·0.001 = 0.000999…9 s) are accepted as the capture's frame-time bound
+/// promises; also below kMinKnotGap, as a stored spline's interior knots split such gaps in 50.
 inline constexpr double kKeyframeGapRounding = 1e-9;
 /// s: the shortest gap between interior knots of a stored spline (K = 50 sub-intervals of the
-/// shortest keyframe gap).
+/// shortest keyframe gap), checked less kKeyframeGapRounding.
 inline constexpr double kMinKnotGap = kMinKeyframeGap / 50;
 /// s per frame of a capture (its "Frame Time", or `import --frame-time`): every captured flight
 /// frame becomes a keyframe, so the shortest is the keyframe gap (1 kHz); the longest, 1 s,

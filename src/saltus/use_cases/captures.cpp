@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "saltus/base/constants.h"
 #include "saltus/base/input_error.h"
@@ -174,15 +175,11 @@ InputError capture_input_error(const CaptureError& e, const CaptureFile& capture
   return InputError(path, "", problem);
 }
 
-}  // namespace
-
-CaptureFile import_capture_file(const std::string& path, const CaptureFileOptions& options) {
-  CaptureFile capture;
-  capture.path = path;
-  capture.model_reference = options.model.empty() ? kDefaultCaptureModel : options.model;
-  capture.model = load_body_model(resolve_model(capture.model_reference, path));
-  BvhSourceLines lines;
-  capture.clip = load_bvh_file(path, &lines);
+/// import_capture_file and import_capture_text after reading: `capture` holds the path, the
+/// model and the clip read from the BVH text (`lines` where its fields were).
+CaptureFile import_read_capture(CaptureFile capture, const BvhSourceLines& lines,
+                                const CaptureFileOptions& options) {
+  const std::string& path = capture.path;
   check_frame_time(options.import.frame_time, capture.clip.frame_time, path, lines);
   SkeletonMapping mapping;
   SkeletonMapping given;
@@ -223,6 +220,29 @@ CaptureFile import_capture_file(const std::string& path, const CaptureFileOption
   }
   check_capture_readable(capture, lines, options.import.frame_time.has_value());
   return capture;
+}
+
+}  // namespace
+
+CaptureFile import_capture_file(const std::string& path, const CaptureFileOptions& options) {
+  CaptureFile capture;
+  capture.path = path;
+  capture.model_reference = options.model.empty() ? kDefaultCaptureModel : options.model;
+  capture.model = load_body_model(resolve_model(capture.model_reference, path));
+  BvhSourceLines lines;
+  capture.clip = load_bvh_file(path, &lines);
+  return import_read_capture(std::move(capture), lines, options);
+}
+
+CaptureFile import_capture_text(const std::string& text, const std::string& path,
+                                const BodyModel& model, const CaptureFileOptions& options) {
+  CaptureFile capture;
+  capture.path = path;
+  capture.model_reference = options.model.empty() ? kDefaultCaptureModel : options.model;
+  capture.model = model;
+  BvhSourceLines lines;
+  capture.clip = parse_bvh(text, path, &lines);
+  return import_read_capture(std::move(capture), lines, options);
 }
 
 CaptureFile capture_on_model(const CaptureFile& capture, const BodyModel& model) {
@@ -436,10 +456,11 @@ double default_export_fps(const Motion& motion) {
   return 60.0;
 }
 
-MocapClip export_motion_bvh(const MotionFile& motion, const std::string& out_path, double fps) {
+MocapClip export_motion_clip(const MotionFile& motion, double fps) {
   // What Saltus writes it reads back: no more frames than the BVH reader takes (--fps 1e6 wrote
-  // 836 MB using 3.6 GB; 1e9 ended in bad_alloc).
-  const double frames = std::floor(motion.motion.flight_time() * fps) + 1.0;
+  // 836 MB using 3.6 GB; 1e9 ended in bad_alloc), counted as motion_clip counts them (rounded:
+  // a count floored here let 100001 frames through).
+  const double frames = motion_clip_frame_count(motion.motion.flight_time(), fps);
   if (!(fps > 0) || !(frames <= kMaxBvhFrames))
     throw InputError("--fps", "",
                      message_number(fps) + " frames per second over " +
@@ -447,7 +468,11 @@ MocapClip export_motion_bvh(const MotionFile& motion, const std::string& out_pat
                          std::to_string(kMaxBvhFrames) +
                          " frames, the most a BVH file Saltus reads may hold");
   const Trajectory<double> trajectory = motion_trajectory(motion.motion, motion.model);
-  const MocapClip clip = motion_clip(motion.model, trajectory, fps);
+  return motion_clip(motion.model, trajectory, fps);
+}
+
+MocapClip export_motion_bvh(const MotionFile& motion, const std::string& out_path, double fps) {
+  const MocapClip clip = export_motion_clip(motion, fps);
   save_bvh_file(out_path, clip);
   return clip;
 }

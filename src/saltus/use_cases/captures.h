@@ -35,6 +35,13 @@ struct CaptureFile {
 /// mapping file).
 CaptureFile import_capture_file(const std::string& path, const CaptureFileOptions& options = {});
 
+/// import_capture_file's step after reading the files: `text`, a BVH capture's contents, imported
+/// onto `model` with the same checks (messages name `path`, which also names the motion).
+/// `options.model` only names the model in the outputs ("" = kDefaultCaptureModel); a mapping
+/// file (`options.mapping`) is still read from disk.
+CaptureFile import_capture_text(const std::string& text, const std::string& path,
+                                const BodyModel& model, const CaptureFileOptions& options = {});
+
 /// The capture's own trajectory on `model` (the model in use after its masses were edited; the
 /// same segments), evaluated at the import's sample times: its samples and residual as the app
 /// plots them. Everything else (clip, mapping, flight, keyframes) is the import's.
@@ -67,6 +74,11 @@ MotionFile load_export_source(const std::string& path);
 /// The default frame rate of an export: the keyframes' own rate when they are evenly spaced (a
 /// captured flight exports its frames), else 60 frames per second.
 double default_export_fps(const Motion& motion);
+
+/// The clip export_motion_bvh writes: the motion's trajectory on the model's skeleton at about
+/// `fps` frames per second (motion_clip). InputError naming --fps when fps <= 0 or the clip
+/// would have more frames than kMaxBvhFrames (the BVH reader would refuse the file).
+MocapClip export_motion_clip(const MotionFile& motion, double fps);
 
 /// Writes the motion's trajectory as a BVH file on the model's skeleton (capture/model_clip.h),
 /// atomically. Returns the clip written.

@@ -86,6 +86,15 @@ TEST(ModelClip, TheRestPoseIsTheIdentityPose) {
   EXPECT_GT(end_sites, 0);
 }
 
+TEST(ModelClip, TheFrameCountRoundsAndIsAtLeastTwo) {
+  EXPECT_EQ(motion_clip_frame_count(1.0, 60.0), 61.0);
+  EXPECT_EQ(motion_clip_frame_count(1.0, 99999.6), 100001.0) << "rounded, not floored";
+  EXPECT_EQ(motion_clip_frame_count(1.0, 99999.4), 100000.0);
+  EXPECT_EQ(motion_clip_frame_count(1.0, 0.1), 2.0);
+  EXPECT_EQ(motion_clip_frame_count(1.0, 1e300), 1e300) << "no overflow";
+  EXPECT_TRUE(std::isnan(motion_clip_frame_count(1.0, std::nan(""))));
+}
+
 TEST(ModelClip, AMotionIsSampledAtTheRateWithTheLandingLast) {
   const BodyModel model = test::bundled_model();
   const Motion motion = test::tuck_motion(model);
@@ -94,6 +103,7 @@ TEST(ModelClip, AMotionIsSampledAtTheRateWithTheLandingLast) {
   for (double fps : {24.0, 60.0, 120.0, 0.1}) {
     const MocapClip clip = motion_clip(model, trajectory, fps);
     const int frames = std::max(2, static_cast<int>(std::lround(duration * fps)) + 1);
+    ASSERT_EQ(motion_clip_frame_count(duration, fps), frames) << fps;
     ASSERT_EQ(clip.frame_count(), frames) << fps;
     EXPECT_NEAR(clip.frame_time * (frames - 1), duration, 1e-12) << fps;
     // The last frame is the landing pose: root position and every joint's local rotation.
@@ -111,6 +121,7 @@ TEST(ModelClip, AMotionIsSampledAtTheRateWithTheLandingLast) {
               1e-12);
   }
   EXPECT_THROW(motion_clip(model, trajectory, 0.0), std::invalid_argument);
+  EXPECT_THROW(motion_clip(model, trajectory, 1e300), std::invalid_argument) << "no int count";
   EXPECT_THROW(model_clip_from_states(model, 0.0, random_states(model, 1, 4)),
                std::invalid_argument);
   EXPECT_THROW(model_clip_from_states(model, 0.1, {BodyState<double>(model.size() - 1)}),

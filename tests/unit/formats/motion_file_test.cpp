@@ -430,6 +430,29 @@ TEST(MotionErrors, FirstTimeWithinPrintingNoiseIsZero) {
   EXPECT_EQ(m.keyframes[0].time, 0.0);
 }
 
+TEST(Motion, GapsOfTheShortestLengthReadDespiteRounding) {
+  // A 1 kHz capture's frame times are k·0.001: 10·0.001 − 9·0.001 is 0.001 less a rounding.
+  nlohmann::json doc = good_motion_document();
+  doc.erase("spline");
+  doc["keyframes"][1]["time"] = 9 * 0.001;
+  doc["keyframes"][2]["time"] = 10 * 0.001;
+  ASSERT_LT(10 * 0.001 - 9 * 0.001, 0.001);
+  EXPECT_NO_THROW(parse_motion(doc, kFile, tiny_model()));
+  doc["keyframes"][2]["time"] = 9 * 0.001 + 0.999e-3;
+  expect_parse_error(doc, "/keyframes/2/time", "apart");
+
+  // Interior knots 0.001/50 apart, the same way: 107·g − 106·g < g.
+  const double g = 0.001 / 50;
+  ASSERT_LT(107 * g - 106 * g, g);
+  doc = good_motion_document();
+  doc["keyframes"][1]["time"] = 0.001;
+  doc["keyframes"][2]["time"] = 107 * g;
+  doc["spline"]["knots"] = {0, 0, 0, 0, 106 * g, 107 * g, 107 * g, 107 * g, 107 * g};
+  EXPECT_NO_THROW(parse_motion(doc, kFile, tiny_model()));
+  doc["spline"]["knots"][4] = 107 * g - 0.999 * g;
+  expect_parse_error(doc, "/spline/knots/5", "interior knots");
+}
+
 TEST(MotionErrors, FewerThanTwoKeyframes) {
   nlohmann::json doc = good_motion_document();
   doc["keyframes"].erase(1);

@@ -2,17 +2,24 @@
 // gives back its joint rotations frame by frame (Saltus's own skeleton keeps its heading), the
 // import's folder holds the five files and its motion files load; the capture on another model
 // (every mass and inertia 1.5 times: the root force of the same kinematics 1.5 times); which
-// paths are captures, the export's default rate, and a folder with nothing to export.
+// paths are captures, the export's default rate, and a folder with nothing to export; a capture's
+// text imports as its file does, also at 1 ms per frame, and is refused as its file is; an
+// export's frame count is the BVH reader's limit at most.
 
 #include "saltus/use_cases/captures.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <fstream>
 
 #include "saltus/base/input_error.h"
+#include "saltus/capture/model_clip.h"
 #include "saltus/formats/bvh_file.h"
 #include "saltus/formats/motion_file.h"
+#include "saltus/formats/plausible_ranges.h"
 #include "saltus/math/quaternion.h"
 #include "saltus/motion/interpolate.h"
 #include "support/temp_path.h"
@@ -87,6 +94,108 @@ TEST(CaptureFiles, OnAHeavierModelTheSameKinematicsNeedMoreRootForce) {
   BodyModel other = capture.model;
   other.segments.pop_back();
   EXPECT_THROW(capture_on_model(capture, other), std::invalid_argument);
+}
+
+TEST(CaptureFiles, TheTextImportsAsTheFileDoes) {
+  MotionFile source;
+  source.model = test::bundled_model();
+  source.motion = test::tuck_motion(source.model);
+  const fs::path bvh = test::temp_path("tuck-text.bvh");
+  const MocapClip written = export_motion_bvh(source, bvh.string(), 30.0);
+  const CaptureFile from_file = import_capture_file(bvh.string());
+  const CaptureFile from_text =
+      import_capture_text(bvh_text(written), bvh.string(), test::bundled_model());
+  EXPECT_EQ(from_text.model_reference, kDefaultCaptureModel);
+  EXPECT_EQ(captured_motion_json(from_text, "model.json"),
+            captured_motion_json(from_file, "model.json"));
+  EXPECT_EQ(keyframes_motion_json(from_text, "model.json"),
+            keyframes_motion_json(from_file, "model.json"));
+  try {
+    import_capture_text("HIERARCHY\nROOT hips\n", "bad.bvh", test::bundled_model());
+    FAIL() << "a truncated capture";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "bad.bvh");
+  }
+}
+
+TEST(CaptureFiles, TheTextIsRefusedAsTheFileIs) {
+  // The text and the file share every check after reading: a capture problem names the part of
+  // the input at fault (the BVH file's MOTION line, --flight), and a flight of more frames than
+  // import fits is refused before it is fitted.
+  MotionFile source;
+  source.model = test::bundled_model();
+  source.motion = test::tuck_motion(source.model);
+  const MocapClip clip = export_motion_clip(source, 1000.0);
+  const auto refusal = [&](const MocapClip& bad, const CaptureFileOptions& options) {
+    const fs::path bvh = test::temp_path("refused.bvh");
+    const std::string text = bvh_text(bad);
+    {
+      std::ofstream out(bvh);
+      out << text;
+    }
+    std::string from_file, from_text;
+    try {
+      import_capture_file(bvh.string(), options);
+    } catch (const InputError& e) {
+      from_file = e.what();
+    }
+    try {
+      import_capture_text(text, bvh.string(), source.model, options);
+    } catch (const InputError& e) {
+      from_text = e.what();
+    }
+    EXPECT_EQ(from_text, from_file);
+    return from_text;
+  };
+
+  MocapClip two = clip;
+  two.frames.resize(2);
+  const std::string text = bvh_text(two);
+  const int motion_line =
+      1 + static_cast<int>(std::count(text.begin(), text.begin() + text.find("MOTION"), '\n'));
+  EXPECT_NE(refusal(two, {}).find(": line " + std::to_string(motion_line) + ": a clip of fewer"),
+            std::string::npos);
+
+  MocapClip many = clip;
+  many.frames.resize(plausible::kMaxCaptureFlightFrames + 1, clip.frames.back());
+  many.frame_time = 0.001;
+  CaptureFileOptions whole;  // every frame, 0-2.5 s
+  whole.import.flight = std::make_pair(0.0, 3.0);
+  const std::string too_many = refusal(many, whole);
+  EXPECT_EQ(too_many.rfind("--flight: ", 0), 0u) << too_many;
+  EXPECT_NE(too_many.find("imports at most " + std::to_string(plausible::kMaxCaptureFlightFrames)),
+            std::string::npos)
+      << too_many;
+}
+
+TEST(CaptureFiles, ACaptureAtTheShortestFrameTimeImports) {
+  // 1 ms per frame, the shortest accepted: the keyframes are k·0.001 s, and 10·0.001 − 9·0.001
+  // falls short of 0.001 by a rounding (the motion reader refused the import's own motion).
+  MotionFile source;
+  source.model = test::bundled_model();
+  source.motion = test::tuck_motion(source.model);
+  MocapClip clip = export_motion_clip(source, 1000.0);
+  clip.frames.resize(41);
+  clip.frame_time = 0.001;
+  const CaptureFile capture = import_capture_text(bvh_text(clip), "khz.bvh", source.model);
+  ASSERT_EQ(capture.import.captured.keyframes.size(), 41u);
+  EXPECT_EQ(capture.import.captured.keyframes[10].time, 10 * 0.001);
+}
+
+TEST(CaptureFiles, AnExportHasNoMoreFramesThanTheBvhReaderTakes) {
+  MotionFile source;
+  source.model = test::bundled_model();
+  source.motion = test::tuck_motion(source.model);
+  const double flight_time = source.motion.flight_time();
+  const MocapClip clip = export_motion_clip(source, 30.0);
+  EXPECT_EQ(clip.frame_count(), motion_clip_frame_count(flight_time, 30.0));
+  // T·fps = kMaxBvhFrames − 0.4: kMaxBvhFrames + 1 frames once rounded (a floored count let
+  // them through, into a file the reader refuses).
+  const double fps = (kMaxBvhFrames - 0.4) / flight_time;
+  ASSERT_EQ(motion_clip_frame_count(flight_time, fps), kMaxBvhFrames + 1.0);
+  EXPECT_THROW(export_motion_clip(source, fps), InputError);
+  EXPECT_THROW(export_motion_clip(source, 0.0), InputError);
+  EXPECT_THROW(export_motion_clip(source, std::nan("")), InputError);
 }
 
 TEST(CaptureFiles, CapturePathsAndTheDefaultRate) {
