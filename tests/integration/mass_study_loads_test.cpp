@@ -33,8 +33,8 @@ TEST(MassStudyLoads, OptimisedAsOptimizeDoesTheJointsDoNotPayForTheRootForce) {
                 paper.runs[r].result.after.metrics.avg_root_force, largest_rise(paper.runs[r]));
     EXPECT_TRUE(run.result.solve.solved) << run.label;
     EXPECT_LE(run.result.after.metrics.avg_root_force, 0.5) << run.label;
-    // Measured 2.8x and 3.0x (an elbow's moment, 7-8 N·m against 2.6 N·m).
-    EXPECT_LE(largest_rise(run), 3.5) << run.label;
+    // Measured 3.1x and 3.2x (the left knee's 30 N·m against 9.7; an elbow's 8.4 N·m against 2.6).
+    EXPECT_LE(largest_rise(run), 4.0) << run.label;
     EXPECT_GE(largest_rise(paper.runs[r]), 10.0) << run.label;
   }
 }

@@ -31,8 +31,10 @@ struct RandomPoint {
   std::unique_ptr<MotionNlp> nlp;
   std::vector<double> start, x;
 
-  explicit RandomPoint(Formulation formulation, unsigned seed = 11, int knots_per_interval = 2) {
+  explicit RandomPoint(Formulation formulation, unsigned seed = 11, int knots_per_interval = 2,
+                       double root_moment_weight = 1.0) {
     MotionNlpOptions options;
+    options.root_moment_weight = root_moment_weight;
     options.formulation = formulation;
     options.knots_per_interval = knots_per_interval;
     options.samples = 23;

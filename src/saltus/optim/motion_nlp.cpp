@@ -78,7 +78,7 @@ MotionNlp::MotionNlp(const Motion& motion, const BodyModel& model,
   };
   auto root_wrench = std::make_unique<RootWrenchTerm>(
       SpanQuadrature(layout_, initial.knots, options.quadrature_nodes, options.quadrature_spacing),
-      duration_, &damping_);
+      duration_, &damping_, relaxed ? options.root_moment_weight : 1.0);
   root_wrench_ = root_wrench.get();
   if (relaxed) {
     add_term(std::move(root_wrench));
@@ -175,7 +175,7 @@ void MotionNlp::initial_point(double* x) const {
 
 double MotionNlp::force_objective(const double* x) {
   at_->load(x);
-  return root_wrench_->value(*at_);
+  return root_wrench_->unweighted_value(*at_);
 }
 
 double MotionNlp::objective(const double* x) {

@@ -101,6 +101,11 @@ struct MotionNlpOptions {
   /// Weight w (N² per (N·m)²) of least joint effort, w·(1/T)∫ Σ_j |n_j|² dt over the non-root
   /// joints (terms/joint_load_term.h); 0 = none.
   double joint_load_weight = 0.001;
+  /// Weight of the root moment against the root force in the minimised objective (1: the
+  /// paper's J). Least joint effort's polish raises it, so that it trades root force, which
+  /// only shifts the CoM, and not root moment, which a twisting body turns into degrees at
+  /// landing. force_objective() stays the paper's J.
+  double root_moment_weight = 1.0;
   /// Weight w (N²) of the keyframe prior added to the relaxed objective:
   /// w·Σ_i (‖B(t_i) − B̄_i‖²/ε1² + Σ_k ‖Q_k(t_i) − Q̄_k‖²/ε2²), the strict model's keyframe
   /// distance in units of the tolerances. The tolerances let a motion meet its keyframes at

@@ -351,6 +351,7 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
     MotionNlpOptions polish_options = nlp_options;
     polish_options.subdivisions = best_subdivisions;
     polish_options.joint_load_weight = joint_load_weight;
+    polish_options.root_moment_weight = kPolishRootMomentWeight;
     polish_options.optimize_timing = false;
     SolverOptions polish_solver = options.solver;
     polish_solver.warm_start = false;  // no time variables: another layout

@@ -107,6 +107,11 @@ double largest_control_turn(const Trajectory<double>& trajectory, int first_segm
 /// root force (a flight's true residual is held to it: docs/optimizer.md, "Joint loads").
 inline constexpr double kPolishMaxRootForce = 0.5;
 
+/// The polish's MotionNlpOptions::root_moment_weight: it may trade root force for joint loads,
+/// not root moment, which a twisting body turns into degrees at landing (with 1, M7's free flight
+/// ended 70° from the polished motion; with 100, 1.8°: docs/optimizer.md, "Landing drift").
+inline constexpr double kPolishRootMomentWeight = 100.0;
+
 /// Least joint effort (MotionNlpOptions::joint_load_weight > 0): a last solve at the keyframe
 /// times the levels found, with the joint loads in the objective; kept when it solved with an
 /// average root force within kPolishMaxRootForce, or no larger than before, and its free flight

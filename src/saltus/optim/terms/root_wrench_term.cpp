@@ -5,8 +5,10 @@
 namespace saltus {
 
 RootWrenchTerm::RootWrenchTerm(SpanQuadrature nodes, double duration,
-                               const AdaptiveDamping* damping)
-    : nodes_(std::move(nodes)), duration_(duration), damping_(damping) {}
+                               const AdaptiveDamping* damping, double moment_weight)
+    : nodes_(std::move(nodes)), duration_(duration), damping_(damping) {
+  root_weights_ << 1.0, 1.0, 1.0, Eigen::Vector3d::Constant(std::sqrt(moment_weight));
+}
 
 double RootWrenchTerm::weight(NlpEvaluations& at, int node) const {
   return nodes_.span_length(at, node) * nodes_.nodes()[node].weight / duration_;
@@ -23,6 +25,14 @@ double RootWrenchTerm::value(NlpEvaluations& at) {
   const std::vector<Vector6d>& wrench = nodes_.values(at);
   double j = 0.0;
   for (int n = 0; n < nodes_.size(); ++n)
+    j += weight(at, n) * root_weights_.cwiseProduct(wrench[n]).squaredNorm();
+  return j;
+}
+
+double RootWrenchTerm::unweighted_value(NlpEvaluations& at) {
+  const std::vector<Vector6d>& wrench = nodes_.values(at);
+  double j = 0.0;
+  for (int n = 0; n < nodes_.size(); ++n)
     j += weight(at, n) * wrench[n].squaredNorm();
   return j;
 }
@@ -33,10 +43,12 @@ void RootWrenchTerm::add_gradient(NlpEvaluations& at, double* gradient) {
   const std::vector<Vector6d>& wrench = nodes_.values(at);
   for (int n = 0; n < nodes_.size(); ++n) {
     const LocalJacobian<6>& jac = jacobians[n];
-    const Eigen::Matrix<double, 1, 6> w = 2.0 * weight(at, n) * wrench[n].transpose();
+    const Vector6d weighted = root_weights_.cwiseProduct(wrench[n]);
+    const Eigen::Matrix<double, 1, 6> w =
+        2.0 * weight(at, n) * root_weights_.cwiseProduct(weighted).transpose();
     Eigen::Map<Eigen::RowVectorXd>(gradient + jac.first_control_variable, jac.control.cols()) +=
         w * jac.control;
-    const double weight_rate = nodes_.nodes()[n].weight / duration_ * wrench[n].squaredNorm();
+    const double weight_rate = nodes_.nodes()[n].weight / duration_ * weighted.squaredNorm();
     for (int p = 0; p < jac.time_count; ++p)
       gradient[jac.time_variable[p]] +=
           w * jac.time.col(p) + weight_rate * nodes_.span_length_rates()[n][p];
@@ -48,7 +60,7 @@ std::vector<double> RootWrenchTerm::residuals(NlpEvaluations& at) {
   std::vector<double> r;
   for (int n = 0; n < nodes_.size(); ++n)
     for (int c = 0; c < 6; ++c)
-      r.push_back(std::sqrt(weight(at, n)) * wrench[n][c]);
+      r.push_back(std::sqrt(weight(at, n)) * root_weights_[c] * wrench[n][c]);
   return r;
 }
 
@@ -77,31 +89,32 @@ void RootWrenchTerm::add_curvature(NlpEvaluations& at, double factor, const Hess
   span_blocks_.resize(spans_.size());
   stacked_rows_.resize(at.parts());
   const int span_count = static_cast<int>(spans_.size());
-  at.for_each_range(
-      span_count, [&](int part, RootWrenchDerivatives&, int first_span, int end_span) {
-        Eigen::MatrixXd& stacked = stacked_rows_[part];
-        for (int index = first_span; index < end_span; ++index) {
-          const auto [begin, end] = spans_[index];
-          const LocalJacobian<6>& first = jacobians[begin];
-          const int width = static_cast<int>(first.control.cols());
-          const int times = first.time_count;
-          stacked.resize(6 * (end - begin), width + times);
-          for (int s = begin; s < end; ++s) {
-            const double w = weight(at, s);
-            const double root_weight = std::sqrt(scale * w);
-            const int row = 6 * (s - begin);
-            stacked.block(row, 0, 6, width) = root_weight * jacobians[s].control;
-            const double relative_rate = nodes_.nodes()[s].weight / duration_ / (2.0 * w);
-            stacked.block(row, width, 6, times) =
-                root_weight *
-                (jacobians[s].time.leftCols(times) +
-                 relative_rate * wrench[s] * nodes_.span_length_rates()[s].leftCols(times));
-          }
-          Eigen::MatrixXd& block = span_blocks_[index];
-          block.setZero(width + times, width + times);
-          block.selfadjointView<Eigen::Lower>().rankUpdate(stacked.transpose());
-        }
-      });
+  at.for_each_range(span_count, [&](int part, RootWrenchDerivatives&, int first_span,
+                                    int end_span) {
+    Eigen::MatrixXd& stacked = stacked_rows_[part];
+    for (int index = first_span; index < end_span; ++index) {
+      const auto [begin, end] = spans_[index];
+      const LocalJacobian<6>& first = jacobians[begin];
+      const int width = static_cast<int>(first.control.cols());
+      const int times = first.time_count;
+      stacked.resize(6 * (end - begin), width + times);
+      for (int s = begin; s < end; ++s) {
+        const double w = weight(at, s);
+        const double root_weight = std::sqrt(scale * w);
+        const int row = 6 * (s - begin);
+        const auto rows = root_weights_.asDiagonal();
+        stacked.block(row, 0, 6, width) = root_weight * (rows * jacobians[s].control);
+        const double relative_rate = nodes_.nodes()[s].weight / duration_ / (2.0 * w);
+        stacked.block(row, width, 6, times) =
+            root_weight *
+            (rows * (jacobians[s].time.leftCols(times) +
+                     relative_rate * wrench[s] * nodes_.span_length_rates()[s].leftCols(times)));
+      }
+      Eigen::MatrixXd& block = span_blocks_[index];
+      block.setZero(width + times, width + times);
+      block.selfadjointView<Eigen::Lower>().rankUpdate(stacked.transpose());
+    }
+  });
   for (int index = 0; index < span_count; ++index) {
     const LocalJacobian<6>& first = jacobians[spans_[index].first];
     const Eigen::MatrixXd& block = span_blocks_[index];

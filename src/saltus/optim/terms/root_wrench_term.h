@@ -22,10 +22,14 @@ class RootWrenchTerm : public ObjectiveTerm {
   /// @param nodes     the quadrature (SpanQuadrature: nodes on every knot span)
   /// @param duration  T, s (fixed: the first and last keyframe times do not move)
   /// @param damping   μ's rule and state; null for no damping
-  RootWrenchTerm(SpanQuadrature nodes, double duration, const AdaptiveDamping* damping);
+  /// @param moment_weight  each moment component's square counts this many times (1: J itself)
+  RootWrenchTerm(SpanQuadrature nodes, double duration, const AdaptiveDamping* damping,
+                 double moment_weight = 1.0);
 
   std::string name() const override { return "root wrench"; }
   double value(NlpEvaluations& at) override;
+  /// J itself, whatever the moment weight.
+  double unweighted_value(NlpEvaluations& at);
   void add_gradient(NlpEvaluations& at, double* gradient) override;
   void add_curvature(NlpEvaluations& at, double factor, const HessianBand& band,
                      double* values) override;
@@ -42,6 +46,8 @@ class RootWrenchTerm : public ObjectiveTerm {
   SpanQuadrature nodes_;
   double duration_;
   const AdaptiveDamping* damping_;
+  /// √ of each component's weight: ones for the force, √moment_weight for the moment.
+  Vector6d root_weights_;
   /// add_curvature's workspace: the stacked rows per thread, the block per knot span.
   std::vector<Eigen::MatrixXd> stacked_rows_, span_blocks_;
   std::vector<std::pair<int, int>> spans_;  ///< [first, end) samples of each knot span
