@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "fuzz_support.h"
 #include "saltus/base/input_error.h"
 #include "saltus/formats/bvh_file.h"
 
@@ -21,15 +22,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   // The parser's checks imply the clip's invariants; bvh_text throws if one does not hold.
   const saltus::MocapClip back = saltus::parse_bvh(saltus::bvh_text(clip), "written.bvh");
-  if (back.frames != clip.frames || back.frame_time != clip.frame_time ||
-      back.joint_count() != clip.joint_count())
-    std::abort();
-  for (int j = 0; j < clip.joint_count(); ++j)
-    if (back.joints[j].name != clip.joints[j].name ||
-        back.joints[j].parent != clip.joints[j].parent ||
-        back.joints[j].offset != clip.joints[j].offset ||
-        back.joints[j].channels != clip.joints[j].channels ||
-        back.joints[j].end_sites != clip.joints[j].end_sites)
-      std::abort();
+  saltus::fuzz::abort_unless_same_clip(back, clip);
   return 0;
 }

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "fuzz_support.h"
 #include "saltus/base/json_reader.h"
 #include "saltus/capture/retarget.h"
 #include "saltus/capture/skeleton_mapping.h"
@@ -18,12 +19,6 @@
 #include "saltus/formats/model_file.h"
 
 namespace {
-
-const saltus::BodyModel& bundled_model() {
-  static const saltus::BodyModel model =
-      saltus::load_body_model(std::string(SALTUS_RESOURCES_DIR) + "/models/zatsiorsky-66kg.json");
-  return model;
-}
 
 const saltus::MocapClip& bundled_clip() {
   static const saltus::MocapClip clip =
@@ -43,7 +38,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     saltus::check_capture_mapping(given, bundled_clip(), file, "backflip.bvh");
     const saltus::SkeletonMapping merged = saltus::merge_skeleton_mapping(bundled_clip(), given);
     const saltus::Retargeting plan =
-        saltus::plan_retargeting(bundled_clip(), bundled_model(), merged);
+        saltus::plan_retargeting(bundled_clip(), saltus::fuzz::bundled_model(), merged);
     if (!(plan.axes.metres_per_unit > 0) || !std::isfinite(plan.axes.metres_per_unit)) std::abort();
   } catch (const saltus::InputError&) {
     return 0;

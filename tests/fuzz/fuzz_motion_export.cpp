@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "fuzz_support.h"
 #include "saltus/base/input_error.h"
 #include "saltus/base/json_reader.h"
 #include "saltus/formats/bvh_file.h"
@@ -15,22 +16,12 @@
 #include "saltus/formats/motion_file.h"
 #include "saltus/use_cases/captures.h"
 
-namespace {
-
-const saltus::BodyModel& bundled_model() {
-  static const saltus::BodyModel model =
-      saltus::load_body_model(std::string(SALTUS_RESOURCES_DIR) + "/models/zatsiorsky-66kg.json");
-  return model;
-}
-
-}  // namespace
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size > saltus::kMaxJsonFileBytes) return 0;
   const std::string text(reinterpret_cast<const char*>(data), size);
   saltus::MotionFile source;
   source.path = "fuzz.motion.json";
-  source.model = bundled_model();
+  source.model = saltus::fuzz::bundled_model();
   saltus::MocapClip clip;
   try {
     source.motion =
@@ -46,15 +37,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const saltus::InputError&) {
     std::abort();  // Saltus wrote a BVH file its own reader refuses
   }
-  if (back.frames != clip.frames || back.frame_time != clip.frame_time ||
-      back.joint_count() != clip.joint_count())
-    std::abort();
-  for (int j = 0; j < clip.joint_count(); ++j)
-    if (back.joints[j].name != clip.joints[j].name ||
-        back.joints[j].parent != clip.joints[j].parent ||
-        back.joints[j].offset != clip.joints[j].offset ||
-        back.joints[j].channels != clip.joints[j].channels ||
-        back.joints[j].end_sites != clip.joints[j].end_sites)
-      std::abort();
+  saltus::fuzz::abort_unless_same_clip(back, clip);
   return 0;
 }

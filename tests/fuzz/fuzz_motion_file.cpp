@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "fuzz_support.h"
 #include "saltus/base/json_reader.h"
 #include "saltus/evaluation/evaluate.h"
 #include "saltus/formats/finite_check.h"
@@ -14,30 +15,21 @@
 #include "saltus/formats/motion_file.h"
 #include "saltus/use_cases/result_folders.h"
 
-namespace {
-
-const saltus::BodyModel& bundled_model() {
-  static const saltus::BodyModel model =
-      saltus::load_body_model(std::string(SALTUS_RESOURCES_DIR) + "/models/zatsiorsky-66kg.json");
-  return model;
-}
-
-}  // namespace
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size > saltus::kMaxJsonFileBytes) return 0;
   const std::string text(reinterpret_cast<const char*>(data), size);
   const std::string file = "fuzz.motion.json";
   saltus::Motion motion;
   try {
-    motion = saltus::parse_motion(saltus::parse_json_text(text, file), file, bundled_model());
+    motion = saltus::parse_motion(saltus::parse_json_text(text, file), file,
+                                  saltus::fuzz::bundled_model());
   } catch (const saltus::InputError&) {
     return 0;
   }
   saltus::EvaluateOptions options;
   options.samples = 9;
   const saltus::MotionEvaluation evaluation =
-      saltus::evaluate_motion(motion, bundled_model(), options);
+      saltus::evaluate_motion(motion, saltus::fuzz::bundled_model(), options);
   try {
     // What write_evaluation_outputs checks before it writes (exit 2 naming the field).
     saltus::require_finite(evaluation.samples, file, "trajectory.csv");
