@@ -93,8 +93,10 @@ std::string mass_study_markdown(const MassStudyResult& study) {
   }
   out << "\nPeaks and rises from the dense checks; the input is the interpolated keyframes on the "
          "same model (the optimiser's starting point); rise: the larger of the force and moment "
-         "ratios, peaks under 10 N or 1 N·m counted as those. RMS over mass.csv's samples.\n\n"
-         "Largest rise over every joint:\n\n";
+         "ratios, peaks under "
+      << format_number("%g N", kJointForceFloorN) << " or "
+      << format_number("%g N·m", kJointMomentFloorNm)
+      << " counted as those. RMS over mass.csv's samples.\n\nLargest rise over every joint:\n\n";
   for (const MassStudyRun& run : study.runs) {
     const JointLoadRise rise =
         largest_joint_load_rise(run.model, run.result.before.check, run.result.after.check);
