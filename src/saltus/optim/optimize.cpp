@@ -71,12 +71,19 @@ Motion with_own_flight_state(Motion optimized, const MotionEvaluation& evaluatio
   return optimized;
 }
 
-/// OptimizationResult::landing_drift_deg of a solved motion (its stored spline), from an
-/// evaluation and a free flight on `samples` times.
-double landing_drift_deg(const Motion& optimized, const BodyModel& model, int samples) {
+/// A solved motion (its stored spline) evaluated on `samples` times, which is result.after when
+/// it is the one returned, and its OptimizationResult::landing_drift_deg from a free flight.
+struct Flown {
+  MotionEvaluation evaluation;
+  double drift_deg = 0.0;
+};
+Flown fly(const Motion& optimized, const BodyModel& model, int samples) {
   const EvaluateOptions grid = evaluate_options(samples, {});
-  const Motion own = with_own_flight_state(optimized, evaluate_motion(optimized, model, grid));
-  return simulate_motion(own, model, grid).landing_vs_motion_deg;
+  Flown flown;
+  flown.evaluation = evaluate_motion(optimized, model, grid);
+  flown.drift_deg = simulate_motion(with_own_flight_state(optimized, flown.evaluation), model, grid)
+                        .landing_vs_motion_deg;
+  return flown;
 }
 
 /// How far each keyframe time of `solved` may move before the average root force rises by
@@ -249,7 +256,7 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
   Solved best;
   std::vector<int> best_subdivisions;
   double best_force = 0.0;
-  std::optional<double> best_drift;  // OptimizationResult::landing_drift_deg, when measured
+  std::optional<Flown> best_flown;  // when the drift was measured
   bool have_best = false;
   int iterations = 0, restarts = 0;
   double seconds = 0.0;
@@ -302,12 +309,11 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       }
     }
     // Only the automatic resolution decides by the drift in its levels (a free flight: ~50 ms).
-    const std::optional<double> drift =
-        automatic
-            ? std::optional<double>(landing_drift_deg(solved.optimized, model, options.nlp.samples))
-            : std::nullopt;
+    std::optional<Flown> flown;
+    if (automatic) flown = fly(solved.optimized, model, options.nlp.samples);
+    const double drift = flown ? flown->drift_deg : 0.0;
     result.levels.push_back(
-        {subdivisions, force, drift.value_or(0.0), solved.solve.iterations, solved.solve.status});
+        {subdivisions, force, drift, solved.solve.iterations, solved.solve.status});
     if (level == 0) result.optimizer_objective_before = solved.objective_before;
     const bool better = !have_best || (solved.solve.solved && !best.solve.solved) ||
                         (solved.solve.solved == best.solve.solved && force < best_force);
@@ -316,12 +322,11 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       best = std::move(solved);
       best_subdivisions = subdivisions;
       best_force = force;
-      best_drift = drift;
+      best_flown = std::move(flown);
       have_best = true;
     }
     const bool force_met = force <= rules.target_force;
-    if (!automatic || !best.solve.solved ||
-        (force_met && drift.value_or(0.0) <= rules.max_landing_drift_deg) ||
+    if (!automatic || !best.solve.solved || (force_met && drift <= rules.max_landing_drift_deg) ||
         level >= rules.max_refinements || (cancel && cancel->load()))
       break;
     if (level > 0 && !(force < (1.0 - rules.min_gain) * previous_force)) break;  // stopped paying
@@ -360,13 +365,14 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
     iterations += polished.solve.iterations;
     restarts += polished.solve.restarts;
     seconds += polished.solve.seconds;
-    if (!best_drift) best_drift = landing_drift_deg(best.optimized, model, options.nlp.samples);
+    if (!best_flown) best_flown = fly(best.optimized, model, options.nlp.samples);
+    Flown polished_flown = fly(polished.optimized, model, options.nlp.samples);
     JointLoadPolish& p = result.joint_load_polish.emplace();
     p.avg_root_force_before = best_force;
     p.avg_root_force_after =
         dense_check(model, polished.trajectory, options.nlp.samples).metrics.avg_root_force;
-    p.landing_drift_before_deg = *best_drift;
-    p.landing_drift_after_deg = landing_drift_deg(polished.optimized, model, options.nlp.samples);
+    p.landing_drift_before_deg = best_flown->drift_deg;
+    p.landing_drift_after_deg = polished_flown.drift_deg;
     p.iterations = polished.solve.iterations;
     p.status = polished.solve.status;
     p.kept = polished.solve.solved &&
@@ -376,7 +382,7 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
               p.landing_drift_after_deg <= p.landing_drift_before_deg);
     if (p.kept) {
       best = std::move(polished);
-      best_drift = p.landing_drift_after_deg;
+      best_flown = std::move(polished_flown);
     }
   }
 
@@ -388,9 +394,15 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
   result.subdivisions = best_subdivisions;
   result.knots_per_interval = *std::max_element(best_subdivisions.begin(), best_subdivisions.end());
 
-  result.after = evaluate_motion(best.optimized, model, evaluate_options(options.nlp.samples, {}));
+  // The returned motion's evaluation, unless no free flight evaluated it already.
+  if (best_flown) {
+    result.after = std::move(best_flown->evaluation);
+    result.landing_drift_deg = best_flown->drift_deg;
+  } else {
+    result.after =
+        evaluate_motion(best.optimized, model, evaluate_options(options.nlp.samples, {}));
+  }
   result.optimized_motion = with_own_flight_state(best.optimized, result.after);
-  result.landing_drift_deg = best_drift;
   return result;
 }
 
