@@ -31,14 +31,7 @@
 
 namespace saltus::cli {
 
-namespace {
-
-constexpr int kExitNotSolved = 3;  ///< also: some case of a study crashed or timed out
-
-std::string absolute(const std::string& path) {
-  return std::filesystem::absolute(path).lexically_normal().string();
-}
-
+// Outside the anonymous namespace: StudyVerbs::State holds them.
 /// Settings shared by the study verbs and the report: the time grid and the iteration limit of
 /// every optimisation they run (option table).
 struct StudyArgs {
@@ -46,6 +39,25 @@ struct StudyArgs {
   bool quiet = false;
   OptionFlags options;
 };
+
+/// How a study runs: processes, shards, resuming, a Slurm array instead.
+struct RunArgs {
+  int jobs = available_cpus();
+  std::string shard;
+  bool resume = false;
+  double case_time_limit_s = 900.0;
+  std::string emit_slurm;
+  int shards = 0;
+  bool no_early_stop = false;
+};
+
+namespace {
+
+constexpr int kExitNotSolved = 3;  ///< also: some case of a study crashed or timed out
+
+std::string absolute(const std::string& path) {
+  return std::filesystem::absolute(path).lexically_normal().string();
+}
 
 void add_study_common(CLI::App* cmd, StudyArgs& args) {
   cmd->add_option("--out", args.out_dir, "output folder (replaced if it holds an earlier result)")
@@ -60,17 +72,6 @@ OptimizeOptions study_optimize_options(const StudyArgs& args) {
   use_paper_protocol(o);
   return o;
 }
-
-/// How a study runs: processes, shards, resuming, a Slurm array instead.
-struct RunArgs {
-  int jobs = available_cpus();
-  std::string shard;
-  bool resume = false;
-  double case_time_limit_s = 900.0;
-  std::string emit_slurm;
-  int shards = 0;
-  bool no_early_stop = false;
-};
 
 void add_run_options(CLI::App* cmd, RunArgs& args) {
   cmd->add_option("--jobs,-j", args.jobs,
