@@ -161,15 +161,14 @@ TEST(CliOptimize, ReportedResidualIsTheMotionsOnAFarFinerGrid) {
 
 // Issue 24's joint loads: the optimised M2 used to put 142 N·m on the left hip at take-off,
 // where the interpolated input needed 18 N·m at most (7.8x). With least joint effort (the
-// default polish) every joint stays within 3.5x of its input peak (measured 3.11x, the left
-// knee's moment mid-flight; 2.76x before the polish weighed the root moment 100 times to keep
-// the landing); without it
-// (--joint-load-weight 0) the kick is back, so the polish is what removes it. Peaks are the
-// dense check's, read from result.json; ratios floored as joint_loads.h does.
+// default polish), each joint counted against its own input peak, M2's joints stay within 3x
+// (measured 2.48x, the left knee's moment mid-flight; 3.11x when every joint counted in N·m)
+// and M6's, whose knee carried 372 N·m at t = 0.004 s without the polish, within the issue's
+// 1.5x (measured 1.36x; 4.3x in N·m); without it (--joint-load-weight 0) M2's kick is back, so
+// the polish is what removes it. Peaks are the dense check's, read from result.json; ratios
+// floored as joint_loads.h does.
 TEST(CliOptimize, JointLoadsStayNearTheInputsWithLeastJointEffort) {
   test::TempDir dir;
-  const std::string m2 =
-      std::string(SALTUS_EXAMPLES_DIR) + "/motions/M2-tucked-back-somersault.motion.json";
   auto largest_rise = [](const nlohmann::json& result) {
     double worst = 0.0;
     for (const auto& [joint, loads] : result["joint_loads"].items()) {
@@ -181,14 +180,23 @@ TEST(CliOptimize, JointLoadsStayNearTheInputsWithLeastJointEffort) {
     }
     return worst;
   };
-  const auto with = test::run_cli("optimize " + m2 + " --out " + (dir / "with") + " --quiet");
-  ASSERT_EQ(with.status, 0) << with.output;
-  const auto result = read_json(dir / "with/result.json");
-  EXPECT_TRUE(result["resolution"]["joint_load_polish"]["kept"].get<bool>());
-  EXPECT_LE(result["after"]["avg_root_force"].get<double>(), 0.5);
-  EXPECT_LE(largest_rise(result), 3.5);
-  const auto without = test::run_cli("optimize " + m2 + " --out " + (dir / "without") +
-                                     " --joint-load-weight 0 --quiet");
+  const std::string motions = std::string(SALTUS_EXAMPLES_DIR) + "/motions/";
+  const std::pair<const char*, double> bounds[] = {
+      {"M2-tucked-back-somersault", 3.0}, {"M6-half-twist-into-one-and-a-half-front", 1.5}};
+  for (const auto& [name, bound] : bounds) {
+    SCOPED_TRACE(name);
+    const std::string out = dir / name;
+    const auto with =
+        test::run_cli("optimize " + motions + name + ".motion.json --out " + out + " --quiet");
+    ASSERT_EQ(with.status, 0) << with.output;
+    const auto result = read_json(out + "/result.json");
+    EXPECT_TRUE(result["resolution"]["joint_load_polish"]["kept"].get<bool>());
+    EXPECT_LE(result["after"]["avg_root_force"].get<double>(), 0.5);
+    EXPECT_LE(largest_rise(result), bound);
+  }
+  const auto without =
+      test::run_cli("optimize " + motions + "M2-tucked-back-somersault.motion.json --out " +
+                    (dir / "without") + " --joint-load-weight 0 --quiet");
   ASSERT_EQ(without.status, 0) << without.output;
   const auto bare = read_json(dir / "without/result.json");
   EXPECT_FALSE(bare["resolution"].contains("joint_load_polish"));
@@ -197,8 +205,8 @@ TEST(CliOptimize, JointLoadsStayNearTheInputsWithLeastJointEffort) {
 
 // Issue 24's landing drift: the optimised motion, flown by `saltus simulate` from its own
 // take-off state, lands where it shows (within 3°), and result.json's landing_drift_deg is what
-// simulate reports. M7's polish used to be kept at 0.34 N with its free flight 70° off; now it
-// is refused for its drift and the motion written is the levels' own.
+// simulate reports. M7's polish used to be kept at 0.34 N with its free flight 70° off; now a
+// polish that drifts is refused, and tried again at half the weight.
 TEST(CliOptimize, TheOptimisedMotionFliesAsShown) {
   test::TempDir dir;
   for (const char* name : {"M2-tucked-back-somersault", "M7-double-front-one-and-a-half-twists"}) {

@@ -120,7 +120,9 @@ nlohmann::json resolution_json(const ResultJson::Optimization::Resolution& resol
                       {"levels", levels}};
   if (resolution.landing_drift_deg) j["landing_drift_deg"] = *resolution.landing_drift_deg;
   if (const auto& p = resolution.joint_load_polish)
-    j["joint_load_polish"] = {{"avg_root_force_before", p->avg_root_force_before},
+    j["joint_load_polish"] = {{"weight", p->weight},
+                              {"attempts", p->attempts},
+                              {"avg_root_force_before", p->avg_root_force_before},
                               {"avg_root_force_after", p->avg_root_force_after},
                               {"landing_drift_before_deg", p->landing_drift_before_deg},
                               {"landing_drift_after_deg", p->landing_drift_after_deg},
@@ -233,6 +235,8 @@ ResultJson::Optimization::Resolution read_resolution(const JsonNode& node) {
   if (const auto polish = node.find("joint_load_polish")) {
     polish->require_object();
     JointLoadPolish& p = r.joint_load_polish.emplace();
+    if (const auto w = polish->find("weight")) p.weight = w->as_double();
+    if (const auto a = polish->find("attempts")) p.attempts = a->as_int();
     p.avg_root_force_before = polish->at("avg_root_force_before").as_double();
     p.avg_root_force_after = polish->at("avg_root_force_after").as_double();
     if (const auto d = polish->find("landing_drift_before_deg"))

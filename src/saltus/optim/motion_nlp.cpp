@@ -99,7 +99,7 @@ MotionNlp::MotionNlp(const Motion& motion, const BodyModel& model,
                                                      options.joint_effort));
   if (relaxed && options.joint_load_weight > 0)
     add_term(std::make_unique<JointLoadTerm>(layout_, initial.knots, duration_,
-                                             options.joint_load_weight));
+                                             options.joint_load_weight, options.joint_load_scales));
   if (options.limits_joint_turns())
     add_term(std::make_unique<JointTurnTerm>(layout_, reference_, options.joint_turn_limit,
                                              options.joint_turn_weight));

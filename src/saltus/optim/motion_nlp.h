@@ -106,6 +106,10 @@ struct MotionNlpOptions {
   /// only shifts the CoM, and not root moment, which a twisting body turns into degrees at
   /// landing. force_objective() stays the paper's J.
   double root_moment_weight = 1.0;
+  /// Least joint effort's weight on each non-root joint's moment, in model order (empty: 1 for
+  /// every joint). optimize_motion sets them from the input's peaks, so that the term counts
+  /// each joint's load against what the input needed and not in absolute N·m.
+  std::vector<double> joint_load_scales;
   /// Weight w (N²) of the keyframe prior added to the relaxed objective:
   /// w·Σ_i (‖B(t_i) − B̄_i‖²/ε1² + Σ_k ‖Q_k(t_i) − Q̄_k‖²/ε2²), the strict model's keyframe
   /// distance in units of the tolerances. The tolerances let a motion meet its keyframes at

@@ -8,6 +8,7 @@
 
 #include "saltus/dynamics/inverse_dynamics.h"
 #include "saltus/evaluation/flight_state.h"
+#include "saltus/evaluation/joint_loads.h"
 #include "saltus/evaluation/simulate.h"
 #include "saltus/motion/interpolate.h"
 #include "saltus/optim/option_table.h"
@@ -192,6 +193,23 @@ bool refine(std::vector<int>& subdivisions, const std::vector<double>& residual,
   return changed;
 }
 
+/// Least joint effort's per-joint scales: s_j = P / max(P_j, floor), P_j the input's peak
+/// moment at joint j and P their root mean square, so that a joint counts by its load against
+/// the input's (the rise the issue bounds) while the term keeps the size it has unscaled.
+std::vector<double> joint_load_scales(const DenseCheck& input) {
+  std::vector<double> peaks;
+  for (std::size_t j = 1; j < input.joint_peaks.size(); ++j)
+    peaks.push_back(std::max(input.joint_peaks[j].moment_Nm, kJointMomentFloorNm));
+  if (peaks.empty()) return {};
+  double mean_square = 0.0;
+  for (const double p : peaks)
+    mean_square += p * p;
+  const double reference = std::sqrt(mean_square / static_cast<double>(peaks.size()));
+  for (double& p : peaks)
+    p = reference / p;
+  return peaks;
+}
+
 }  // namespace
 
 OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
@@ -355,34 +373,40 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       best.solve.solved && !(cancel && cancel->load())) {
     MotionNlpOptions polish_options = nlp_options;
     polish_options.subdivisions = best_subdivisions;
-    polish_options.joint_load_weight = joint_load_weight;
     polish_options.root_moment_weight = kPolishRootMomentWeight;
+    polish_options.joint_load_scales = joint_load_scales(result.before.check);
     polish_options.optimize_timing = false;
     SolverOptions polish_solver = options.solver;
     polish_solver.warm_start = false;  // no time variables: another layout
-    Solved polished = solve_level(motion, best.optimized, model, best.trajectory, polish_options,
-                                  polish_solver, counted, cancel);
-    iterations += polished.solve.iterations;
-    restarts += polished.solve.restarts;
-    seconds += polished.solve.seconds;
     if (!best_flown) best_flown = fly(best.optimized, model, options.nlp.samples);
-    Flown polished_flown = fly(polished.optimized, model, options.nlp.samples);
     JointLoadPolish& p = result.joint_load_polish.emplace();
     p.avg_root_force_before = best_force;
-    p.avg_root_force_after =
-        dense_check(model, polished.trajectory, options.nlp.samples).metrics.avg_root_force;
     p.landing_drift_before_deg = best_flown->drift_deg;
-    p.landing_drift_after_deg = polished_flown.drift_deg;
-    p.iterations = polished.solve.iterations;
-    p.status = polished.solve.status;
-    p.kept = polished.solve.solved &&
-             (p.avg_root_force_after <= kPolishMaxRootForce ||
-              p.avg_root_force_after <= p.avg_root_force_before) &&
-             (p.landing_drift_after_deg <= rules.max_landing_drift_deg ||
-              p.landing_drift_after_deg <= p.landing_drift_before_deg);
-    if (p.kept) {
-      best = std::move(polished);
-      best_flown = std::move(polished_flown);
+    for (double weight = joint_load_weight; p.attempts < kPolishAttempts && !p.kept;
+         weight *= 0.5) {
+      if (cancel && cancel->load()) break;
+      polish_options.joint_load_weight = weight;
+      Solved polished = solve_level(motion, best.optimized, model, best.trajectory, polish_options,
+                                    polish_solver, counted, cancel);
+      iterations += polished.solve.iterations;
+      restarts += polished.solve.restarts;
+      seconds += polished.solve.seconds;
+      Flown polished_flown = fly(polished.optimized, model, options.nlp.samples);
+      p.weight = weight;
+      ++p.attempts;
+      p.avg_root_force_after = polished_flown.evaluation.metrics.avg_root_force;
+      p.landing_drift_after_deg = polished_flown.drift_deg;
+      p.iterations += polished.solve.iterations;
+      p.status = polished.solve.status;
+      p.kept = polished.solve.solved &&
+               (p.avg_root_force_after <= kPolishMaxRootForce ||
+                p.avg_root_force_after <= p.avg_root_force_before) &&
+               (p.landing_drift_after_deg <= rules.max_landing_drift_deg ||
+                p.landing_drift_after_deg <= p.landing_drift_before_deg);
+      if (p.kept) {
+        best = std::move(polished);
+        best_flown = std::move(polished_flown);
+      }
     }
   }
 

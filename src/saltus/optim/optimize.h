@@ -106,6 +106,8 @@ double largest_control_turn(const Trajectory<double>& trajectory, int first_segm
 /// N: the least-joint-effort polish may trade root force for joint loads up to this average
 /// root force (a flight's true residual is held to it: docs/optimizer.md, "Joint loads").
 inline constexpr double kPolishMaxRootForce = 0.5;
+/// A polish that is not kept is tried again at half the weight, at most this many times in all.
+inline constexpr int kPolishAttempts = 3;
 
 /// The polish's MotionNlpOptions::root_moment_weight: it may trade root force for joint loads,
 /// not root moment, which a twisting body turns into degrees at landing (with 1, M7's free flight
@@ -115,13 +117,16 @@ inline constexpr double kPolishRootMomentWeight = 100.0;
 /// Least joint effort (MotionNlpOptions::joint_load_weight > 0): a last solve at the keyframe
 /// times the levels found, with the joint loads in the objective; kept when it solved with an
 /// average root force within kPolishMaxRootForce, or no larger than before, and its free flight
-/// lands within AutomaticResolution::max_landing_drift_deg of it, or no farther than before.
+/// lands within AutomaticResolution::max_landing_drift_deg of it, or no farther than before;
+/// otherwise tried again at half the weight (kPolishAttempts). The figures are the last try's.
 struct JointLoadPolish {
+  double weight = 0.0;  ///< the last try's joint-load weight, N²/(N·m)²
+  int attempts = 0;
   double avg_root_force_before = 0.0;     ///< N, the best level's (dense check)
   double avg_root_force_after = 0.0;      ///< N, the polished motion's
   double landing_drift_before_deg = 0.0;  ///< see OptimizationResult::landing_drift_deg
   double landing_drift_after_deg = 0.0;
-  int iterations = 0;
+  int iterations = 0;  ///< over every try
   std::string status;
   bool kept = false;
 };

@@ -1,6 +1,7 @@
 #include "saltus/optim/terms/joint_load_term.h"
 
 #include <cmath>
+#include <utility>
 
 #include "saltus/math/gauss_legendre.h"
 
@@ -11,7 +12,8 @@ constexpr int kNodesPerSpan = 3;
 }
 
 JointLoadTerm::JointLoadTerm(const TrajectoryLayout& layout, const std::vector<double>& knots,
-                             double duration, double weight) {
+                             double duration, double weight, std::vector<double> scales)
+    : scales_(std::move(scales)) {
   const QuadratureRule rule = gauss_lobatto(kNodesPerSpan);
   for (int span = 3; span < layout.control_count(); ++span) {
     const double length = knots.at(span + 1) - knots.at(span);
@@ -24,12 +26,20 @@ JointLoadTerm::JointLoadTerm(const TrajectoryLayout& layout, const std::vector<d
   jacobians_.resize(nodes_.size());
 }
 
+template <typename Rows>
+void JointLoadTerm::scale_rows(Rows& rows) const {
+  for (std::size_t j = 0; j < scales_.size(); ++j)
+    rows.middleRows(3 * static_cast<Eigen::Index>(j), 3) *= scales_[j];
+}
+
 const std::vector<Eigen::VectorXd>& JointLoadTerm::values(NlpEvaluations& at) {
   if (values_generation_ == at.generation()) return values_;
   at.for_each_range(static_cast<int>(nodes_.size()),
                     [this](int, RootWrenchDerivatives& evaluator, int begin, int end) {
-                      for (int n = begin; n < end; ++n)
+                      for (int n = begin; n < end; ++n) {
                         values_[n] = evaluator.joint_moments_on_span(nodes_[n].span, nodes_[n].xi);
+                        scale_rows(values_[n]);
+                      }
                     });
   values_generation_ = at.generation();
   return values_;
@@ -37,13 +47,17 @@ const std::vector<Eigen::VectorXd>& JointLoadTerm::values(NlpEvaluations& at) {
 
 const std::vector<LocalJacobian<Eigen::Dynamic>>& JointLoadTerm::jacobians(NlpEvaluations& at) {
   if (jacobians_generation_ == at.generation()) return jacobians_;
-  at.for_each_range(static_cast<int>(nodes_.size()), [this](int, RootWrenchDerivatives& evaluator,
-                                                            int begin, int end) {
-    for (int n = begin; n < end; ++n) {
-      evaluator.joint_moments_jacobian_on_span(nodes_[n].span, nodes_[n].xi, jacobians_[n]);
-      values_[n] = jacobians_[n].value;
-    }
-  });
+  at.for_each_range(static_cast<int>(nodes_.size()),
+                    [this](int, RootWrenchDerivatives& evaluator, int begin, int end) {
+                      for (int n = begin; n < end; ++n) {
+                        LocalJacobian<Eigen::Dynamic>& jac = jacobians_[n];
+                        evaluator.joint_moments_jacobian_on_span(nodes_[n].span, nodes_[n].xi, jac);
+                        scale_rows(jac.value);
+                        scale_rows(jac.control);
+                        scale_rows(jac.time);
+                        values_[n] = jac.value;
+                      }
+                    });
   values_generation_ = jacobians_generation_ = at.generation();
   return jacobians_;
 }

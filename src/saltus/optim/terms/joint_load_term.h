@@ -26,8 +26,9 @@ class JointLoadTerm : public ObjectiveTerm {
   /// @param knots     the starting knot vector (the nodes' spans and fixed weights)
   /// @param duration  T, s
   /// @param weight    w, N² per (N·m)²
+  /// @param scales    s_j, each non-root joint's moment counted as s_j·n_j (empty: all 1)
   JointLoadTerm(const TrajectoryLayout& layout, const std::vector<double>& knots, double duration,
-                double weight);
+                double weight, std::vector<double> scales = {});
 
   std::string name() const override { return "joint loads"; }
   double value(NlpEvaluations& at) override;
@@ -44,8 +45,12 @@ class JointLoadTerm : public ObjectiveTerm {
   };
   const std::vector<Eigen::VectorXd>& values(NlpEvaluations& at);
   const std::vector<LocalJacobian<Eigen::Dynamic>>& jacobians(NlpEvaluations& at);
+  /// Multiplies joint j's three rows of `rows` (values or a Jacobian) by s_j.
+  template <typename Rows>
+  void scale_rows(Rows& rows) const;
 
   std::vector<Node> nodes_;
+  std::vector<double> scales_;
   std::vector<std::pair<int, int>> spans_;  ///< [first, end) nodes of each knot span
   std::vector<Eigen::VectorXd> values_;
   std::vector<LocalJacobian<Eigen::Dynamic>> jacobians_;
