@@ -304,7 +304,16 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
     iterations += solved.solve.iterations;
     restarts += solved.solve.restarts;
     seconds += solved.solve.seconds;
-    DenseCheck check = dense_check(model, solved.trajectory, options.nlp.samples);
+    // Only the automatic resolution decides by the drift in its levels (a free flight: ~50 ms);
+    // the free flight's evaluation holds the level's dense check, so it is not run twice.
+    std::optional<Flown> flown;
+    DenseCheck check;
+    if (automatic && !coarse) {
+      flown = fly(solved.optimized, model, options.nlp.samples);
+      check = flown->evaluation.check;
+    } else {
+      check = dense_check(model, solved.trajectory, options.nlp.samples);
+    }
     double force = check.metrics.avg_root_force;
     if (coarse && solved.solve.solved && force <= rules.target_force &&
         !(cancel && cancel->load())) {
@@ -317,18 +326,17 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       iterations += finished.solve.iterations;
       restarts += finished.solve.restarts;
       seconds += finished.solve.seconds;
-      const DenseCheck finished_check =
-          dense_check(model, finished.trajectory, options.nlp.samples);
-      if (finished.solve.solved && finished_check.metrics.avg_root_force <= force) {
+      Flown finished_flown = fly(finished.optimized, model, options.nlp.samples);
+      if (finished.solve.solved &&
+          finished_flown.evaluation.check.metrics.avg_root_force <= force) {
         finished.solve.iterations += solved.solve.iterations;
         solved = std::move(finished);
-        check = finished_check;
+        check = finished_flown.evaluation.check;
         force = check.metrics.avg_root_force;
+        flown = std::move(finished_flown);
       }
     }
-    // Only the automatic resolution decides by the drift in its levels (a free flight: ~50 ms).
-    std::optional<Flown> flown;
-    if (automatic) flown = fly(solved.optimized, model, options.nlp.samples);
+    if (automatic && !flown) flown = fly(solved.optimized, model, options.nlp.samples);
     const double drift = flown ? flown->drift_deg : 0.0;
     result.levels.push_back(
         {subdivisions, force, drift, solved.solve.iterations, solved.solve.status});
