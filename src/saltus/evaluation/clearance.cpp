@@ -6,6 +6,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "saltus/base/constants.h"
 #include "saltus/body/segment_names.h"
 
 namespace saltus {
@@ -164,7 +165,7 @@ std::optional<DiveEntry> dive_entry(const BodyModel& model, const Apparatus& app
   const Eigen::Vector3d line = (1.0 - f) * body_line(model, a, foot_l, foot_r, thorax) +
                                f * body_line(model, b, foot_l, foot_r, thorax);
   const double horizontal = std::hypot(line.x(), line.z());
-  out.angle_to_vertical_deg = std::atan2(horizontal, std::abs(line.y())) * 180.0 / M_PI;
+  out.angle_to_vertical_deg = std::atan2(horizontal, std::abs(line.y())) * kDegreesPerRadian;
   out.head_first = line.y() < 0.0;
   out.vertical = out.angle_to_vertical_deg <= kVerticalEntryToleranceDeg;
   BodyPoint first{0, false};
