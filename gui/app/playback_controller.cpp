@@ -5,6 +5,8 @@
 #include <QSettings>
 
 #include "app/timeline_widget.h"
+#include "saltus/evaluation/apparatus.h"
+#include "saltus/evaluation/clearance.h"
 
 namespace saltus::gui {
 
@@ -61,6 +63,12 @@ void PlaybackController::on_workspace(WorkspaceChange change) {
   const double t = time();
   timeline_->set_motion(d.duration(), d.frame_count(ws.stage()),
                         d.evaluation(Stage::kBefore).keyframe_times, optimised);
+  // The closest pass to the apparatus and a dive's entry, of the stage shown.
+  const std::vector<SampleRecord>& samples = d.evaluation(ws.stage()).samples;
+  const Apparatus apparatus = apparatus_for(d.file().model, d.file().motion.takeoff, samples);
+  timeline_->set_flags(apparatus_flags(apparatus_clearance(d.file().model, apparatus, samples),
+                                       dive_entry(d.file().model, apparatus, samples),
+                                       d.duration()));
   // A new motion starts at take-off; an edit, a run or another stage keep the moment shown.
   timeline_->seek(change == WorkspaceChange::kOpened ? 0.0 : std::min(t, d.duration()));
 }

@@ -9,6 +9,7 @@
 #include <QProxyStyle>
 #include <QSignalBlocker>
 #include <QSlider>
+#include <QStringList>
 #include <QStyle>
 #include <QStyleOptionSlider>
 #include <QToolButton>
@@ -40,6 +41,15 @@ void TickStrip::set_ticks(std::vector<KeyframeTick> ticks) {
   update();
 }
 
+void TickStrip::set_flags(std::vector<TimelineFlag> flags) {
+  flags_ = std::move(flags);
+  QStringList lines;
+  for (const TimelineFlag& f : flags_)
+    lines << QString::fromStdString(f.text);
+  setToolTip(lines.join('\n'));
+  update();
+}
+
 QSize TickStrip::sizeHint() const {
   return {200, 14};
 }
@@ -67,6 +77,31 @@ void TickStrip::paintEvent(QPaintEvent*) {
       painter.drawLine(x, 0, x, height() / 2);
     else
       painter.drawLine(x, height() / 2, x, height());
+  }
+  // Flags: a triangle pointing up at the moment, over the whole strip's height.
+  painter.setRenderHint(QPainter::Antialiasing);
+  for (const TimelineFlag& flag : flags_) {
+    const int x = x0 + static_cast<int>(flag.fraction * span + 0.5);
+    QColor colour;
+    switch (flag.kind) {
+      case FlagKind::kClearance:
+        colour = QColor(44, 160, 44);
+        break;
+      case FlagKind::kCollision:
+        colour = QColor(214, 39, 40);
+        break;
+      case FlagKind::kEntry:
+        colour = QColor(31, 119, 180);
+        break;
+      case FlagKind::kEntryOffLine:
+        colour = QColor(148, 103, 189);
+        break;
+    }
+    const int h = height(), w = h / 2 + 1;
+    const QPoint triangle[3] = {{x, 0}, {x - w, h}, {x + w, h}};
+    painter.setPen(QPen(colour.darker(130), 1));
+    painter.setBrush(colour);
+    painter.drawPolygon(triangle, 3);
   }
 }
 
@@ -98,7 +133,8 @@ TimelineWidget::TimelineWidget(QWidget* parent) : QWidget(parent) {
   slider_->setStyle(jump);
   slider_->setToolTip(
       tr("Click or drag to go to a time. Ticks: grey = given keyframe times, orange = "
-         "optimised"));
+         "optimised. Triangles: the closest pass to the apparatus (green clear, red inside it) "
+         "and a dive's entry (blue vertical, purple not); point at them for the figures"));
   ticks_ = new TickStrip(slider_, this);
 
   speed_ = new QComboBox(this);
@@ -150,6 +186,14 @@ void TimelineWidget::set_motion(double duration, int frame_count, const std::vec
     slider_->setPageStep(std::max(1, frame_count / 10));
   }
   emit_time();
+}
+
+void TimelineWidget::set_flags(std::vector<TimelineFlag> flags) {
+  ticks_->set_flags(std::move(flags));
+}
+
+const std::vector<TimelineFlag>& TimelineWidget::flags() const {
+  return ticks_->flags();
 }
 
 void TimelineWidget::seek(double t) {

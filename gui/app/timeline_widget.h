@@ -1,8 +1,10 @@
 #pragma once
 /// @file
 /// Playback controls: play/pause, step, a scrub slider over the sample frames with keyframe ticks
-/// (given times grey, optimised times orange), speed 0.1×-2×, loop and the time. Owns the
-/// Timeline model and the playback clock; emits time_changed whenever the time moves.
+/// (given times grey, optimised times orange) and flags (the closest pass to the apparatus, red
+/// when inside it, green when clear; a dive's entry, blue when vertical, purple when not; what
+/// each says in the strip's tooltip), speed 0.1×-2×, loop and the time. Owns the Timeline model
+/// and the playback clock; emits time_changed whenever the time moves.
 
 #include <QElapsedTimer>
 #include <QTimer>
@@ -19,13 +21,16 @@ class QToolButton;
 
 namespace saltus::gui {
 
-/// The strip under the slider where keyframe ticks are drawn.
+/// The strip under the slider where keyframe ticks and flags are drawn.
 class TickStrip : public QWidget {
   Q_OBJECT
 
  public:
   TickStrip(QSlider* slider, QWidget* parent = nullptr);
   void set_ticks(std::vector<KeyframeTick> ticks);
+  /// Flags drawn as small triangles; their texts, one a line, are the strip's tooltip.
+  void set_flags(std::vector<TimelineFlag> flags);
+  const std::vector<TimelineFlag>& flags() const { return flags_; }
   QSize sizeHint() const override;
 
  protected:
@@ -34,6 +39,7 @@ class TickStrip : public QWidget {
  private:
   QSlider* slider_;
   std::vector<KeyframeTick> ticks_;
+  std::vector<TimelineFlag> flags_;
 };
 
 class TimelineWidget : public QWidget {
@@ -45,6 +51,9 @@ class TimelineWidget : public QWidget {
   /// A new motion (or stage): range and frame grid, and keyframe ticks (optimised may be empty).
   void set_motion(double duration, int frame_count, const std::vector<double>& given,
                   const std::vector<double>& optimised);
+  /// The flags of the flight shown (apparatus_flags); empty for none.
+  void set_flags(std::vector<TimelineFlag> flags);
+  const std::vector<TimelineFlag>& flags() const;
   const Timeline& timeline() const { return timeline_; }
   bool playing() const { return timeline_.playing(); }
 

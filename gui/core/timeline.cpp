@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
 #include <stdexcept>
 
@@ -102,6 +103,62 @@ std::vector<KeyframeTick> keyframe_ticks(const std::vector<double>& given,
 
 std::vector<double> speed_choices() {
   return {0.1, 0.25, 0.5, 1.0, 1.5, 2.0};
+}
+
+namespace {
+
+std::string printed(const char* format, ...) __attribute__((format(printf, 1, 2)));
+std::string printed(const char* format, ...) {
+  char buffer[320];
+  va_list args;
+  va_start(args, format);
+  std::vsnprintf(buffer, sizeof buffer, format, args);
+  va_end(args);
+  return buffer;
+}
+
+}  // namespace
+
+std::vector<TimelineFlag> apparatus_flags(const ApparatusClearance& c,
+                                          const std::optional<DiveEntry>& entry, double duration) {
+  const auto fraction = [duration](double t) {
+    return duration > 0.0 ? std::clamp(t / duration, 0.0, 1.0) : 0.0;
+  };
+  std::vector<TimelineFlag> out;
+  TimelineFlag pass;
+  pass.time = c.time_s;
+  pass.fraction = fraction(c.time_s);
+  pass.kind = c.collision ? FlagKind::kCollision : FlagKind::kClearance;
+  const char* where = c.collision ? "inside its space by" : "clear by";
+  if (c.kind == ApparatusKind::kPlatform)
+    pass.text = printed(
+        "Closest to the platform at %.3f s: %s %.2f m (%s, %.2f m %s its edge, %.2f m %s its "
+        "top)%s",
+        c.time_s, where, std::abs(c.min_distance_m), c.point.c_str(), std::abs(c.edge_m),
+        c.edge_m >= 0 ? "behind" : "ahead of", std::abs(c.vertical_m),
+        c.vertical_m >= 0 ? "below" : "above",
+        c.collision ? ": the body would strike the platform" : "");
+  else
+    pass.text = printed(
+        "Closest to the trampoline frame at %.3f s: %s %.2f m (%s, %.2f m %s the bed's edge)%s",
+        c.time_s, where, std::abs(c.min_distance_m), c.point.c_str(), std::abs(c.edge_m),
+        c.edge_m >= 0 ? "inside" : "beyond",
+        c.collision ? ": the body would strike the frame" : "");
+  out.push_back(pass);
+  if (entry) {
+    TimelineFlag e;
+    e.time = entry->time_s;
+    e.fraction = fraction(entry->time_s);
+    e.kind = entry->vertical ? FlagKind::kEntry : FlagKind::kEntryOffLine;
+    e.text = printed("Entry at %.3f s: %s first, body %.1f° from vertical, %s: %s (within %.0f°)",
+                     entry->time_s, entry->first_contact.c_str(), entry->angle_to_vertical_deg,
+                     entry->head_first ? "head first" : "feet first",
+                     entry->vertical ? "vertical" : "not vertical", kVerticalEntryToleranceDeg);
+    out.push_back(e);
+  }
+  std::stable_sort(out.begin(), out.end(),
+                   [](const TimelineFlag& a, const TimelineFlag& b) { return a.time < b.time; });
+  return out;
 }
 
 std::string format_time(double time, double duration) {

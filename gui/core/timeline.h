@@ -1,11 +1,15 @@
 #pragma once
 /// @file
 /// Playback maths behind the timeline widget: a current time on [0, T], the frame grid it snaps
-/// to when stepping (the motion's samples), speed, loop and where the keyframe ticks go. No
-/// widgets, so all of it is unit-tested.
+/// to when stepping (the motion's samples), speed, loop, where the keyframe ticks go and the
+/// flags of the closest pass to the apparatus and a dive's entry. No widgets, so all of it is
+/// unit-tested.
 
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "saltus/evaluation/clearance.h"
 
 namespace saltus::gui {
 
@@ -77,6 +81,26 @@ struct KeyframeTick {
 /// Ticks for the given keyframe times and, when not empty, the optimised ones.
 std::vector<KeyframeTick> keyframe_ticks(const std::vector<double>& given,
                                          const std::vector<double>& optimised, double duration);
+
+enum class FlagKind {
+  kClearance,     ///< the closest pass to the apparatus, clear of it
+  kCollision,     ///< the closest pass is inside the platform's space or the frame
+  kEntry,         ///< a dive's entry, vertical
+  kEntryOffLine,  ///< a dive's entry, not vertical
+};
+
+/// A moment flagged on the timeline, with what a coach reads in its tooltip.
+struct TimelineFlag {
+  double time = 0.0;      ///< s
+  double fraction = 0.0;  ///< time / T, in [0, 1]
+  FlagKind kind = FlagKind::kClearance;
+  std::string text;  ///< "Closest to the platform: inside its space by 0.52 m (left toes, ...)"
+};
+
+/// The flags of a flight: its closest pass to the apparatus and, for a dive, its entry
+/// (evaluation/clearance.h), in time order. `duration` > 0.
+std::vector<TimelineFlag> apparatus_flags(const ApparatusClearance& clearance,
+                                          const std::optional<DiveEntry>& entry, double duration);
 
 /// The speeds the speed selector offers, slowest first, 1× included.
 std::vector<double> speed_choices();

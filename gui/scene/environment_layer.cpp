@@ -13,15 +13,8 @@ namespace saltus::gui::scene {
 
 namespace {
 
-// Trampoline dimensions (FIG apparatus norms): bed 4.28 m × 2.14 m, frame with pads 5.05 × 2.91.
-// The athlete travels along the bed's long side.
-constexpr double kBedLength = 4.28, kBedWidth = 2.14;
-constexpr double kFrameLength = 5.05, kFrameWidth = 2.91;
-// Platform (FINA diving facilities rules: at least 2 m wide and 6 m long for the 5 m level),
-// 0.25 m thick, its front edge this far ahead of the take-off CoM (the toes at the edge).
-constexpr double kPlatformWidth = 3.0, kPlatformLength = 6.0, kPlatformThickness = 0.25;
-constexpr double kPlatformEdgeAhead = 0.15;
-constexpr double kPillarSide = 1.2;  ///< m, the square column under the platform's back
+// The apparatus's size comes from the library (evaluation/apparatus.h): the clearances are
+// measured against the same bed, frame and platform.
 constexpr double kWaterSize = 24.0;  ///< m, side of the water (or floor) drawn
 constexpr int kGridCells = 24;       ///< 1 m squares on the floor or the water
 
@@ -31,16 +24,6 @@ const Rgb kConcreteColour{0.70, 0.70, 0.68};
 const Rgb kPlatformTopColour{0.62, 0.50, 0.40};  ///< the non-slip surface
 const Rgb kWaterColour{0.12, 0.42, 0.64};
 const Rgb kGridColour{0.55, 0.58, 0.65};
-
-/// World from the apparatus frame: origin at the take-off point, z along the travel direction,
-/// y up.
-Eigen::Affine3d world_from_apparatus(const Apparatus& a) {
-  const double heading = std::atan2(a.direction.x(), a.direction.z());
-  Eigen::Affine3d t = Eigen::Affine3d::Identity();
-  t.translate(a.takeoff_point);
-  t.rotate(Eigen::AngleAxisd(heading, Eigen::Vector3d::UnitY()));
-  return t;
-}
 
 vtkSmartPointer<vtkActor> box(const Eigen::Vector3d& centre, const Eigen::Vector3d& size,
                               const Rgb& colour, const Eigen::Affine3d& pose) {
@@ -114,8 +97,11 @@ void EnvironmentLayer::build(const Apparatus& a, const Eigen::AlignedBox3d& flig
   frame_ = flight;
   if (a.kind == ApparatusKind::kTrampoline) {
     // Frame with pads (blue) and the bed (dark webbing), the bed's top where the feet leave.
-    add(box({0, -0.045, 0}, {kFrameWidth, 0.06, kFrameLength}, kFrameColour, pose), true);
-    add(box({0, -0.01, 0}, {kBedWidth, 0.02, kBedLength}, kBedColour, pose), true);
+    add(box({0, kFrameTop - 0.5 * kFrameThickness, 0}, {kFrameWidth, kFrameThickness, kFrameLength},
+            kFrameColour, pose),
+        true);
+    add(box({0, -0.5 * kBedThickness, 0}, {kBedWidth, kBedThickness, kBedLength}, kBedColour, pose),
+        true);
     add(plane(a.takeoff_point - Eigen::Vector3d(0, 0.08, 0), kWaterSize / 2, kGridCells / 2,
               kGridColour, true),
         false);

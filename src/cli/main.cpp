@@ -19,6 +19,7 @@
 #include "saltus/base/constants.h"
 #include "saltus/base/input_error.h"
 #include "saltus/base/text_format.h"
+#include "saltus/evaluation/clearance.h"
 #include "saltus/evaluation/evaluate.h"
 #include "saltus/evaluation/force_metrics.h"
 #include "saltus/evaluation/joint_loads.h"
@@ -132,6 +133,55 @@ std::string rotation_words(const nlohmann::json& r) {
   return out + more;
 }
 
+/// One line on the body's closest pass to the apparatus, from result.json's "clearance", e.g.
+/// "closest to the platform: inside its space by 0.21 m (left toes at 1.531 s, 0.57 m behind
+/// its edge, 1.30 m below its top): the body would strike the platform".
+void print_clearance(const nlohmann::json& c) {
+  const double d = c.at("min_distance_m").get<double>();
+  const bool collision = c.at("collision").get<bool>();
+  const std::string where = collision ? "inside its space by" : "clear by";
+  const std::string who = c.at("point").get<std::string>();
+  const double t = c.at("time_s").get<double>();
+  if (c.at("apparatus").get<std::string>() == "platform") {
+    const double behind = c.at("behind_edge_m").get<double>();
+    const double below = c.at("below_top_m").get<double>();
+    std::printf(
+        "  closest to the platform: %s %.2f m (%s at %.3f s, %.2f m %s its edge, %.2f m %s "
+        "its top)%s\n",
+        where.c_str(), std::abs(d), who.c_str(), t, std::abs(behind),
+        behind >= 0 ? "behind" : "ahead of", std::abs(below), below >= 0 ? "below" : "above",
+        collision ? ": the body would strike the platform" : "");
+  } else {
+    const double inside = c.at("inside_bed_edge_m").get<double>();
+    const double above = c.at("above_frame_m").get<double>();
+    std::printf(
+        "  closest to the trampoline frame: %s %.2f m (%s at %.3f s, %.2f m %s the bed's "
+        "edge, %.2f m %s the frame)%s\n",
+        where.c_str(), std::abs(d), who.c_str(), t, std::abs(inside),
+        inside >= 0 ? "inside" : "beyond", std::abs(above), above >= 0 ? "above" : "below",
+        collision ? ": the body would strike the frame" : "");
+  }
+}
+
+/// One line on a dive's entry, from result.json's "entry", e.g. "entry: right hand first at
+/// 1.490 s, body 1.1 deg from vertical, head first: vertical (tolerance 10 deg); CoM 1.05 m above
+/// the water".
+void print_entry(const nlohmann::json& e) {
+  const double angle = e.at("angle_to_vertical_deg").get<double>();
+  std::printf(
+      "  entry: %s first at %.3f s, body %.1f deg from vertical, %s: %s (tolerance %.0f deg); "
+      "CoM %.2f m above the water\n",
+      e.at("first_contact").get<std::string>().c_str(), e.at("time_s").get<double>(), angle,
+      e.at("head_first").get<bool>() ? "head first" : "feet first",
+      e.at("vertical").get<bool>() ? "vertical" : "not vertical",
+      saltus::kVerticalEntryToleranceDeg, e.at("com_height_m").get<double>());
+}
+
+void print_apparatus(const nlohmann::json& written) {
+  if (written.contains("clearance")) print_clearance(written.at("clearance"));
+  if (written.contains("entry")) print_entry(written.at("entry"));
+}
+
 void print_outputs(const std::string& out_dir, double seconds) {
   std::printf("  wrote %s/{result.json, trajectory.csv, model.json} in %.3f s\n",
               absolute(out_dir).c_str(), seconds);
@@ -155,6 +205,7 @@ int run_evaluate(const CommonArgs& args) {
                 e.keyframe_errors.max_rotation_error_deg);
     std::printf("  Yeadon's angles: %s\n",
                 rotation_words(written.at("rotation").at("before")).c_str());
+    print_apparatus(written);
     print_outputs(args.out_dir, seconds);
   }
   return 0;
@@ -188,6 +239,7 @@ int run_simulate(const CommonArgs& args) {
         s.landing_root_error_deg, s.landing_com_error_m);
     std::printf("  landing vs the motion's own end: whole-body orientation off by %.2f deg\n",
                 s.landing_vs_motion_deg);
+    print_apparatus(written);
     print_outputs(args.out_dir, seconds);
   }
   return 0;

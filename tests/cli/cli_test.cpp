@@ -3,10 +3,16 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 
+#include "saltus/evaluation/apparatus.h"
+#include "saltus/formats/model_file.h"
+#include "saltus/formats/trajectory_csv.h"
 #include "support/cli_runner.h"
 
 namespace saltus {
@@ -100,6 +106,100 @@ TEST(Cli, SimulateReportsTheLanding) {
   EXPECT_TRUE(result["landing"]["root_error_deg"].is_number());
   // A free flight needs no root force (up to integration error).
   EXPECT_LT(result["before"]["avg_root_force"].get<double>(), 1e-6);
+}
+
+/// The dive's closest pass to the platform, by brute force over the written trajectory.csv and
+/// model.json: every segment origin and shape end against the platform's space (behind its front
+/// edge, below its top, across its width), the platform placed as the app draws it, from the
+/// CoM's highest row on.
+double written_platform_clearance(const fs::path& folder, const nlohmann::json& motion) {
+  const BodyModel model = load_body_model((folder / "model.json").string());
+  const TrajectoryCsv csv = read_trajectory_csv((folder / "trajectory.csv").string());
+  const auto points = [&](const SampleRecord& s) {
+    std::vector<Eigen::Vector3d> out;
+    for (std::size_t i = 0; i < model.segments.size(); ++i) {
+      out.push_back(s.segment_position[i]);
+      out.push_back(s.segment_position[i] +
+                    s.segment_rotation[i] * Eigen::Vector3d(0, model.segments[i].shape.length, 0));
+    }
+    return out;
+  };
+  const auto lowest = [&](const SampleRecord& s) {
+    double y = std::numeric_limits<double>::infinity();
+    for (const Eigen::Vector3d& p : points(s))
+      y = std::min(y, p.y());
+    return y;
+  };
+  const double top = lowest(csv.samples.front()), water = lowest(csv.samples.back());
+  const auto& takeoff = motion["takeoff"];
+  const Eigen::Vector3d com(takeoff["com_position"][0], 0.0, takeoff["com_position"][2]);
+  const Eigen::Vector3d ahead =
+      Eigen::Vector3d(takeoff["com_velocity"][0], 0.0, takeoff["com_velocity"][2]).normalized();
+  const Eigen::Vector3d side = Eigen::Vector3d::UnitY().cross(ahead);
+  std::size_t apex = 0;
+  for (std::size_t k = 0; k < csv.samples.size(); ++k)
+    if (csv.samples[k].com.y() > csv.samples[apex].com.y()) apex = k;
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t k = apex; k < csv.samples.size(); ++k)
+    for (const Eigen::Vector3d& p : points(csv.samples[k])) {
+      const double forward = (p - com).dot(ahead) - kPlatformEdgeAhead;  // > 0: ahead of the edge
+      const double up = p.y() - top;
+      const double across = std::abs((p - com).dot(side)) - 0.5 * kPlatformWidth;
+      const double outside =
+          std::sqrt(std::pow(std::max(forward, 0.0), 2) + std::pow(std::max(up, 0.0), 2) +
+                    std::pow(std::max(across, 0.0), 2));
+      best = std::min(best,
+                      outside > 0.0 ? outside : -std::min({-forward, -up, -across, p.y() - water}));
+    }
+  return best;
+}
+
+TEST(Cli, EvaluateAndSimulateReportTheDivesClearanceAndEntry) {
+  const std::string dive =
+      std::string(SALTUS_EXAMPLES_DIR) + "/motions/dive-5m-front-one-and-a-half-twists.motion.json";
+  TempDir dir;
+  std::string evaluate_output;
+  for (const char* verb : {"evaluate", "simulate"}) {
+    const auto run = run_cli(std::string(verb) + " " + dive + " --out " + (dir / verb));
+    ASSERT_EQ(run.status, 0) << run.output;
+    if (std::string(verb) == "evaluate") evaluate_output = run.output;
+    EXPECT_NE(run.output.find("  closest to the platform: "), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("  entry: "), std::string::npos) << run.output;
+    const auto result = read_json(dir / (std::string(verb) + "/result.json"));
+    ASSERT_TRUE(result.contains("clearance")) << verb;
+    ASSERT_TRUE(result.contains("entry")) << verb;
+    const auto& c = result["clearance"];
+    EXPECT_EQ(c["apparatus"], "platform");
+    for (const char* key : {"from_s", "min_distance_m", "time_s", "behind_edge_m", "below_top_m"})
+      EXPECT_TRUE(c[key].is_number()) << key;
+    for (const char* key : {"segment", "point"})
+      EXPECT_TRUE(c[key].is_string()) << key;
+    EXPECT_EQ(c["collision"].get<bool>(), c["min_distance_m"].get<double>() < 0.0);
+    // The same figure from the written trajectory, up to the CSV's printed digits.
+    EXPECT_NEAR(c["min_distance_m"].get<double>(),
+                written_platform_clearance(dir.path() / verb, read_json(dive)), 1e-5)
+        << verb;
+    const auto& e = result["entry"];
+    for (const char* key : {"time_s", "com_height_m", "angle_to_vertical_deg"})
+      EXPECT_TRUE(e[key].is_number()) << key;
+    EXPECT_EQ(e["vertical"].get<bool>(), e["angle_to_vertical_deg"].get<double>() <= 10.0);
+  }
+  // The evaluated dive (its keyframes as they are) passes through the platform's space.
+  const auto evaluated = read_json(dir / "evaluate/result.json");
+  EXPECT_TRUE(evaluated["clearance"]["collision"].get<bool>());
+  EXPECT_NE(evaluate_output.find("the body would strike the platform"), std::string::npos)
+      << evaluate_output;
+  // A trampoline skill reports the frame and no entry.
+  const auto m1 = run_cli("evaluate " + test::m1_path() + " --out " + (dir / "m1"));
+  ASSERT_EQ(m1.status, 0) << m1.output;
+  EXPECT_NE(m1.output.find("  closest to the trampoline frame: clear by "), std::string::npos)
+      << m1.output;
+  EXPECT_EQ(m1.output.find("  entry: "), std::string::npos) << m1.output;
+  const auto r = read_json(dir / "m1/result.json");
+  EXPECT_EQ(r["clearance"]["apparatus"], "trampoline");
+  EXPECT_TRUE(r["clearance"]["inside_bed_edge_m"].is_number());
+  EXPECT_TRUE(r["clearance"]["above_frame_m"].is_number());
+  EXPECT_FALSE(r.contains("entry"));
 }
 
 TEST(Cli, ReplacesAnEarlierResultButNotOtherFolders) {

@@ -41,6 +41,8 @@
 #include "app/view_controller.h"
 #include "gui/support/image_checks.h"
 #include "gui_core/test_motion.h"
+#include "saltus/evaluation/apparatus.h"
+#include "saltus/evaluation/clearance.h"
 #include "support/cli_runner.h"
 
 namespace saltus::gui {
@@ -234,6 +236,49 @@ TEST_F(MainWindowTest, AClickOnTheTimelineJumpsToTheTimeUnderTheMouse) {
     // Within two frames of the time under the mouse (a pixel is about a frame here).
     EXPECT_NEAR(window_->time(), fraction * duration, 2.0 * dt) << fraction;
   }
+}
+
+TEST_F(MainWindowTest, TheDivesClosestPassAndEntryAreFlaggedOnTheTimeline) {
+  // The trampoline skill: one green flag, clear of the frame.
+  TimelineWidget* timeline = window_->playback().timeline();
+  ASSERT_EQ(timeline->flags().size(), 1u);
+  EXPECT_EQ(timeline->flags()[0].kind, FlagKind::kClearance);
+  // The dive: the closest pass inside the platform's space and the entry, where the library
+  // puts them for the samples shown.
+  QString error;
+  const std::string dive =
+      std::string(SALTUS_EXAMPLES_DIR) + "/motions/dive-5m-front-one-and-a-half-twists.motion.json";
+  ASSERT_TRUE(window_->open_motion(QString::fromStdString(dive), &error)) << error.toStdString();
+  QApplication::processEvents();
+  const Document& d = window_->document();
+  const std::vector<SampleRecord>& samples = d.evaluation(Stage::kBefore).samples;
+  const Apparatus apparatus = apparatus_for(d.file().model, d.file().motion.takeoff, samples);
+  const ApparatusClearance c = apparatus_clearance(d.file().model, apparatus, samples);
+  const auto entry = dive_entry(d.file().model, apparatus, samples);
+  ASSERT_TRUE(entry.has_value());
+  const std::vector<TimelineFlag>& flags = timeline->flags();
+  ASSERT_EQ(flags.size(), 2u);
+  EXPECT_EQ(flags[0].kind, FlagKind::kCollision);
+  EXPECT_DOUBLE_EQ(flags[0].time, c.time_s);
+  EXPECT_EQ(flags[1].kind, FlagKind::kEntry);
+  EXPECT_DOUBLE_EQ(flags[1].time, entry->time_s);
+  // What a coach reads on pointing at them.
+  auto* strip = timeline->findChild<TickStrip*>();
+  ASSERT_NE(strip, nullptr);
+  EXPECT_TRUE(strip->toolTip().contains("the body would strike the platform"))
+      << strip->toolTip().toStdString();
+  EXPECT_TRUE(strip->toolTip().contains("Entry at")) << strip->toolTip().toStdString();
+  // Drawn: red pixels (the collision) and blue ones (the vertical entry) on the strip.
+  const QImage picture = strip->grab().toImage();
+  int red = 0, blue = 0;
+  for (int y = 0; y < picture.height(); ++y)
+    for (int x = 0; x < picture.width(); ++x) {
+      const QColor p = picture.pixelColor(x, y);
+      red += p.red() > 180 && p.green() < 80 && p.blue() < 80;
+      blue += p.blue() > 150 && p.red() < 60 && p.green() > 90 && p.green() < 150;
+    }
+  EXPECT_GT(red, 10);
+  EXPECT_GT(blue, 10);
 }
 
 TEST_F(MainWindowTest, ResidualArrowsKeepOneScaleBeforeAndAfterOptimisation) {

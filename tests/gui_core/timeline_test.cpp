@@ -1,4 +1,5 @@
-// Timeline maths: time <-> frame, stepping, speed, loop, playback and keyframe ticks.
+// Timeline maths: time <-> frame, stepping, speed, loop, playback, keyframe ticks and the flags
+// of the closest pass to the apparatus and a dive's entry.
 
 #include <gtest/gtest.h>
 
@@ -141,6 +142,48 @@ TEST(KeyframeTicks, PlacesGivenAndOptimisedTimesAlongTheSlider) {
   EXPECT_DOUBLE_EQ(ticks[4].fraction, 0.3);
   EXPECT_DOUBLE_EQ(ticks[5].fraction, 1.0);
   EXPECT_EQ(keyframe_ticks({0.0, 1.0}, {}, 1.0).size(), 2u);
+}
+
+TEST(ApparatusFlags, FlagTheClosestPassAndTheEntryInTimeOrder) {
+  ApparatusClearance c;
+  c.kind = ApparatusKind::kPlatform;
+  c.min_distance_m = -0.52;
+  c.time_s = 1.2;
+  c.point = "left toes";
+  c.edge_m = 0.52;
+  c.vertical_m = 1.29;
+  c.collision = true;
+  DiveEntry e;
+  e.time_s = 1.5;
+  e.first_contact = "right hand";
+  e.angle_to_vertical_deg = 13.7;
+  e.head_first = true;
+  e.vertical = false;
+  const std::vector<TimelineFlag> flags = apparatus_flags(c, e, 1.5);
+  ASSERT_EQ(flags.size(), 2u);
+  EXPECT_EQ(flags[0].kind, FlagKind::kCollision);
+  EXPECT_DOUBLE_EQ(flags[0].fraction, 0.8);
+  EXPECT_EQ(flags[0].text,
+            "Closest to the platform at 1.200 s: inside its space by 0.52 m (left toes, 0.52 m "
+            "behind its edge, 1.29 m below its top): the body would strike the platform");
+  EXPECT_EQ(flags[1].kind, FlagKind::kEntryOffLine);
+  EXPECT_DOUBLE_EQ(flags[1].fraction, 1.0);
+  EXPECT_EQ(flags[1].text,
+            "Entry at 1.500 s: right hand first, body 13.7° from vertical, head first: not "
+            "vertical (within 10°)");
+  // A trampoline: one flag, clear of the frame.
+  c.kind = ApparatusKind::kTrampoline;
+  c.min_distance_m = 0.68;
+  c.edge_m = 0.68;
+  c.collision = false;
+  c.time_s = 3.0;
+  const std::vector<TimelineFlag> one = apparatus_flags(c, std::nullopt, 2.0);
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_EQ(one[0].kind, FlagKind::kClearance);
+  EXPECT_DOUBLE_EQ(one[0].fraction, 1.0);  // clamped to the slider
+  EXPECT_EQ(one[0].text,
+            "Closest to the trampoline frame at 3.000 s: clear by 0.68 m (left toes, 0.68 m "
+            "inside the bed's edge)");
 }
 
 TEST(Timeline, SpeedChoicesSpanTheAllowedRange) {

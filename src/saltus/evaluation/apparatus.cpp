@@ -1,6 +1,7 @@
 #include "saltus/evaluation/apparatus.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -16,6 +17,14 @@ double lowest_body_point(const BodyModel& model, const SampleRecord& sample) {
     lowest = std::min({lowest, origin.y(), end.y()});
   }
   return lowest;
+}
+
+Eigen::Affine3d world_from_apparatus(const Apparatus& a) {
+  const double heading = std::atan2(a.direction.x(), a.direction.z());
+  Eigen::Affine3d t = Eigen::Affine3d::Identity();
+  t.translate(a.takeoff_point);
+  t.rotate(Eigen::AngleAxisd(heading, Eigen::Vector3d::UnitY()));
+  return t;
 }
 
 Apparatus apparatus_for(const BodyModel& model, const Takeoff& takeoff,

@@ -7,6 +7,7 @@
 /// follows from the motion's numbers, so it is decided here.
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <vector>
 
 #include "saltus/body/body_model.h"
@@ -34,6 +35,25 @@ struct Apparatus {
 
 /// A flight that ends this far (m) or more below its take-off is a dive.
 inline constexpr double kDiveDrop = 2.0;
+
+/// The apparatus's size, one set for the app's drawing and the clearances (clearance.h), so the
+/// two cannot disagree. Lengths in m, in the apparatus frame (world_from_apparatus).
+/// Trampoline (FIG apparatus norms): bed 4.28 m × 2.14 m, frame with pads 5.05 × 2.91; the
+/// athlete travels along the bed's long side. The bed's top is where the feet leave; the frame's
+/// top lies just below it.
+inline constexpr double kBedLength = 4.28, kBedWidth = 2.14, kBedThickness = 0.02;
+inline constexpr double kFrameLength = 5.05, kFrameWidth = 2.91, kFrameThickness = 0.06;
+inline constexpr double kFrameTop = -0.015;  ///< the frame's top below the bed's top
+/// Platform (FINA diving facilities rules: at least 2 m wide and 6 m long for the 5 m level),
+/// 0.25 m thick, its front edge this far ahead of the take-off CoM (the toes at the edge), a
+/// square column under its back.
+inline constexpr double kPlatformWidth = 3.0, kPlatformLength = 6.0, kPlatformThickness = 0.25;
+inline constexpr double kPlatformEdgeAhead = 0.15;
+inline constexpr double kPillarSide = 1.2;
+
+/// World from the apparatus frame: origin at the take-off point, z along the travel direction,
+/// y up. A platform lies at z <= kPlatformEdgeAhead, a trampoline's bed is centred on the origin.
+Eigen::Affine3d world_from_apparatus(const Apparatus& apparatus);
 
 /// The lowest point of the body in a sample: the lowest of the segment origins and of the ends
 /// of their shapes (origin + shape.length along the segment's y axis), world y, m.

@@ -57,6 +57,16 @@ void set_joint_loads(ResultJson& r, const BodyModel& model, const DenseCheck& be
   }
 }
 
+/// The closest pass to the apparatus and a dive's entry, from the flight's samples.
+void set_clearance(ResultJson& r, const MotionFile& file,
+                   const std::vector<SampleRecord>& samples) {
+  const Apparatus apparatus = apparatus_for(file.model, file.motion.takeoff, samples);
+  r.clearance = apparatus_clearance(file.model, apparatus, samples);
+  r.clearance->times.clear();
+  r.clearance->distance.clear();
+  r.entry = dive_entry(file.model, apparatus, samples);
+}
+
 /// The fields every result shares.
 ResultJson common_result(const MotionFile& file, ResultJson::Kind kind, const std::string& status,
                          int knots_per_interval) {
@@ -153,6 +163,36 @@ nlohmann::json rotation_json(const YeadonSummary& s) {
           {"peak_twist_rate_time_s", s.peak_twist_rate_time_s}};
 }
 
+/// "clearance": the edge and height keys name what they measure on each apparatus.
+nlohmann::json clearance_json(const ApparatusClearance& c) {
+  const bool platform = c.kind == ApparatusKind::kPlatform;
+  nlohmann::json j = {{"apparatus", platform ? "platform" : "trampoline"},
+                      {"from_s", c.from_s},
+                      {"min_distance_m", c.min_distance_m},
+                      {"time_s", c.time_s},
+                      {"segment", c.segment},
+                      {"segment_end", c.segment_end},
+                      {"point", c.point},
+                      {"collision", c.collision}};
+  if (platform) {
+    j["behind_edge_m"] = c.edge_m;
+    j["below_top_m"] = c.vertical_m;
+  } else {
+    j["inside_bed_edge_m"] = c.edge_m;
+    j["above_frame_m"] = c.vertical_m;
+  }
+  return j;
+}
+
+nlohmann::json entry_json(const DiveEntry& e) {
+  return {{"time_s", e.time_s},
+          {"first_contact", e.first_contact},
+          {"com_height_m", e.com_height_m},
+          {"angle_to_vertical_deg", e.angle_to_vertical_deg},
+          {"head_first", e.head_first},
+          {"vertical", e.vertical}};
+}
+
 YeadonSummary read_rotation(const JsonNode& node) {
   node.require_object();
   YeadonSummary s;
@@ -168,6 +208,39 @@ YeadonSummary read_rotation(const JsonNode& node) {
 bool read_bool(const JsonNode& node) {
   if (!node.value().is_boolean()) node.fail("expected true or false");
   return node.value().get<bool>();
+}
+
+ApparatusClearance read_clearance(const JsonNode& node) {
+  node.require_object();
+  ApparatusClearance c;
+  const JsonNode apparatus = node.at("apparatus");
+  const std::string kind = apparatus.as_string();
+  if (kind != "platform" && kind != "trampoline")
+    apparatus.fail("expected \"platform\" or \"trampoline\", found \"" + kind + "\"");
+  const bool platform = kind == "platform";
+  c.kind = platform ? ApparatusKind::kPlatform : ApparatusKind::kTrampoline;
+  c.from_s = node.at("from_s").as_double();
+  c.min_distance_m = node.at("min_distance_m").as_double();
+  c.time_s = node.at("time_s").as_double();
+  c.segment = node.at("segment").as_string();
+  c.segment_end = read_bool(node.at("segment_end"));
+  c.point = node.at("point").as_string();
+  c.collision = read_bool(node.at("collision"));
+  c.edge_m = node.at(platform ? "behind_edge_m" : "inside_bed_edge_m").as_double();
+  c.vertical_m = node.at(platform ? "below_top_m" : "above_frame_m").as_double();
+  return c;
+}
+
+DiveEntry read_entry(const JsonNode& node) {
+  node.require_object();
+  DiveEntry e;
+  e.time_s = node.at("time_s").as_double();
+  e.first_contact = node.at("first_contact").as_string();
+  e.com_height_m = node.at("com_height_m").as_double();
+  e.angle_to_vertical_deg = node.at("angle_to_vertical_deg").as_double();
+  e.head_first = read_bool(node.at("head_first"));
+  e.vertical = read_bool(node.at("vertical"));
+  return e;
 }
 
 ForceMetrics read_force_metrics(const JsonNode& node) {
@@ -308,6 +381,8 @@ nlohmann::json result_to_json(const ResultJson& r) {
     j["rotation"]["before"] = rotation_json(*r.rotation_before);
     if (r.rotation_after) j["rotation"]["after"] = rotation_json(*r.rotation_after);
   }
+  if (r.clearance) j["clearance"] = clearance_json(*r.clearance);
+  if (r.entry) j["entry"] = entry_json(*r.entry);
   if (const auto& s = r.simulation) {
     j["takeoff_angular_momentum_source"] = s->angular_momentum_source;
     nlohmann::json joints = nlohmann::json::object();
@@ -406,6 +481,8 @@ ResultJson parse_result_json(const nlohmann::json& document, const std::string& 
     r.rotation_before = read_rotation(rotation->at("before"));
     if (const auto after = rotation->find("after")) r.rotation_after = read_rotation(*after);
   }
+  if (const auto clearance = root.find("clearance")) r.clearance = read_clearance(*clearance);
+  if (const auto entry = root.find("entry")) r.entry = read_entry(*entry);
   if (const auto loads = root.find("joint_loads")) {
     loads->require_object();
     const auto peak = [](const JsonNode& node) {
@@ -490,6 +567,7 @@ ResultJson evaluation_result(const MotionFile& file, const MotionEvaluation& e,
   r.takeoff_angular_momentum = e.samples.front().angular_momentum;
   set_joint_loads(r, file.model, e.check, nullptr);
   r.rotation_before = yeadon_summary(e.trajectory, options.samples);
+  set_clearance(r, file, e.samples);
   return r;
 }
 
@@ -513,6 +591,7 @@ ResultJson simulation_result(const MotionFile& file, const SimulationResult& s,
   sim.landing_joint_error_deg = s.landing_joint_error_deg;
   sim.landing_com_error_m = s.landing_com_error_m;
   r.simulation = std::move(sim);
+  set_clearance(r, file, s.samples);
   return r;
 }
 

@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "saltus/evaluation/clearance.h"
 #include "saltus/evaluation/evaluate.h"
 #include "saltus/evaluation/simulate.h"
 #include "saltus/evaluation/yeadon_angles.h"
@@ -77,6 +78,11 @@ struct ResultJson {
   /// of the evaluated, simulated or interpolated motion and of the optimised one; missing from
   /// files before them. A simulation's peak rate is not known (its samples hold no ω): 0.
   std::optional<YeadonSummary> rotation_before, rotation_after;
+  /// The closest pass of the body to the apparatus (evaluation/clearance.h; its per-sample series
+  /// is not written: times and distance read back empty) and, for dives, the entry into the
+  /// water; of the evaluated or simulated motion, missing from optimisations and older files.
+  std::optional<ApparatusClearance> clearance;
+  std::optional<DiveEntry> entry;
 
   struct Simulation {
     /// "motion file", or "best constant fit to the motion's L(t)" ("keyframes" in older files)

@@ -177,7 +177,22 @@ nlohmann::json apparatus_json(const BodyModel& model, const Takeoff& takeoff,
           {"takeoff_height_m", a.takeoff_height},
           {"landing_height_m", a.landing_height},
           {"takeoff_point", page_vector(a.takeoff_point)},
-          {"direction", page_vector(a.direction)}};
+          {"direction", page_vector(a.direction)},
+          // The sizes the app draws and the clearances are measured against, so the page cannot
+          // draw another apparatus.
+          {"sizes",
+           {{"bed_length", kBedLength},
+            {"bed_width", kBedWidth},
+            {"bed_thickness", kBedThickness},
+            {"frame_length", kFrameLength},
+            {"frame_width", kFrameWidth},
+            {"frame_thickness", kFrameThickness},
+            {"frame_top", kFrameTop},
+            {"platform_width", kPlatformWidth},
+            {"platform_length", kPlatformLength},
+            {"platform_thickness", kPlatformThickness},
+            {"platform_edge_ahead", kPlatformEdgeAhead},
+            {"pillar_side", kPillarSide}}}};
 }
 
 /// The settings of result.json the title block lists, those present.

@@ -81,6 +81,14 @@ auto fields(const ResultJson::Optimization& o) {
       o.tolerances ? std::optional(fields(*o.tolerances)) : std::nullopt, o.largest_joint_turn_deg,
       o.resolution ? std::optional(fields(*o.resolution)) : std::nullopt);
 }
+auto fields(const ApparatusClearance& c) {
+  return std::tie(c.kind, c.times, c.distance, c.from_s, c.min_distance_m, c.time_s, c.segment,
+                  c.segment_end, c.point, c.edge_m, c.vertical_m, c.collision);
+}
+auto fields(const DiveEntry& e) {
+  return std::tie(e.time_s, e.first_contact, e.com_height_m, e.angle_to_vertical_deg, e.head_first,
+                  e.vertical);
+}
 template <typename T>
 auto optional_fields(const std::optional<T>& x) {
   return x ? std::optional(fields(*x)) : std::nullopt;
@@ -97,6 +105,8 @@ void expect_same(const ResultJson& a, const ResultJson& b) {
   EXPECT_TRUE(optional_fields(a.keyframe_errors) == optional_fields(b.keyframe_errors));
   EXPECT_EQ(a.takeoff_angular_momentum, b.takeoff_angular_momentum);
   EXPECT_TRUE(optional_fields(a.simulation) == optional_fields(b.simulation));
+  EXPECT_TRUE(optional_fields(a.clearance) == optional_fields(b.clearance));
+  EXPECT_TRUE(optional_fields(a.entry) == optional_fields(b.entry));
   EXPECT_TRUE(optional_fields(a.optimization) == optional_fields(b.optimization));
 }
 
@@ -158,6 +168,31 @@ ResultJson random_result(ResultJson::Kind kind, std::mt19937& rng) {
   }
   if (kind != ResultJson::Kind::kOptimization)
     r.takeoff_angular_momentum = Eigen::Vector3d(any(rng), any(rng), any(rng));
+  if (kind != ResultJson::Kind::kOptimization) {
+    // Either apparatus; a dive's entry only from a platform.
+    ApparatusClearance c;
+    c.kind = rng() % 2 ? ApparatusKind::kPlatform : ApparatusKind::kTrampoline;
+    c.from_s = positive(rng) / 1e4;
+    c.min_distance_m = any(rng) / 1e3;
+    c.time_s = positive(rng) / 1e4;
+    c.segment = rng() % 2 ? "foot_l" : "forearm_r";
+    c.segment_end = rng() % 2;
+    c.point = "point " + std::to_string(rng());
+    c.edge_m = any(rng) / 1e2;
+    c.vertical_m = any(rng) / 1e2;
+    c.collision = c.min_distance_m < 0.0;
+    r.clearance = c;
+    if (c.kind == ApparatusKind::kPlatform) {
+      DiveEntry e;
+      e.time_s = positive(rng) / 1e4;
+      e.first_contact = rng() % 2 ? "right hand" : "head";
+      e.com_height_m = positive(rng) / 1e4;
+      e.angle_to_vertical_deg = std::uniform_real_distribution<double>(0, 90)(rng);
+      e.head_first = rng() % 2;
+      e.vertical = e.angle_to_vertical_deg <= kVerticalEntryToleranceDeg;
+      r.entry = e;
+    }
+  }
   if (kind == ResultJson::Kind::kSimulation) {
     ResultJson::Simulation s;
     s.angular_momentum_source =
@@ -250,9 +285,12 @@ TEST(ResultJson, KeysAreThoseOfDesignSection6) {
                           "max_quaternion_error",
                           "max_rotation_error_deg",
                           "takeoff_angular_momentum",
-                          "residual_check"})
+                          "residual_check",
+                          "clearance"})
     EXPECT_TRUE(e.contains(key)) << key;
-  EXPECT_EQ(e.size(), 22u) << e.dump();
+  // "entry" for dives only.
+  EXPECT_EQ(e.contains("entry"), e["clearance"]["apparatus"] == "platform");
+  EXPECT_EQ(e.size(), 23u + e.contains("entry")) << e.dump();
   EXPECT_TRUE(e["after"].is_null());
   EXPECT_TRUE(e["iterations"].is_null());
   EXPECT_TRUE(e["samples"].is_number_integer());
@@ -355,6 +393,12 @@ TEST(ResultJson, BadDocumentsNameTheField) {
   j = good;
   j["resolution"].erase("knots");
   expect_error(j, "/resolution");
+  j = good;
+  j["clearance"] = {{"apparatus", "springboard"}};
+  expect_error(j, "/clearance/apparatus");
+  j = good;
+  j["entry"] = {{"time_s", 1.0}};
+  expect_error(j, "/entry");
   expect_error(nlohmann::json::array(), "bad.json");
 }
 

@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "saltus/base/input_error.h"
+#include "saltus/evaluation/apparatus.h"
 #include "saltus/formats/finite_check.h"
 #include "saltus/formats/flight_page.h"
 #include "saltus/formats/motion_file.h"
@@ -134,6 +135,13 @@ TEST(FlightPageData, AMotionFileIsEvaluatedAndADiveHasItsPlatform) {
   EXPECT_GT(data["apparatus"]["takeoff_height_m"].get<double>() -
                 data["apparatus"]["landing_height_m"].get<double>(),
             2.0);
+  // The page draws the sizes the app draws and the clearances use (evaluation/apparatus.h).
+  const nlohmann::json& sizes = data["apparatus"]["sizes"];
+  EXPECT_EQ(sizes["platform_edge_ahead"], kPlatformEdgeAhead);
+  EXPECT_EQ(sizes["platform_width"], kPlatformWidth);
+  EXPECT_EQ(sizes["frame_width"], kFrameWidth);
+  EXPECT_EQ(sizes["bed_length"], kBedLength);
+  EXPECT_EQ(sizes.size(), 12u);
   EXPECT_EQ(data["stages"][0]["t"].size(), 101u) << "the default samples";
 }
 
