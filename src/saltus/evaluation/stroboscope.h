@@ -18,8 +18,9 @@ namespace saltus {
 /// Poses of a lecture figure unless asked otherwise: one every 0.2-0.25 s of a 2 s flight.
 inline constexpr int kDefaultStroboscopePoses = 10;
 /// Consecutive poses at least this many standing heights apart along the figure (CoM to CoM),
-/// so that neighbouring bodies touch at most with a hand or a foot.
-inline constexpr double kStroboscopeSpacingPerHeight = 0.6;
+/// so that a body lying level with its arms overhead (about 1.25 heights long) clears an upright
+/// neighbour: at 0.6 a platform dive's first two poses overlapped.
+inline constexpr double kStroboscopeSpacingPerHeight = 0.9;
 /// Below this take-off horizontal speed (m/s) the flight has no direction of its own: it is seen
 /// along the body's lateral axis at take-off. The speed is the CoM's mean horizontal velocity
 /// over the flight, which a ballistic flight keeps from take-off.

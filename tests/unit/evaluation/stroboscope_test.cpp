@@ -70,7 +70,7 @@ TEST(Stroboscope, SpinOfARigidBodyIsItsRootSegmentsAngularVelocity) {
 TEST(Stroboscope, SeenAcrossTheTakeoffVelocityTheFlightRunningRight) {
   const BodyModel model = test::bundled_model();
   Motion motion = test::tuck_motion(model);
-  motion.takeoff.com_velocity = Eigen::Vector3d(6.0, 10.0, 0.0);  // travels far along +x
+  motion.takeoff.com_velocity = Eigen::Vector3d(9.0, 10.0, 0.0);  // travels far along +x
   const Trajectory<double> trajectory = interpolate_keyframes(motion, model);
   const Stroboscope s = stroboscope(model, trajectory);
   EXPECT_TRUE(s.along_velocity);
