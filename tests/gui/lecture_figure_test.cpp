@@ -8,6 +8,8 @@
 #include <QApplication>
 #include <QColor>
 #include <QImage>
+#include <QMenu>
+#include <QMenuBar>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -61,8 +63,14 @@ TEST_F(LectureFigureMenuTest, TheMenuEntryWritesTheFigureOfTheMotionShown) {
   const std::string png = dir / "lecture.png";
   window_->files().set_save_chooser(
       [&](const QString&, const QString&, const QString&) { return QString::fromStdString(png); });
-  auto* action = window_->findChild<QAction*>("export_lecture_figure");
+  // The entry as the File menu holds it.
+  QAction* action = nullptr;
+  for (QAction* menu : window_->menuBar()->actions())
+    if (menu->text().remove('&') == "File")
+      for (QAction* a : menu->menu()->actions())
+        if (a->objectName() == "export_lecture_figure") action = a;
   ASSERT_NE(action, nullptr);
+  EXPECT_EQ(action->text().remove('&'), "Export lecture figure (stroboscopic side view)…");
   ASSERT_TRUE(action->isEnabled());
   action->trigger();
   QApplication::processEvents();
