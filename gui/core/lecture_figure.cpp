@@ -48,9 +48,14 @@ LectureFigure lecture_figure_of(Stroboscope strobe, const BodyModel& model, cons
     slowest = std::min(slowest, p.spin_rev_per_s);
     fastest = std::max(fastest, p.spin_rev_per_s);
   }
-  // Whole tenths around the poses' rates, at least 0.2 rev/s wide, never below 0.
-  f.spin_low = std::max(0.0, std::floor(slowest * 10.0) / 10.0);
-  f.spin_high = std::max(std::ceil(fastest * 10.0) / 10.0, f.spin_low + 0.2);
+  // A round step (0.1, 0.2, 0.5, 1 or 2 rev/s) giving at most 6 parts, the range whole steps
+  // around the poses' rates, at least 0.2 rev/s wide and never below 0.
+  for (const double step : {0.1, 0.2, 0.5, 1.0, 2.0}) {
+    f.spin_step = step;
+    if ((fastest - slowest) / step <= 5.0) break;
+  }
+  f.spin_low = std::max(0.0, std::floor(slowest / f.spin_step) * f.spin_step);
+  f.spin_high = std::max(std::ceil(fastest / f.spin_step) * f.spin_step, f.spin_low + 0.2);
   f.title = name + " — " + stage_words;
   f.colour_bar_title = "Whole-body\nspin rate |ω|\n(rev/s)";
 

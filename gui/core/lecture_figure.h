@@ -19,8 +19,10 @@ struct LectureFigure {
   std::string title;  ///< the motion and the stage: "M1 … — optimised motion (after optimisation)"
   std::string caption;  ///< lines: the poses' times, the view, the scale or spread, the colour
   std::string colour_bar_title;  ///< the spin rate in words and units
-  double spin_low = 0.0;         ///< rev/s at the colour bar's bottom (a tenth below the slowest)
-  double spin_high = 1.0;        ///< rev/s at its top (a tenth above the fastest)
+  double spin_low =
+      0.0;  ///< rev/s at the colour bar's bottom: a whole step at or below the slowest
+  double spin_high = 1.0;  ///< rev/s at its top: a whole step at or above the fastest
+  double spin_step = 0.1;  ///< rev/s between the colour bar's labels: 0.1, 0.2, 0.5, 1 or 2
 };
 
 /// The figure of `stage` of the document's motion (the available stage: before without a run).

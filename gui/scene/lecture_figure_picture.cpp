@@ -147,12 +147,8 @@ void write_lecture_figure_png(const LectureFigure& figure, const std::string& pa
   vtkNew<vtkScalarBarActor> bar;
   bar->SetLookupTable(colours);
   bar->SetTitle(figure.colour_bar_title.c_str());
-  // Labels on whole tenths: the range is whole tenths, cut into 2-5 equal parts where it can be.
-  const int tenths = static_cast<int>(std::lround(span * 10.0));
-  int parts = tenths <= 5 ? std::max(tenths, 1) : 0;
-  for (int p = 5; parts == 0 && p >= 2; --p)
-    if (tenths % p == 0) parts = p;
-  bar->SetNumberOfLabels((parts > 0 ? parts : tenths <= 10 ? tenths : 4) + 1);
+  // A label every step of the range (whole steps: core/lecture_figure.h).
+  bar->SetNumberOfLabels(static_cast<int>(std::lround(span / figure.spin_step)) + 1);
   bar->SetLabelFormat("%.2f");
   bar->UnconstrainedFontSizeOn();
   bar->SetBarRatio(0.3);

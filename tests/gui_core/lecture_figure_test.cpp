@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "core/lecture_figure.h"
 #include "gui_core/test_motion.h"
 
@@ -30,6 +32,10 @@ TEST(LectureFigure, NamesTheMotionAndStageAndRangesEveryPosesSpin) {
     EXPECT_LE(p.spin_rev_per_s, f.spin_high);
   }
   EXPECT_GE(f.spin_high - f.spin_low, 0.2 - 1e-12);
+  // The range is whole steps, at most 6 of them.
+  const double parts = (f.spin_high - f.spin_low) / f.spin_step;
+  EXPECT_NEAR(parts, std::round(parts), 1e-9);
+  EXPECT_LE(parts, 6.0 + 1e-9);
 }
 
 TEST(LectureFigure, SaysWhetherThePosesAreSpreadOrToScale) {
@@ -48,7 +54,9 @@ TEST(LectureFigure, SaysWhetherThePosesAreSpreadOrToScale) {
   EXPECT_TRUE(has(spread.caption, "0.500 s apart")) << spread.caption;
   EXPECT_TRUE(has(spread.caption, "athlete's right")) << spread.caption;
   EXPECT_DOUBLE_EQ(spread.spin_low, 0.0);
-  EXPECT_DOUBLE_EQ(spread.spin_high, 1.3);
+  // 0 to 1.23 rev/s: labels every 0.5 (at 0.1 or 0.2 there would be more than 6 parts).
+  EXPECT_DOUBLE_EQ(spread.spin_step, 0.5);
+  EXPECT_DOUBLE_EQ(spread.spin_high, 1.5);
   strobe.spread_m = 0.0;
   strobe.travel_m = 7.5;
   strobe.along_velocity = true;
