@@ -133,6 +133,14 @@ int show_motion(const CommandLine& c) {
     }
     std::printf("wrote %s\n", c.save_result.c_str());
   }
+  if (!c.lecture_figure.empty()) {
+    if (!window.files().export_lecture_figure(QString::fromStdString(c.lecture_figure),
+                                              c.lecture_poses, &error)) {
+      std::fprintf(stderr, "saltus-gui: error: %s\n", qPrintable(error));
+      return kExitFailure;
+    }
+    std::printf("wrote %s\n", c.lecture_figure.c_str());
+  }
   if (!c.screenshot_view.empty()) {
     if (!window.files().export_view_png(QString::fromStdString(c.screenshot_view), &error)) {
       std::fprintf(stderr, "saltus-gui: error: %s\n", qPrintable(error));

@@ -25,6 +25,7 @@
 #include "app/qt_text.h"
 #include "app/scene_widget.h"
 #include "app/view_controller.h"
+#include "core/lecture_figure.h"
 #include "saltus/base/input_error.h"
 #include "saltus/base/resources.h"
 #include "saltus/evaluation/residual_measures.h"
@@ -33,6 +34,7 @@
 #include "saltus/formats/readable_formats.h"
 #include "saltus/use_cases/captures.h"
 #include "saltus/use_cases/flight_page.h"
+#include "scene/lecture_figure_picture.h"
 
 namespace saltus::gui {
 
@@ -128,6 +130,17 @@ void FileController::fill_menu(QMenu* file, QAction* new_model,
         tr("PNG (*.png)"));
     if (!path.isEmpty()) export_view_png(path);
   });
+  QAction* lecture =
+      file->addAction(tr("Export &lecture figure (stroboscopic side view)…"), this, [this] {
+        const QString path = choose_save_path(
+            tr("Export lecture figure"), QDir(context_.last_dir()).filePath("lecture-figure.png"),
+            tr("PNG (*.png)"));
+        if (!path.isEmpty()) export_lecture_figure(path, kDefaultStroboscopePoses);
+      });
+  lecture->setObjectName("export_lecture_figure");
+  lecture->setToolTip(
+      tr("The flight shown from the side: poses at equal time steps along the centre of mass's "
+         "path, each coloured by the whole-body spin rate, with a colour bar and a caption"));
   QAction* plots_png = file->addAction(tr("Export plots as figures…"), this, [this] {
     const QString dir = QFileDialog::getExistingDirectory(
         context_.window(), tr("Export plots into folder"), context_.last_dir());
@@ -148,7 +161,7 @@ void FileController::fill_menu(QMenu* file, QAction* new_model,
         tr("Web page (*.html)"));
     if (!path.isEmpty()) export_web_page(path);
   });
-  need_motion_.insert(need_motion_.end(), {view_png, plots_png, window_png, web_page});
+  need_motion_.insert(need_motion_.end(), {view_png, lecture, plots_png, window_png, web_page});
   for (QAction* a : more_exports) {
     file->addAction(a);
     need_motion_.push_back(a);
@@ -384,6 +397,20 @@ bool FileController::export_view_png(const QString& path, QString* error) {
   if (image.isNull() || !image.save(path, "PNG"))
     return context_.fail(tr("Cannot export"), tr("%1: cannot write the image").arg(path), error);
   context_.set_last_dir_from(path);
+  return true;
+}
+
+bool FileController::export_lecture_figure(const QString& path, int poses, QString* error) {
+  const Workspace& ws = context_.workspace();
+  if (!ws.loaded())
+    return context_.fail(tr("Nothing to export"), tr("Open a motion first."), error);
+  try {
+    write_lecture_figure_png(lecture_figure(ws.document(), ws.stage(), poses), path.toStdString());
+  } catch (const std::exception& e) {
+    return context_.fail(tr("Cannot export"), qstr(e.what()), error);
+  }
+  context_.set_last_dir_from(path);
+  context_.status(tr("Wrote the lecture figure %1").arg(path), 8000);
   return true;
 }
 

@@ -59,6 +59,9 @@ class FileController : public QObject, public RemembersSettings {
   /// from the files `saltus export --format html` reads, written here to a temporary folder.
   bool export_web_page(const QString& path, QString* error = nullptr);
   bool export_window_png(const QString& path, QString* error = nullptr);
+  /// File > Export lecture figure… and `--lecture-figure`: the stroboscopic side view of the
+  /// stage shown (core/lecture_figure.h), `poses` poses, as a PNG (scene/lecture_figure_picture.h).
+  bool export_lecture_figure(const QString& path, int poses, QString* error = nullptr);
 
   /// What the user answers when unsaved work would be dropped.
   enum class DiscardAnswer { kSave, kDiscard, kCancel };

@@ -131,6 +131,15 @@ std::unique_ptr<CLI::App> make_app(CommandLine& c, cli::OptionFlags& flags,
   app->add_option("--screenshot-view", c.screenshot_view, "save the 3D view as PNG")
       ->type_name("FILE")
       ->check(kNotAFlag);
+  app->add_option("--lecture-figure", c.lecture_figure,
+                  "the stroboscopic side view of the stage shown as PNG: poses at equal time "
+                  "steps along the CoM's path, coloured by the whole-body spin rate (as File > "
+                  "Export lecture figure…; 1800x900, --poses N)")
+      ->type_name("FILE")
+      ->check(kNotAFlag);
+  app->add_option("--poses", c.lecture_poses, "poses in the lecture figure (default 10)")
+      ->type_name("N")
+      ->check(CLI::Range(2, 40));
   app->add_option("--save-result", c.save_result,
                   "write the result folder the CLI would (optimize or evaluate)")
       ->type_name("DIR")
@@ -205,7 +214,8 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
         "--compare B needs --screenshot FILE (the compare window's picture)");
   const bool needs_motion = c.optimize || c.time || c.stage || !c.screenshot.empty() ||
                             !c.screenshot_view.empty() || !c.save_result.empty() || c.benchmark ||
-                            !c.export_video.empty() || !c.compare.empty();
+                            !c.export_video.empty() || !c.compare.empty() ||
+                            !c.lecture_figure.empty();
   if (needs_motion && c.motion.empty() && c.batch())
     throw std::invalid_argument("give a motion file to show (saltus-gui MOTION ...)");
   return c;

@@ -7,6 +7,7 @@
 ///              [--screenshot FILE] [--screenshot-view FILE] [--save-result DIR]
 ///              [--export-figures DIR RESULT_DIR...] [--benchmark-playback [--seconds S]]
 ///              [--compare B] [--export-video FILE [--fps F] [--speed S]]
+///              [--lecture-figure FILE [--poses N]]
 /// The optimiser options are the option table's flags (`saltus optimize --help`: --max-iter,
 /// --samples, --formulation, ...). Positional arguments before --export-figures name the
 /// motion; after it, result folders.
@@ -19,6 +20,7 @@
 #include "core/document.h"
 #include "core/optimize_settings.h"
 #include "core/scene_options.h"
+#include "saltus/evaluation/stroboscope.h"
 
 namespace saltus::gui {
 
@@ -39,11 +41,13 @@ struct CommandLine {
   std::string screenshot;       ///< whole window PNG
   std::string screenshot_view;  ///< 3D view PNG
   std::string save_result;      ///< output folder like the CLI's --out
-  std::string export_figures;   ///< folder for the paper-style figures
-  std::string compare;          ///< --screenshot shows the compare window against this
-  std::string export_video;     ///< .mp4 or .gif of the 3D view
-  double video_fps = 0.0;       ///< 0: the format's default
-  double video_speed = 1.0;     ///< motion seconds per video second
+  std::string lecture_figure;   ///< the stroboscopic side view's PNG (core/lecture_figure.h)
+  int lecture_poses = kDefaultStroboscopePoses;  ///< poses in it
+  std::string export_figures;                    ///< folder for the paper-style figures
+  std::string compare;       ///< --screenshot shows the compare window against this
+  std::string export_video;  ///< .mp4 or .gif of the 3D view
+  double video_fps = 0.0;    ///< 0: the format's default
+  double video_speed = 1.0;  ///< motion seconds per video second
   bool benchmark = false;
   double benchmark_seconds = 5.0;
   bool help = false;
@@ -52,7 +56,7 @@ struct CommandLine {
   /// Whether the run writes files and exits by itself (no user interaction).
   bool batch() const {
     return !screenshot.empty() || !screenshot_view.empty() || !save_result.empty() ||
-           !export_figures.empty() || !export_video.empty() || benchmark;
+           !export_figures.empty() || !export_video.empty() || !lecture_figure.empty() || benchmark;
   }
   /// `settings` with the optimiser options given here set.
   OptimizeSettings applied_to(OptimizeSettings settings) const;

@@ -69,6 +69,19 @@ TEST(CommandLine, CompareAndVideoAreBatchJobs) {
   EXPECT_THROW(parse_command_line({"--export-video", "v.mp4"}), std::invalid_argument);
 }
 
+TEST(CommandLine, LectureFigureIsABatchJobWithItsPoses) {
+  const CommandLine c = parse_command_line({"m.json", "--lecture-figure", "f.png"});
+  EXPECT_TRUE(c.batch());
+  EXPECT_EQ(c.lecture_figure, "f.png");
+  EXPECT_EQ(c.lecture_poses, kDefaultStroboscopePoses);
+  EXPECT_EQ(
+      parse_command_line({"m.json", "--lecture-figure", "f.png", "--poses", "12"}).lecture_poses,
+      12);
+  EXPECT_THROW(parse_command_line({"m.json", "--lecture-figure", "f.png", "--poses", "1"}),
+               std::invalid_argument);
+  EXPECT_THROW(parse_command_line({"--lecture-figure", "f.png"}), std::invalid_argument);
+}
+
 TEST(CommandLine, BenchmarkWithSeconds) {
   const CommandLine c = parse_command_line({"m.json", "--benchmark-playback", "--seconds", "3"});
   EXPECT_TRUE(c.benchmark);
