@@ -195,7 +195,7 @@ bool refine(std::vector<int>& subdivisions, const std::vector<double>& residual,
 
 /// Least joint effort's per-joint scales: s_j = P / max(P_j, floor), P_j the input's peak
 /// moment at joint j and P their root mean square, so that a joint counts by its load against
-/// the input's (the rise the issue bounds) while the term keeps the size it has unscaled.
+/// the input's (the rise joint_loads.h reports) while the term keeps the size it has unscaled.
 std::vector<double> joint_load_scales(const DenseCheck& input) {
   std::vector<double> peaks;
   for (std::size_t j = 1; j < input.joint_peaks.size(); ++j)
