@@ -7,6 +7,7 @@
 #include <QApplication>
 #include <QDialog>
 #include <QFileDialog>
+#include <QLineEdit>
 #include <QMainWindow>
 #include <QMenu>
 #include <QMenuBar>
@@ -67,6 +68,15 @@ inline SeenDialog trigger_and_close_dialog(QAction* action) {
   return seen;
 }
 
+/// Types `path` into a file dialog's name field, as a user would (selectFile() leaves the field
+/// alone while it has the focus).
+inline void type_file_name(QFileDialog* dialog, const QString& path) {
+  if (auto* edit = dialog->findChild<QLineEdit*>("fileNameEdit"))
+    edit->setText(path);
+  else
+    dialog->selectFile(path);
+}
+
 /// Triggers `action` and answers the modal dialog it opens, a file dialog, with `path` (empty:
 /// cancelled); returns the dialog's title (empty: no dialog was opened). The answer is given
 /// again at each tick while the dialog stays open (it may still be reading its folder), and the
@@ -82,7 +92,7 @@ inline QString trigger_and_answer_file_dialog(QAction* action, const QString& pa
     if (title.isEmpty()) title = dialog->windowTitle();
     auto* files = qobject_cast<QFileDialog*>(dialog);
     if (files && !path.isEmpty() && ++ticks < 100) {
-      files->selectFile(path);
+      type_file_name(files, path);
       dialog->accept();  // QFileDialog::accept: takes the name if it suits the dialog's mode
     } else {
       dialog->reject();

@@ -1,0 +1,212 @@
+// The File menu's entries, each triggered from the menu bar: its file dialog (answered by the
+// test with a path in a temporary folder) picks what to open or where to write, and the effect
+// is read back: the motion, capture or body model open, the files written and readable (PNG
+// pictures, a web page, a result folder), the window closed by Quit.
+
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QImage>
+#include <QStandardPaths>
+#include <QTest>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "app/file_controller.h"
+#include "app/main_window.h"
+#include "gui/support/image_checks.h"
+#include "gui/support/menu_actions.h"
+#include "gui/support/open_motion_fixture.h"
+#include "gui_core/test_motion.h"
+#include "saltus/formats/model_file.h"
+#include "saltus/formats/motion_file.h"
+#include "saltus/use_cases/captures.h"
+#include "support/temp_path.h"
+
+namespace saltus::gui {
+namespace {
+
+class FileMenuTest : public test::OpenMotionTest {
+ protected:
+  QAction* entry(const QString& text) {
+    QAction* a = test::menu_action(window_.get(), {"File", text});
+    EXPECT_NE(a, nullptr) << text.toStdString();
+    if (a) {
+      EXPECT_TRUE(a->isEnabled()) << text.toStdString();
+    }
+    return a;
+  }
+  /// The entry triggered, its file dialog answered with `path`; returns the dialog's title.
+  QString answer(const QString& text, const std::filesystem::path& path) {
+    QAction* a = entry(text);
+    if (!a) return {};
+    const QString title =
+        test::trigger_and_answer_file_dialog(a, QString::fromStdString(path.string()));
+    QApplication::processEvents();
+    return title;
+  }
+  static std::string read(const std::filesystem::path& path) {
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+  static void expect_picture(const std::filesystem::path& path) {
+    const QImage image(QString::fromStdString(path.string()));
+    ASSERT_FALSE(image.isNull()) << path;
+    EXPECT_GT(test::blank_check(image).distinct_colours, 4) << path;
+  }
+};
+
+TEST_F(FileMenuTest, OpenMotionOpensTheChosenFile) {
+  const std::filesystem::path other = std::filesystem::path(SALTUS_EXAMPLES_DIR) / "motions" /
+                                      "M2-tucked-back-somersault.motion.json";
+  EXPECT_EQ(answer("Open motion…", other), "Open motion");
+  EXPECT_EQ(std::filesystem::path(window_->document().file().path).filename(), other.filename());
+  // Cancelled: the motion stays.
+  EXPECT_EQ(answer("Open motion…", {}), "Open motion");
+  EXPECT_EQ(std::filesystem::path(window_->document().file().path).filename(), other.filename());
+}
+
+TEST_F(FileMenuTest, OpenRecentReopensAMotionAndClearListEmptiesIt) {
+  const std::filesystem::path other = std::filesystem::path(SALTUS_EXAMPLES_DIR) / "motions" /
+                                      "M2-tucked-back-somersault.motion.json";
+  QString error;
+  ASSERT_TRUE(window_->open_motion(QString::fromStdString(other.string()), &error))
+      << error.toStdString();
+  ASSERT_TRUE(window_->open_motion(QString::fromStdString(test::gui_test_motion_path()), &error))
+      << error.toStdString();
+  const QString name = QString::fromStdString(other.filename().string());
+  QAction* recent = test::menu_action(window_.get(), {"File", "Open recent", name});
+  ASSERT_NE(recent, nullptr);
+  recent->trigger();
+  QApplication::processEvents();
+  EXPECT_EQ(std::filesystem::path(window_->document().file().path).filename(), other.filename());
+
+  QAction* clear = test::menu_action(window_.get(), {"File", "Open recent", "Clear list"});
+  ASSERT_NE(clear, nullptr);
+  clear->trigger();
+  QApplication::processEvents();
+  EXPECT_EQ(test::menu_action(window_.get(), {"File", "Open recent", name}), nullptr);
+  EXPECT_FALSE(test::menu_action(window_.get(), {"File", "Open recent"})->isEnabled());
+}
+
+TEST_F(FileMenuTest, ImportMotionCaptureOpensTheCaptureBesideTheMotion) {
+  const std::filesystem::path bvh = saltus::test::temp_path("menu-capture.bvh");
+  export_motion_bvh(load_motion_file(test::gui_test_motion_path()), bvh.string(), 30.0);
+  ASSERT_EQ(window_->document().capture(), nullptr);
+  EXPECT_EQ(answer("Import motion capture…", bvh), "Import motion capture");
+  EXPECT_NE(window_->document().capture(), nullptr);
+}
+
+TEST_F(FileMenuTest, SaveAndOpenBodyModelRoundTripTheMasses) {
+  const BodyModel& model = window_->document().file().model;
+  const auto thigh = static_cast<std::size_t>(model.segment_index("thigh_r"));
+  const double loaded = model.segments[thigh].mass;
+  const std::filesystem::path path = saltus::test::temp_path("menu-model.json");
+  window_->files().set_save_chooser([&path](const QString&, const QString&, const QString&) {
+    return QString::fromStdString(path.string());
+  });
+  entry("Save body model as…")->trigger();
+  ASSERT_TRUE(std::filesystem::exists(path));
+  BodyModel heavy = load_body_model(path.string());
+  EXPECT_NEAR(heavy.segments[thigh].mass, loaded, 1e-9);
+
+  // A heavier thigh in the file, opened with File > Open model….
+  heavy.segments[thigh].mass = 2 * loaded;
+  const std::filesystem::path changed = saltus::test::temp_path("menu-heavy-model.json");
+  save_body_model_file(changed.string(), heavy);
+  EXPECT_EQ(answer("Open model…", changed), "Open body model");
+  EXPECT_NEAR(window_->document().file().model.segments[thigh].mass, 2 * loaded, 1e-9);
+}
+
+TEST_F(FileMenuTest, SaveMotionWritesTheMotion) {
+  const std::filesystem::path path = saltus::test::temp_path("menu.motion.json");
+  QString asked;
+  window_->files().set_save_chooser(
+      [&path, &asked](const QString& title, const QString&, const QString&) {
+        asked = title;
+        return QString::fromStdString(path.string());
+      });
+  entry("Save motion as…")->trigger();
+  EXPECT_EQ(asked, "Save motion");
+  ASSERT_TRUE(std::filesystem::exists(path));
+  EXPECT_EQ(load_motion_file(path.string()).motion.keyframes.size(),
+            window_->document().file().motion.keyframes.size());
+}
+
+TEST_F(FileMenuTest, SaveResultFolderWritesWhatTheCommandLineWrites) {
+  const std::filesystem::path dir = saltus::test::temp_path("menu-result");
+  EXPECT_EQ(answer("Save result folder…", dir), "Save result folder (created or replaced)");
+  for (const char* file : {"result.json", "trajectory.csv", "model.json"})
+    EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
+}
+
+TEST_F(FileMenuTest, ExportEntriesWriteTheirFiles) {
+  const std::filesystem::path view = saltus::test::temp_path("menu-view.png");
+  EXPECT_EQ(answer("Export 3D view as PNG…", view), "Export 3D view");
+  expect_picture(view);
+
+  const std::filesystem::path shot = saltus::test::temp_path("menu-window.png");
+  EXPECT_EQ(answer("Export window screenshot…", shot), "Export window");
+  expect_picture(shot);
+
+  const std::filesystem::path page = saltus::test::temp_path("menu-flight.html");
+  EXPECT_EQ(answer("Export web page…", page), "Export web page");
+  EXPECT_NE(read(page).find("<html"), std::string::npos);
+
+  const std::filesystem::path plots = saltus::test::temp_path("menu-plots");
+  std::filesystem::create_directories(plots);
+  EXPECT_EQ(answer("Export plots as figures…", plots), "Export plots into folder");
+  int pictures = 0;
+  for (const auto& f : std::filesystem::directory_iterator(plots)) {
+    ASSERT_EQ(f.path().extension(), ".png") << f.path();
+    expect_picture(f.path());
+    ++pictures;
+  }
+  EXPECT_EQ(pictures, 4);
+}
+
+TEST_F(FileMenuTest, ExportAnimationWritesTheVideoWithTheChosenSize) {
+  if (QStandardPaths::findExecutable("ffmpeg").isEmpty())
+    GTEST_SKIP() << "ffmpeg is not installed (tools/bootstrap.sh installs it)";
+  const std::filesystem::path gif = saltus::test::temp_path("menu-animation.gif");
+  QString asked;
+  const int answered = test::trigger_and_answer_dialogs(
+      entry("Export animation (MP4 or GIF)…"),
+      {[&](QDialog* d) {
+         asked = d->windowTitle();
+         auto* files = qobject_cast<QFileDialog*>(d);
+         ASSERT_NE(files, nullptr);
+         test::type_file_name(files, QString::fromStdString(gif.string()));
+         static_cast<QDialog*>(files)->accept();
+       },
+       [&](QDialog* d) {
+         EXPECT_EQ(d->windowTitle(), "Animation");
+         auto* size = d->findChild<QComboBox*>();
+         ASSERT_NE(size, nullptr);
+         size->setCurrentIndex(size->findData(QSize(640, 640)));
+         for (QDoubleSpinBox* box : d->findChildren<QDoubleSpinBox*>())
+           if (box->suffix().contains("real time")) box->setValue(4.0);  // a short file
+         d->accept();
+       }});
+  EXPECT_EQ(answered, 2);
+  EXPECT_EQ(asked, "Export animation");
+  const QImage first(QString::fromStdString(gif.string()), "GIF");
+  ASSERT_FALSE(first.isNull()) << gif;
+  EXPECT_EQ(first.size(), QSize(640, 640));
+}
+
+TEST_F(FileMenuTest, QuitClosesTheWindow) {
+  ASSERT_TRUE(window_->isVisible());
+  entry("Quit")->trigger();
+  QApplication::processEvents();
+  EXPECT_FALSE(window_->isVisible());
+}
+
+}  // namespace
+}  // namespace saltus::gui
