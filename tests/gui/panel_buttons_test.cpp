@@ -1,14 +1,15 @@
 // The buttons and check boxes of the panels beside and under the 3D view, each pressed with the
 // mouse and its effect read back: the Keyframes panel adds and deletes keyframes, the Model
 // panel resets the masses and opens the athlete dialog, the timeline's buttons move the time and
-// play, the Optimise panel's switches change the run's settings, the plots' boxes redraw the
-// root charts (the log scale's waits for an optimised run), and the toolbar's Compare… button
-// drops down the Compare menu.
+// play, the Display panel's boxes switch the 3D view's options, the Optimise panel's switches
+// change the run's settings, the plots' boxes redraw the root charts, and the toolbar's Compare…
+// button drops down the Compare menu.
 
 #include <gtest/gtest.h>
 
 #include <QApplication>
 #include <QCheckBox>
+#include <QDockWidget>
 #include <QMenu>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -29,6 +30,8 @@
 #include "app/plots_panel.h"
 #include "app/run_controller.h"
 #include "app/timeline_widget.h"
+#include "app/view_controller.h"
+#include "core/scene_options.h"
 #include "gui/support/open_motion_fixture.h"
 #include "saltus/optim/option_table.h"
 
@@ -106,6 +109,23 @@ TEST_F(PanelButtonsTest, TimelineButtonsStepPlayAndLoop) {
   EXPECT_EQ(timeline->timeline().loop(), !loop);
 }
 
+TEST_F(PanelButtonsTest, DisplayPanelBoxesSwitchTheViewsOptions) {
+  auto* display = window_->findChild<QDockWidget*>("display_dock");
+  ASSERT_NE(display, nullptr);
+  for (const SceneOptionInfo& info : scene_option_table()) {
+    SCOPED_TRACE(info.label);
+    QCheckBox* box = nullptr;
+    for (QCheckBox* b : display->findChildren<QCheckBox*>())
+      if (b->text() == QString(info.label).remove('&')) box = b;
+    ASSERT_NE(box, nullptr);
+    const bool was = window_->view().scene_options().*info.field;
+    // On the box's square: a box as wide as the panel takes no click beside its label.
+    QTest::mouseClick(box, Qt::LeftButton, Qt::NoModifier, QPoint(8, box->height() / 2));
+    QApplication::processEvents();
+    EXPECT_EQ(window_->view().scene_options().*info.field, !was);
+  }
+}
+
 TEST_F(PanelButtonsTest, OptimisePanelSwitchesChangeTheRunsSettings) {
   int switches = 0;
   for (QCheckBox* box : window_->runs().panel()->findChildren<QCheckBox*>()) {
@@ -131,6 +151,19 @@ TEST_F(PanelButtonsTest, PlotsBoxesRedrawTheRootCharts) {
     press<QCheckBox>(&window_->plots(), text);
     EXPECT_EQ(redrawn.count(), ++pressed);
   }
+  // The log scale is for |F| and |M| (not the components) before and after: there once a run is
+  // shown.
+  press<QCheckBox>(&window_->plots(), "Components");
+  OptimizeSettings s;
+  s.set("max_iterations", 3);
+  s.set("samples", 31);
+  ASSERT_TRUE(window_->runs().start(s));
+  ASSERT_TRUE(window_->runs().wait(300000));
+  ASSERT_TRUE(window_->runs().show_run(0));
+  QApplication::processEvents();
+  const int before = redrawn.count();
+  press<QCheckBox>(&window_->plots(), "Log scale for before/after");
+  EXPECT_EQ(redrawn.count(), before + 1);
 }
 
 TEST_F(PanelButtonsTest, ToolbarCompareButtonDropsDownTheCompareMenu) {
