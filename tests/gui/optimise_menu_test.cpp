@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <QApplication>
-#include <QElapsedTimer>
 #include <QPushButton>
 #include <QTest>
 
@@ -29,7 +28,8 @@ class OptimiseMenuTest : public test::OpenMotionTest {
   void set_iterations(int iterations) {
     OptimizeSettings s = window_->runs().settings();
     s.set("max_iterations", iterations);
-    // A long run (fine samples) is still iterating when it is cancelled.
+    // A long run (fine samples), cancelled as soon as it starts: on an idle machine M1 solves
+    // in well under a second, and a cancel after a wait could come after it ended.
     s.set("samples", iterations > 100 ? 301 : 31);
     window_->runs().panel()->set_settings(s);
   }
@@ -43,13 +43,6 @@ class OptimiseMenuTest : public test::OpenMotionTest {
       if (b->text() == text) return b;
     ADD_FAILURE() << "no button " << text.toStdString();
     return nullptr;
-  }
-  /// Lets a started run iterate for a moment.
-  static void let_it_iterate() {
-    QElapsedTimer clock;
-    clock.start();
-    while (clock.elapsed() < 300)
-      QApplication::processEvents(QEventLoop::AllEvents, 20);
   }
   const SolveReport& last_solve() const {
     const RunList& runs = window_->workspace().runs();
@@ -83,7 +76,6 @@ TEST_F(OptimiseMenuTest, CancelEntryStopsTheRun) {
   set_iterations(500);
   entry({"Optimise", "Run optimisation"})->trigger();
   ASSERT_TRUE(window_->runs().running());
-  let_it_iterate();
   QAction* cancel = entry({"Optimise", "Cancel optimisation"});
   ASSERT_TRUE(cancel->isEnabled());
   cancel->trigger();
@@ -104,7 +96,6 @@ TEST_F(OptimiseMenuTest, PanelButtonsRunAndCancel) {
   set_iterations(500);
   QTest::mouseClick(run, Qt::LeftButton);
   ASSERT_TRUE(window_->runs().running());
-  let_it_iterate();
   QPushButton* cancel = button("Cancel");
   ASSERT_NE(cancel, nullptr);
   ASSERT_TRUE(cancel->isEnabled());
