@@ -287,6 +287,12 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
     progress(over_levels);
   })
                                             : ProgressCallback();
+  // Every solve, levels and polish alike, adds to the one count and clock the caller sees.
+  auto count = [&](const SolveReport& solve) {
+    iterations += solve.iterations;
+    restarts += solve.restarts;
+    seconds += solve.seconds;
+  };
   for (int level = 0;; ++level) {
     nlp_options.subdivisions = subdivisions;
     // A level that may still be refined only has to show where its residual lives, so it stops
@@ -301,9 +307,7 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
           std::max(solver.objective_change_tolerance, rules.coarse_objective_change);
     Solved solved = solve_level(motion, at_start, model, start_trajectory, nlp_options,
                                 level_solver, counted, cancel);
-    iterations += solved.solve.iterations;
-    restarts += solved.solve.restarts;
-    seconds += solved.solve.seconds;
+    count(solved.solve);
     // Only the automatic resolution decides by the drift in its levels (a free flight: ~50 ms);
     // the free flight's evaluation holds the level's dense check, so it is not run twice.
     std::optional<Flown> flown;
@@ -323,9 +327,7 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       finish.warm_start = true;
       Solved finished = solve_level(motion, solved.optimized, model, solved.trajectory, nlp_options,
                                     finish, counted, cancel);
-      iterations += finished.solve.iterations;
-      restarts += finished.solve.restarts;
-      seconds += finished.solve.seconds;
+      count(finished.solve);
       Flown finished_flown = fly(finished.optimized, model, options.nlp.samples);
       if (finished.solve.solved &&
           finished_flown.evaluation.check.metrics.avg_root_force <= force) {
@@ -396,9 +398,7 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       polish_options.joint_load_weight = weight;
       Solved polished = solve_level(motion, best.optimized, model, best.trajectory, polish_options,
                                     polish_solver, counted, cancel);
-      iterations += polished.solve.iterations;
-      restarts += polished.solve.restarts;
-      seconds += polished.solve.seconds;
+      count(polished.solve);
       Flown polished_flown = fly(polished.optimized, model, options.nlp.samples);
       p.weight = weight;
       ++p.attempts;
