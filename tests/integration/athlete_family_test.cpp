@@ -1,114 +1,49 @@
-// A seeded family of athletes: de Leva's people from 1.2 to 2.0 m and 25 to 120 kg (a plausible
-// body mass index, both sexes) and Yeadon's measured man with every measurement scaled by its
-// own random factor in [0.9, 1.1]. Every model passes the model reader; a twisting free flight on
-// each conserves angular momentum, L(t) computed here from the segments' masses, inertias and
-// finite-differenced motion, not by the library's momentum code; and M1 optimises to a true
-// residual of at most 0.5 N on the smallest, the heaviest and a measured athlete.
+// A seeded family of athletes (support/athlete_family.h): de Leva's people from 1.2 to 2.0 m and
+// 25 to 120 kg (a plausible body mass index, both sexes) and Yeadon's measured man with every
+// measurement scaled by its own random factor in [0.9, 1.1]. Every model passes the model reader; a
+// twisting free flight on each conserves angular momentum, L(t) computed here from the segments'
+// masses, inertias and finite-differenced motion, not by the library's momentum code; and M1
+// optimises to a true residual of at most 0.5 N on the smallest, the heaviest and a measured
+// athlete.
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
-#include "saltus/base/input_error.h"
 #include "saltus/evaluation/simulate.h"
-#include "saltus/formats/model_file.h"
 #include "saltus/optim/optimize.h"
 #include "saltus/use_cases/athlete_models.h"
-#include "support/temp_path.h"
+#include "support/athlete_family.h"
 
 namespace saltus {
 namespace {
 
-struct FamilyMember {
-  std::string path;  ///< its model file
-  BodyModel model;
-};
+using test::FamilyMember;
 
-/// `examples/athletes/yeadon-male1.txt` with every measurement (not the conversion factor nor
-/// the total mass) multiplied by a factor drawn from [0.9, 1.1]: each perimeter, width and depth
-/// its own, the lengths one for the file. A limb's lengths run from one joint to its successive
-/// levels (shoulder 47.2 cm, acromion 50.2 cm from the hip): errors of their own would put the
-/// levels out of order, a body no one has, which the reader refuses.
-std::string perturbed_yeadon_file(std::mt19937& random, const std::string& path) {
-  std::uniform_real_distribution<double> factor(0.9, 1.1);
-  const double length_factor = factor(random);
-  std::ifstream in(std::string(SALTUS_EXAMPLES_DIR) + "/athletes/yeadon-male1.txt");
-  std::ostringstream out;
-  std::string line;
-  int scaled = 0;
-  while (std::getline(in, line)) {
-    const std::size_t separator = line.find_first_of("=:");
-    const std::string key = line.substr(0, line.find_first_of(" =:"));
-    if (line.empty() || line[0] == '#' || separator == std::string::npos ||
-        key == "measurementconversionfactor" || key == "totalmass") {
-      out << line << '\n';
-      continue;
-    }
-    const double value = std::stod(line.substr(separator + 1));
-    std::ostringstream number;
-    number.precision(17);
-    number << value * (key.back() == 'L' ? length_factor : factor(random));
-    out << key << '=' << number.str() << '\n';
-    ++scaled;
-  }
-  EXPECT_EQ(scaled, 95) << "Yeadon's measurements";
-  std::ofstream(path) << out.str();
-  return path;
-}
-
-/// The family, seeded: 8 of de Leva's people and 4 perturbed measured men, each written as a
-/// model file and read back by the model reader (its plausibility checks).
+/// The family (support/athlete_family.h), with what its making must show checked on first use:
+/// every de Leva person has the height and mass asked for, every perturbed Yeadon file scales
+/// Yeadon's 95 measurements, and the reader refuses at most 6 of them, each naming the file and
+/// the key.
 const std::vector<FamilyMember>& family() {
-  static const std::vector<FamilyMember> members = [] {
-    std::mt19937 random(25);
-    std::uniform_real_distribution<double> unit(0.0, 1.0), bmi(16.0, 30.0);
-    std::vector<FamilyMember> out;
-    for (int i = 0; i < 8; ++i) {
-      // The corners of the range (1.2 m and 25 kg, 2.0 m and 120 kg: body mass index 17 and 30),
-      // then heights spread over it with a body mass index drawn for each.
-      AthleteSize size;
-      size.height_m = i == 0 ? 1.2 : i == 1 ? 2.0 : 1.2 + 0.8 * (i - 2 + unit(random)) / 6.0;
-      size.mass_kg = i == 0 ? 25.0
-                     : i == 1
-                         ? 120.0
-                         : std::clamp(bmi(random) * size.height_m * size.height_m, 25.0, 120.0);
-      size.sex = i % 2 ? Sex::kMale : Sex::kFemale;
-      size.name = "family-" + std::to_string(i);
-      const std::string path = test::temp_path(size.name + ".model.json").string();
-      write_athlete_model(path, new_athlete_model(size));
-      out.push_back({path, load_body_model(path)});
-      EXPECT_NEAR(standing_body(out.back().model).height(), size.height_m, 1e-9);
-      EXPECT_NEAR(out.back().model.total_mass(), size.mass_kg, 1e-9);
+  static const std::vector<FamilyMember>& members = [] {
+    const test::AthleteFamily& made = test::athlete_family();
+    for (const FamilyMember& member : made.members) {
+      if (!member.size) continue;
+      EXPECT_NEAR(standing_body(member.model).height(), member.size->height_m, 1e-9);
+      EXPECT_NEAR(member.model.total_mass(), member.size->mass_kg, 1e-9);
     }
-    // A hand's perimeter is only 13 % above twice its width: independent 10 % errors can make a
-    // level no stadium has, which the reader must refuse naming the file and the key. The family
-    // takes the first four files it accepts.
-    int refused = 0;
-    for (int draw = 0; out.size() < 12 && draw < 20; ++draw) {
-      const std::string name = "measured-" + std::to_string(draw);
-      const std::string measurements =
-          perturbed_yeadon_file(random, test::temp_path(name + ".txt").string());
-      const std::string path = test::temp_path(name + ".model.json").string();
-      try {
-        write_athlete_model(path, yeadon_athlete_model(measurements, "dempster", 0.0, name).model);
-      } catch (const InputError& e) {
-        const std::string what = e.what();
-        EXPECT_NE(what.find(measurements), std::string::npos) << what;
-        EXPECT_NE(what.find("is too small for the width"), std::string::npos) << what;
-        ++refused;
-        continue;
-      }
-      out.push_back({path, load_body_model(path)});
+    for (const int scaled : made.scaled)
+      EXPECT_EQ(scaled, 95) << "Yeadon's measurements";
+    for (const test::RefusedMeasurements& refused : made.refused) {
+      EXPECT_NE(refused.what.find(refused.measurements), std::string::npos) << refused.what;
+      EXPECT_NE(refused.what.find("is too small for the width"), std::string::npos) << refused.what;
     }
-    EXPECT_LE(refused, 6) << "of the perturbed Yeadon files";
-    return out;
+    EXPECT_LE(made.refused.size(), 6u) << "of the perturbed Yeadon files";
+    return made.members;
   }();
   return members;
 }
