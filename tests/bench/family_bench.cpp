@@ -1,7 +1,9 @@
 // The family sweeps (docs/performance.md): default `optimize_motion` on physically exact flights
-// (studies/exact_flights.h: the mixed family and the twisting one) and on every bundled motion.
-// Run by name, one run each:
+// (studies/exact_flights.h: the mixed family and the twisting one), on every bundled motion, and
+// on every bundled motion flown by each athlete of a seeded family (support/athlete_family.h,
+// issue 25; docs/studies.md). Run by name, one run each:
 //   build/release/tests/saltus_benchmarks --benchmark_filter='Family|Twisting|Bundled'
+//   build/release/tests/saltus_benchmarks --benchmark_filter=AthleteFamily
 // The smoke run in ctest leaves these out.
 
 #include <benchmark/benchmark.h>
@@ -9,7 +11,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "saltus/evaluation/joint_loads.h"
@@ -18,6 +22,8 @@
 #include "saltus/formats/motion_file.h"
 #include "saltus/optim/optimize.h"
 #include "saltus/studies/exact_flights.h"
+#include "saltus/use_cases/athlete_models.h"
+#include "support/athlete_family.h"
 
 namespace saltus {
 namespace {
@@ -144,6 +150,62 @@ void BM_BundledMotion(benchmark::State& bench) {
   bench.counters["solved"] = r.solve.solved;
 }
 BENCHMARK(BM_BundledMotion)->DenseRange(0, 7)->Iterations(3)->Unit(benchmark::kSecond);
+
+/// Issue 25, "any athlete": every bundled motion flown by every athlete of the seeded family
+/// (support/athlete_family.h: 8 of de Leva's people, 4 perturbed measured men), its take-off
+/// carried over with the same spin, default options. Counters: runs (members × motions), the
+/// share solved and the share solved at or below 0.5 N true residual (the dense check), the
+/// median and worst true residual (N), the worst landing drift (the optimised motion's own free
+/// flight against it at landing, °: issue 24's bar is 3°) and how many runs pass it, and the
+/// median and worst wall time (s). Each run is printed on stderr as it ends, with the
+/// optimiser's status, so that a failure names its motion and athlete.
+void BM_AthleteFamily(benchmark::State& bench) {
+  std::vector<std::filesystem::path> motions;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::string(SALTUS_EXAMPLES_DIR) + "/motions"))
+    motions.push_back(entry.path());
+  std::sort(motions.begin(), motions.end());
+  const std::vector<test::FamilyMember>& members = test::athlete_family().members;
+  for (auto _ : bench) {
+    std::vector<double> forces, seconds, drifts;
+    int solved = 0, near_zero = 0, drift_above_3 = 0;
+    std::fprintf(stderr, "%-54s %-12s %6s %6s %-6s %9s %9s %8s %7s  %s\n", "motion", "athlete", "m",
+                 "kg", "solved", "before_N", "after_N", "drift_deg", "s", "status");
+    for (const std::filesystem::path& motion : motions) {
+      for (const test::FamilyMember& member : members) {
+        const MotionFile file =
+            load_motion_for_athlete(motion.string(), member.path, TakeoffRule::kSameSpin);
+        const auto start = std::chrono::steady_clock::now();
+        const OptimizationResult r = optimize_motion(file.motion, file.model, OptimizeOptions{});
+        seconds.push_back(
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        const double force = r.after.check.metrics.avg_root_force;
+        const double drift = simulate_motion(r.optimized_motion, file.model).landing_vs_motion_deg;
+        forces.push_back(force);
+        drifts.push_back(drift);
+        solved += r.solve.solved;
+        near_zero += r.solve.solved && force <= 0.5;
+        drift_above_3 += drift > 3.0;
+        std::fprintf(stderr, "%-54s %-12s %6.3f %6.1f %-6s %9.4f %9.4f %8.2f %7.2f  %s\n",
+                     motion.filename().string().c_str(), member.model.name.c_str(),
+                     standing_body(member.model).height(), member.model.total_mass(),
+                     r.solve.solved ? "yes" : "no", r.before.check.metrics.avg_root_force, force,
+                     drift, seconds.back(), r.solve.status.c_str());
+      }
+    }
+    const double runs = static_cast<double>(forces.size());
+    bench.counters["runs"] = runs;
+    bench.counters["solved_pct"] = 100.0 * solved / runs;
+    bench.counters["at_most_0.5N_pct"] = 100.0 * near_zero / runs;
+    bench.counters["median_N"] = percentile(forces, 0.5);
+    bench.counters["worst_N"] = *std::max_element(forces.begin(), forces.end());
+    bench.counters["worst_landing_deg"] = *std::max_element(drifts.begin(), drifts.end());
+    bench.counters["landing_above_3deg"] = drift_above_3;
+    bench.counters["median_s"] = percentile(seconds, 0.5);
+    bench.counters["worst_s"] = *std::max_element(seconds.begin(), seconds.end());
+  }
+}
+BENCHMARK(BM_AthleteFamily)->Iterations(1)->Unit(benchmark::kSecond);
 
 }  // namespace
 }  // namespace saltus
