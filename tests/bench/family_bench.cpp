@@ -1,8 +1,8 @@
 // The family sweeps (docs/performance.md): default `optimize_motion` on physically exact flights
 // (studies/exact_flights.h: the mixed family and the twisting one), on every bundled motion, and
 // on every bundled motion flown by each athlete of a seeded family (support/athlete_family.h,
-// issue 25; docs/studies.md). Run by name, one run each:
-//   build/release/tests/saltus_benchmarks --benchmark_filter='Family|Twisting|Bundled'
+// issue 25; docs/studies.md). Run by name, one run each ('Family' alone matches all four):
+//   build/release/tests/saltus_benchmarks --benchmark_filter='ExactFlights|Bundled'
 //   build/release/tests/saltus_benchmarks --benchmark_filter=AthleteFamily
 // The smoke run in ctest leaves these out.
 
