@@ -289,11 +289,16 @@ int run_optimize(const CommonArgs& args) {
           "points)\n",
           result.knots_per_interval, options.nlp.knots_per_interval);
     }
-    if (const auto& polish = result.joint_load_polish)
+    if (const auto& polish = result.joint_load_polish) {
+      char bound[96] = "joints not bounded";
+      if (polish->joint_bound > 0)
+        std::snprintf(bound, sizeof bound,
+                      "each joint's moment and force within %.2gx its peak before",
+                      polish->joint_bound);
       std::printf(
-          "  least joint effort at these times (weight %.3g%s): %.3g N -> %.3g N average root "
-          "force, free flight landing %.1f -> %.1f deg from the motion, %s\n",
-          polish->weight,
+          "  least joint effort at these times (weight %.3g, %s%s): %.3g N -> %.3g N average "
+          "root force, free flight landing %.1f -> %.1f deg from the motion, %s\n",
+          polish->weight, bound,
           polish->attempts > 1
               ? (", try " + std::to_string(polish->attempts) + " of " +
                  std::to_string(saltus::kPolishAttempts) + ", each at half the last")
@@ -302,6 +307,7 @@ int run_optimize(const CommonArgs& args) {
           polish->avg_root_force_before, polish->avg_root_force_after,
           polish->landing_drift_before_deg, polish->landing_drift_after_deg,
           polish->kept ? "kept" : ("not kept (" + polish->status + ")").c_str());
+    }
     if (result.landing_drift_deg)
       std::printf(
           "  free flight of the optimised motion (its own take-off state): lands %.2f deg from "

@@ -13,6 +13,7 @@
 
 #include "saltus/evaluation/joint_loads.h"
 #include "saltus/formats/trajectory_csv.h"
+#include "saltus/optim/optimize.h"
 #include "support/cli_runner.h"
 
 namespace saltus {
@@ -160,13 +161,12 @@ TEST(CliOptimize, ReportedResidualIsTheMotionsOnAFarFinerGrid) {
 }
 
 // Issue 24's joint loads: the optimised M2 used to put 142 N·m on the left hip at take-off,
-// where the interpolated input needed 18 N·m at most (7.8x). With least joint effort (the
-// default polish), each joint counted against its own input peak, M2's joints stay within 3x
-// (measured 2.48x, the left knee's moment mid-flight; 3.11x when every joint counted in N·m)
-// and M6's, whose knee carried 372 N·m at t = 0.004 s without the polish, within the issue's
-// 1.5x (measured 1.36x; 4.3x in N·m); without it (--joint-load-weight 0) M2's kick is back, so
-// the polish is what removes it. Peaks are the dense check's, read from result.json; ratios
-// floored as joint_loads.h does.
+// where the interpolated input needed 18 N·m at most (7.8x). The default polish (least joint
+// effort, each joint's moment and force bounded by 1.4x its input peak) holds M1, M2 and M6
+// within the issue's 1.5x at every joint (measured 1.41x, 1.40x, 1.32x; 3.13x, 2.48x, 1.36x
+// with the effort term alone); without it (--joint-load-weight 0) M2's kick is back, so the
+// polish is what removes it. Peaks are the dense check's, read from result.json; ratios floored
+// as joint_loads.h does.
 TEST(CliOptimize, JointLoadsStayNearTheInputsWithLeastJointEffort) {
   test::TempDir dir;
   auto largest_rise = [](const nlohmann::json& result) {
@@ -181,18 +181,21 @@ TEST(CliOptimize, JointLoadsStayNearTheInputsWithLeastJointEffort) {
     return worst;
   };
   const std::string motions = std::string(SALTUS_EXAMPLES_DIR) + "/motions/";
-  const std::pair<const char*, double> bounds[] = {
-      {"M2-tucked-back-somersault", 3.0}, {"M6-half-twist-into-one-and-a-half-front", 1.5}};
-  for (const auto& [name, bound] : bounds) {
+  // The issue's bar, 1.5x at every joint, moment and force, on the dense check's points: the
+  // polish bounds them at 1.4x on its nodes.
+  for (const char* name : {"M1-straight-back-somersault", "M2-tucked-back-somersault",
+                           "M6-half-twist-into-one-and-a-half-front"}) {
     SCOPED_TRACE(name);
     const std::string out = dir / name;
     const auto with =
         test::run_cli("optimize " + motions + name + ".motion.json --out " + out + " --quiet");
     ASSERT_EQ(with.status, 0) << with.output;
     const auto result = read_json(out + "/result.json");
-    EXPECT_TRUE(result["resolution"]["joint_load_polish"]["kept"].get<bool>());
+    const auto& polish = result["resolution"]["joint_load_polish"];
+    EXPECT_TRUE(polish["kept"].get<bool>());
+    EXPECT_EQ(polish["joint_bound"].get<double>(), kPolishJointBound);
     EXPECT_LE(result["after"]["avg_root_force"].get<double>(), 0.5);
-    EXPECT_LE(largest_rise(result), bound);
+    EXPECT_LE(largest_rise(result), 1.5);
   }
   const auto without =
       test::run_cli("optimize " + motions + "M2-tucked-back-somersault.motion.json --out " +

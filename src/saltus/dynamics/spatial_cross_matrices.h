@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// The spatial cross products (spatial.h) as matrices, for the analytic derivatives of inverse
-/// dynamics (root_wrench_state_jacobian, joint_moment_state_jacobian). S = [I₃; 0] is a ball
+/// dynamics (root_wrench_state_jacobian, joint_wrench_state_jacobian). S = [I₃; 0] is a ball
 /// joint's motion subspace; angular part first.
 
 #include "saltus/dynamics/spatial.h"

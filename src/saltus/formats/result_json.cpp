@@ -131,6 +131,7 @@ nlohmann::json resolution_json(const ResultJson::Optimization::Resolution& resol
   if (resolution.landing_drift_deg) j["landing_drift_deg"] = *resolution.landing_drift_deg;
   if (const auto& p = resolution.joint_load_polish)
     j["joint_load_polish"] = {{"weight", p->weight},
+                              {"joint_bound", p->joint_bound},
                               {"attempts", p->attempts},
                               {"avg_root_force_before", p->avg_root_force_before},
                               {"avg_root_force_after", p->avg_root_force_after},
@@ -309,6 +310,7 @@ ResultJson::Optimization::Resolution read_resolution(const JsonNode& node) {
     polish->require_object();
     JointLoadPolish& p = r.joint_load_polish.emplace();
     if (const auto w = polish->find("weight")) p.weight = w->as_double();
+    if (const auto b = polish->find("joint_bound")) p.joint_bound = b->as_double();
     if (const auto a = polish->find("attempts")) p.attempts = a->as_int();
     p.avg_root_force_before = polish->at("avg_root_force_before").as_double();
     p.avg_root_force_after = polish->at("avg_root_force_after").as_double();

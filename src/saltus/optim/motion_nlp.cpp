@@ -9,6 +9,7 @@
 #include "saltus/math/bspline_basis.h"
 #include "saltus/optim/terms/force_bound_block.h"
 #include "saltus/optim/terms/joint_acceleration_term.h"
+#include "saltus/optim/terms/joint_bound_block.h"
 #include "saltus/optim/terms/joint_load_term.h"
 #include "saltus/optim/terms/joint_turn_term.h"
 #include "saltus/optim/terms/keyframe_distance_term.h"
@@ -115,6 +116,9 @@ MotionNlp::MotionNlp(const Motion& motion, const BodyModel& model,
       layout_, *targets_, motion.tolerances.quaternion, bound));
   if (layout_.optimize_timing)
     owned_blocks_.push_back(std::make_unique<TimeOrderBlock>(layout_, time_gap_));
+  if (!options.joint_moment_bounds.empty())
+    owned_blocks_.push_back(std::make_unique<JointBoundBlock>(layout_, options.joint_moment_bounds,
+                                                              options.joint_force_bounds));
   if (!relaxed) {
     // A sample's span can change when the times move: its row covers every span it can reach
     // within the time bounds (exactly one span when timing is fixed).

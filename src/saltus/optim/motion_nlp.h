@@ -110,6 +110,11 @@ struct MotionNlpOptions {
   /// every joint). optimize_motion sets them from the input's peaks, so that the term counts
   /// each joint's load against what the input needed and not in absolute N·m.
   std::vector<double> joint_load_scales;
+  /// Upper bounds on each non-root joint's moment (N·m) and force (N) magnitudes, in model
+  /// order, as constraints at nodes on every span (terms/joint_bound_block.h); empty: none
+  /// (forces: only with moments). optimize_motion's polish sets them from the input's peaks.
+  std::vector<double> joint_moment_bounds;
+  std::vector<double> joint_force_bounds;
   /// Weight w (N²) of the keyframe prior added to the relaxed objective:
   /// w·Σ_i (‖B(t_i) − B̄_i‖²/ε1² + Σ_k ‖Q_k(t_i) − Q̄_k‖²/ε2²), the strict model's keyframe
   /// distance in units of the tolerances. The tolerances let a motion meet its keyframes at

@@ -210,6 +210,18 @@ std::vector<double> joint_load_scales(const DenseCheck& input) {
   return peaks;
 }
 
+/// The polish's bounds on each joint's moment and force: kPolishJointBound times the input's
+/// peak there, at least kJointMomentFloorNm and kJointForceFloorN.
+void set_joint_bounds(const DenseCheck& input, MotionNlpOptions& options) {
+  for (std::size_t j = 1; j < input.joint_peaks.size(); ++j) {
+    const JointLoadPeak& peak = input.joint_peaks[j];
+    options.joint_moment_bounds.push_back(kPolishJointBound *
+                                          std::max(peak.moment_Nm, kJointMomentFloorNm));
+    options.joint_force_bounds.push_back(kPolishJointBound *
+                                         std::max(peak.force_N, kJointForceFloorN));
+  }
+}
+
 }  // namespace
 
 OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
@@ -388,6 +400,7 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
     polish_options.optimize_timing = false;
     SolverOptions polish_solver = options.solver;
     polish_solver.warm_start = false;  // no time variables: another layout
+    polish_solver.max_iterations = std::min(polish_solver.max_iterations, kPolishMaxIterations);
     if (!best_flown) best_flown = fly(best.optimized, model, options.nlp.samples);
     JointLoadPolish& p = result.joint_load_polish.emplace();
     p.avg_root_force_before = best_force;
@@ -396,11 +409,16 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
          weight *= 0.5) {
       if (cancel && cancel->load()) break;
       polish_options.joint_load_weight = weight;
+      const bool bounded = p.attempts < kPolishBoundedAttempts;
+      polish_options.joint_moment_bounds.clear();
+      polish_options.joint_force_bounds.clear();
+      if (bounded) set_joint_bounds(result.before.check, polish_options);
       Solved polished = solve_level(motion, best.optimized, model, best.trajectory, polish_options,
                                     polish_solver, counted, cancel);
       count(polished.solve);
       Flown polished_flown = fly(polished.optimized, model, options.nlp.samples);
       p.weight = weight;
+      p.joint_bound = bounded ? kPolishJointBound : 0.0;
       ++p.attempts;
       p.avg_root_force_after = polished_flown.evaluation.metrics.avg_root_force;
       p.landing_drift_after_deg = polished_flown.drift_deg;

@@ -106,13 +106,25 @@ double largest_control_turn(const Trajectory<double>& trajectory, int first_segm
 /// N: the least-joint-effort polish may trade root force for joint loads up to this average
 /// root force (a flight's true residual is held to it: docs/optimizer.md, "Joint loads").
 inline constexpr double kPolishMaxRootForce = 0.5;
-/// A polish that is not kept is tried again at half the weight, at most this many times in all.
+/// A polish that is not kept is tried again at half the weight, at most this many times in all;
+/// the first kPolishBoundedAttempts with the joints bounded (kPolishJointBound), the others
+/// without (only least joint effort then holds them: the dive's elbow at 3.3x its input).
 inline constexpr int kPolishAttempts = 3;
+inline constexpr int kPolishBoundedAttempts = 2;
+/// Iterations a polish try may take: kept tries take 20-80; one that has not converged by then
+/// is not going to be kept, and each iteration costs several of a level's (the joint bounds).
+inline constexpr int kPolishMaxIterations = 150;
 
 /// The polish's MotionNlpOptions::root_moment_weight: it may trade root force for joint loads,
 /// not root moment, which a twisting body turns into degrees at landing (with 1, M7's free flight
 /// ended 70° from the polished motion; with 100, 1.8°: docs/optimizer.md, "Landing drift").
 inline constexpr double kPolishRootMomentWeight = 100.0;
+
+/// The polish bounds each joint's moment and force by this multiple of the input's peak there
+/// (at least kJointMomentFloorNm and kJointForceFloorN), at nodes on every span: a joint may not
+/// pay for the root residual (our bar is 1.5 times the input's peak on the dense grid; a load
+/// may rise a little between nodes).
+inline constexpr double kPolishJointBound = 1.4;
 
 /// Least joint effort (MotionNlpOptions::joint_load_weight > 0): a last solve at the keyframe
 /// times the levels found, with the joint loads in the objective; kept when it solved with an
@@ -121,6 +133,8 @@ inline constexpr double kPolishRootMomentWeight = 100.0;
 /// otherwise tried again at half the weight (kPolishAttempts). The figures are the last try's.
 struct JointLoadPolish {
   double weight = 0.0;  ///< the last try's joint-load weight, N²/(N·m)²
+  /// The last try's joint bound, a multiple of the input's peaks (kPolishJointBound); 0: none.
+  double joint_bound = 0.0;
   int attempts = 0;
   double avg_root_force_before = 0.0;     ///< N, the best level's (dense check)
   double avg_root_force_after = 0.0;      ///< N, the polished motion's

@@ -497,7 +497,7 @@ constexpr std::size_t member_count() {
 // Every member of the option structs is either an option of the table or one of the internal
 // settings below (or, like verbose and derivative_test_file, decides only what is logged). A new
 // member changes these counts: declare it in the table or below, then update the count.
-static_assert(member_count<MotionNlpOptions>() == 22, "new MotionNlpOptions member: declare it");
+static_assert(member_count<MotionNlpOptions>() == 24, "new MotionNlpOptions member: declare it");
 static_assert(member_count<DampingRule>() == 7, "new DampingRule member: declare it");
 static_assert(member_count<SolverOptions>() == 11, "new SolverOptions member: declare it");
 static_assert(member_count<OptimizeOptions>() == 4, "new OptimizeOptions member: declare it");
@@ -526,6 +526,8 @@ nlohmann::json internal_settings(const OptimizeOptions& o) {
           {"joint_turn_weight", n.joint_turn_weight},
           {"root_moment_weight", n.root_moment_weight},
           {"joint_load_scales", n.joint_load_scales},
+          {"joint_moment_bounds", n.joint_moment_bounds},
+          {"joint_force_bounds", n.joint_force_bounds},
           {"acceptable_iterations", s.acceptable_iterations},
           {"acceptable_constraint_violation", s.acceptable_constraint_violation},
           {"stall_iterations", s.stall_iterations},

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "saltus/dynamics/joint_moment_state_jacobian.h"
+#include "saltus/dynamics/joint_wrench_state_jacobian.h"
 #include "saltus/dynamics/root_wrench_state_jacobian.h"
 #include "saltus/math/quaternion_span_derivatives.h"
 #include "saltus/math/quaternion_spline.h"
@@ -47,7 +47,7 @@ struct RootWrenchDerivatives::Workspace {
         state(model.size()),
         joint_state_jacobian(model.size()),
         wrench_state(model),
-        moment_state(model),
+        joint_wrench_state(model),
         span_logs(model.size()) {}
 
   DynamicsData<double> data;
@@ -58,7 +58,7 @@ struct RootWrenchDerivatives::Workspace {
   std::vector<Eigen::Matrix<double, kJointStateSize, kSplineDirections>> joint_state_jacobian;
   Eigen::Matrix<double, kRootStateSize, kSplineDirections> root_state_jacobian;
   RootWrenchStateJacobian wrench_state;
-  JointMomentStateJacobian moment_state;
+  JointWrenchStateJacobian joint_wrench_state;
   int basis_keyframe = -1;  ///< keyframe whose basis is in keyframe_basis, −1 for none
   /// Span whose joint logs are in span_logs (−1 for none). Samples come in time order, so
   /// caching the last span computes each span's logs once per point.
@@ -322,26 +322,47 @@ void RootWrenchDerivatives::wrench_jacobian_seeded(int span, const Time& t, Loca
   }
 }
 
-Eigen::VectorXd RootWrenchDerivatives::joint_moments_on_span(int span, double xi) {
+Eigen::VectorXd RootWrenchDerivatives::joint_loads_on_span(int span, double xi,
+                                                           int rows_per_joint) {
   wrench_on_span(span, xi);
   const DynamicsData<double>& data = work_->data;
-  Eigen::VectorXd out(joint_moment_rows());
+  Eigen::VectorXd out(rows_per_joint * (layout_.segment_count - 1));
   for (int j = 1; j < layout_.segment_count; ++j)
-    out.segment<3>(3 * (j - 1)) = data.joint_wrench[j].head<3>();
+    out.segment(rows_per_joint * (j - 1), rows_per_joint) =
+        data.joint_wrench[j].head(rows_per_joint);
   return out;
+}
+
+Eigen::VectorXd RootWrenchDerivatives::joint_moments_on_span(int span, double xi) {
+  return joint_loads_on_span(span, xi, 3);
+}
+
+Eigen::VectorXd RootWrenchDerivatives::joint_wrenches_on_span(int span, double xi) {
+  return joint_loads_on_span(span, xi, 6);
 }
 
 void RootWrenchDerivatives::joint_moments_jacobian_on_span(int span, double xi,
                                                            LocalJacobian<Eigen::Dynamic>& out) {
+  joint_loads_jacobian_on_span<3>(span, xi, out);
+}
+
+void RootWrenchDerivatives::joint_wrenches_jacobian_on_span(int span, double xi,
+                                                            LocalJacobian<Eigen::Dynamic>& out) {
+  joint_loads_jacobian_on_span<6>(span, xi, out);
+}
+
+template <int RowsPerJoint>
+void RootWrenchDerivatives::joint_loads_jacobian_on_span(int span, double xi,
+                                                         LocalJacobian<Eigen::Dynamic>& out) {
   Workspace& w = *work_;
   const int n = layout_.segment_count;
   w.basis_keyframe = -1;
   seed_knots(layout_, knots_, span, w.knots_ad, w.time_count, w.time_variable);
   const SplineAD t = w.knots_ad[span] + xi * (w.knots_ad[span + 1] - w.knots_ad[span]);
   seed_state(span, t);
-  joint_moment_state_jacobian(model_, w.data, w.state, w.wrench_state, w.moment_state);
+  joint_wrench_state_jacobian(model_, w.data, w.state, w.wrench_state, w.joint_wrench_state);
 
-  const int rows = joint_moment_rows();
+  const int rows = RowsPerJoint * (n - 1);
   const int block = layout_.curve_block();
   out.first_control_variable = layout_.control_variable(0, span - 3, 0);
   out.value.resize(rows);
@@ -349,22 +370,26 @@ void RootWrenchDerivatives::joint_moments_jacobian_on_span(int span, double xi,
   out.time.setZero(rows, kMaxLocalTimes);
   out.time_count = w.time_count;
   out.time_variable = w.time_variable;
-  // Chain rule, joint by joint: only the curves whose state moves that joint's moment.
-  Eigen::Matrix<double, 3, kSplineDirections> part;
+  // Chain rule, joint by joint: only the curves whose state moves that joint's load.
+  Eigen::Matrix<double, RowsPerJoint, kSplineDirections> part;
   auto add = [&](int row, int curve) {
     for (int c = 0; c < 4; ++c)
-      out.control.block<3, 3>(row, c * block + 3 * curve) += part.middleCols<3>(3 * c);
-    out.time.block(row, 0, 3, w.time_count) += part.middleCols(kControlDirections, w.time_count);
+      out.control.template block<RowsPerJoint, 3>(row, c * block + 3 * curve) +=
+          part.template middleCols<3>(3 * c);
+    out.time.block(row, 0, RowsPerJoint, w.time_count) +=
+        part.middleCols(kControlDirections, w.time_count);
   };
-  const JointMomentStateJacobian& jac = w.moment_state;
+  const JointWrenchStateJacobian& jac = w.joint_wrench_state;
   for (int j = 1; j < n; ++j) {
-    const int row = 3 * (j - 1);
-    out.value.segment<3>(row) = w.data.joint_wrench[j].head<3>();
-    part.noalias() = jac.root_translation[j].lazyProduct(w.root_state_jacobian);
+    const int row = RowsPerJoint * (j - 1);
+    out.value.segment(row, RowsPerJoint) = w.data.joint_wrench[j].head<RowsPerJoint>();
+    part.noalias() =
+        jac.root_translation[j].topRows<RowsPerJoint>().lazyProduct(w.root_state_jacobian);
     add(row, 0);
     for (int k = 0; k < n; ++k) {
       if (!jac.touches[j * n + k]) continue;
-      part.noalias() = jac.joint[j * n + k].lazyProduct(w.joint_state_jacobian[k]);
+      part.noalias() =
+          jac.joint[j * n + k].topRows<RowsPerJoint>().lazyProduct(w.joint_state_jacobian[k]);
       add(row, k + 1);
     }
   }

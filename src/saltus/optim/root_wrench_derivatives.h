@@ -71,6 +71,10 @@ class RootWrenchDerivatives {
   /// with the knots, as wrench_jacobian_on_span).
   Eigen::VectorXd joint_moments_on_span(int span, double xi);
   void joint_moments_jacobian_on_span(int span, double xi, LocalJacobian<Eigen::Dynamic>& out);
+  /// The same with each joint's force after its moment: six rows per joint (n_j, then f_j, the
+  /// parent's force on the child's subtree, child frame, N).
+  Eigen::VectorXd joint_wrenches_on_span(int span, double xi);
+  void joint_wrenches_jacobian_on_span(int span, double xi, LocalJacobian<Eigen::Dynamic>& out);
   int joint_moment_rows() const { return 3 * (layout_.segment_count - 1); }
 
   /// Values only, in plain double (what the constraints need at a line-search trial point):
@@ -89,6 +93,11 @@ class RootWrenchDerivatives {
 
  private:
   struct Workspace;
+  /// Every non-root joint's first `rows_per_joint` rows of its wrench (3: the moment, 6: moment
+  /// and force), values only or with their derivatives.
+  Eigen::VectorXd joint_loads_on_span(int span, double xi, int rows_per_joint);
+  template <int RowsPerJoint>
+  void joint_loads_jacobian_on_span(int span, double xi, LocalJacobian<Eigen::Dynamic>& out);
   /// Seeds the knots and builds the AD basis at keyframe i's time into the workspace, once per
   /// keyframe and point (every segment's rotation at that keyframe shares it).
   void prepare_keyframe(int keyframe);

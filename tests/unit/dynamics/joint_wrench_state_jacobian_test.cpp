@@ -1,29 +1,30 @@
-// The analytic joint-moment state Jacobian against central finite differences of the double
-// inverse dynamics (an independent path: no derivative code involved), for every joint and every
-// state entry, and its zero pattern (a joint's moment ignores the states of unrelated limbs).
+// The analytic joint-wrench state Jacobian (moment and force) against central finite differences
+// of the double inverse dynamics (an independent path: no derivative code involved), for every
+// joint and every state entry, and its zero pattern (a joint's wrench ignores the states of
+// unrelated limbs).
 
 #include <gtest/gtest.h>
 
 #include <random>
 
-#include "saltus/dynamics/joint_moment_state_jacobian.h"
+#include "saltus/dynamics/joint_wrench_state_jacobian.h"
 #include "support/random_body_state.h"
 #include "support/test_motions.h"
 
 namespace saltus {
 namespace {
 
-/// Every joint's moment n_j (child frame, about the joint centre), stacked.
-Eigen::VectorXd joint_moments(const BodyModel& model, const BodyState<double>& state) {
+/// Every joint's wrench (n_j, f_j) (child frame, moment about the joint centre), stacked.
+Eigen::VectorXd joint_wrenches(const BodyModel& model, const BodyState<double>& state) {
   DynamicsData<double> data(model);
   inverse_dynamics(model, data, state);
-  Eigen::VectorXd out(3 * model.size());
+  Eigen::VectorXd out(6 * model.size());
   for (int j = 0; j < model.size(); ++j)
-    out.segment<3>(3 * j) = data.joint_wrench[j].head<3>();
+    out.segment<6>(6 * j) = data.joint_wrench[j];
   return out;
 }
 
-TEST(JointMomentStateJacobian, MatchesCentralDifferencesForEveryJointAndState) {
+TEST(JointWrenchStateJacobian, MatchesCentralDifferencesForEveryJointAndState) {
   const BodyModel model = test::bundled_model();
   const int n = model.size();
   for (unsigned seed : {3u, 8u}) {
@@ -32,8 +33,8 @@ TEST(JointMomentStateJacobian, MatchesCentralDifferencesForEveryJointAndState) {
     inverse_dynamics(model, data, state);
     RootWrenchStateJacobian sweep(model);
     root_wrench_state_jacobian(model, data, state, sweep);
-    JointMomentStateJacobian jac(model);
-    joint_moment_state_jacobian(model, data, state, sweep, jac);
+    JointWrenchStateJacobian jac(model);
+    joint_wrench_state_jacobian(model, data, state, sweep, jac);
 
     const double h = 1e-6;
     // Column `entry` of segment k's state (η, ω, α), or k = −1: the root's ṗ then p̈.
@@ -52,7 +53,7 @@ TEST(JointMomentStateJacobian, MatchesCentralDifferencesForEveryJointAndState) {
           if (entry >= 3 && entry < 6) joint.omega += delta;
           if (entry >= 6) joint.alpha += delta;
         }
-        side[s] = joint_moments(model, moved);
+        side[s] = joint_wrenches(model, moved);
       }
       return Eigen::VectorXd((side[0] - side[1]) / (2.0 * h));
     };
@@ -60,8 +61,8 @@ TEST(JointMomentStateJacobian, MatchesCentralDifferencesForEveryJointAndState) {
       for (int entry = 0; entry < (k < 0 ? 6 : kJointStateTangentSize); ++entry) {
         const Eigen::VectorXd expected = difference(k, entry);
         for (int j = 0; j < n; ++j) {
-          const Eigen::Vector3d e = expected.segment<3>(3 * j);
-          Eigen::Vector3d got = Eigen::Vector3d::Zero();
+          const Vector6d e = expected.segment<6>(6 * j);
+          Vector6d got = Vector6d::Zero();
           if (k < 0)
             got = jac.root_translation[j].col(entry);
           else if (jac.touches[j * n + k])
@@ -74,22 +75,28 @@ TEST(JointMomentStateJacobian, MatchesCentralDifferencesForEveryJointAndState) {
   }
 }
 
-TEST(JointMomentStateJacobian, RootRowIsTheRootWrenchsMoment) {
+TEST(JointWrenchStateJacobian, RootRowIsTheRootWrench) {
   const BodyModel model = test::bundled_model();
   const BodyState<double> state = test::random_body_state(model.size(), 5);
   DynamicsData<double> data(model);
   inverse_dynamics(model, data, state);
   RootWrenchStateJacobian sweep(model);
   root_wrench_state_jacobian(model, data, state, sweep);
-  JointMomentStateJacobian jac(model);
-  joint_moment_state_jacobian(model, data, state, sweep, jac);
+  JointWrenchStateJacobian jac(model);
+  joint_wrench_state_jacobian(model, data, state, sweep, jac);
   for (int k = 0; k < model.size(); ++k) {
     // root_wrench_state_jacobian's rows are force first.
-    EXPECT_LE((jac.joint[k] - sweep.joint[k].bottomRows<3>()).norm(),
+    EXPECT_LE((jac.joint[k].topRows<3>() - sweep.joint[k].bottomRows<3>()).norm(),
+              1e-10 * (1.0 + sweep.joint[k].norm()))
+        << k;
+    EXPECT_LE((jac.joint[k].bottomRows<3>() - sweep.joint[k].topRows<3>()).norm(),
               1e-10 * (1.0 + sweep.joint[k].norm()))
         << k;
   }
-  EXPECT_LE((jac.root_translation[0] - sweep.root_translation.bottomRows<3>()).norm(), 1e-10);
+  EXPECT_LE((jac.root_translation[0].topRows<3>() - sweep.root_translation.bottomRows<3>()).norm(),
+            1e-10);
+  EXPECT_LE((jac.root_translation[0].bottomRows<3>() - sweep.root_translation.topRows<3>()).norm(),
+            1e-10);
 }
 
 }  // namespace

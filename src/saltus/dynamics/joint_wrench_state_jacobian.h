@@ -1,9 +1,10 @@
 #pragma once
 /// @file
-/// Analytic first derivatives of every joint's moment (the moment the parent applies on the
-/// child's subtree across a ball joint, child frame, about the joint centre: the `n` of
-/// DynamicsData::joint_wrench) with respect to every joint's state and the root translation's
-/// rates. What the optimiser's joint-load term needs (optim/terms/joint_load_term.h).
+/// Analytic first derivatives of every joint's wrench (the moment and force the parent applies
+/// on the child's subtree across a ball joint, child frame, moment about the joint centre:
+/// DynamicsData::joint_wrench, moment rows first) with respect to every joint's state and the
+/// root translation's rates. What the optimiser's joint-load term and joint bounds need
+/// (optim/terms/joint_load_term.h, joint_bound_block.h).
 ///
 /// Built on root_wrench_state_jacobian's sweep (Ic_i and K_i for every segment): joint j's
 /// subtree wrench F_j depends on
@@ -21,19 +22,19 @@
 
 namespace saltus {
 
-using JointMomentColumns = Eigen::Matrix<double, 3, kJointStateTangentSize>;
+using JointWrenchColumns = Eigen::Matrix<double, 6, kJointStateTangentSize>;
 
 /// Result and workspace; sized once per model, reused for every sample.
-struct JointMomentStateJacobian {
-  explicit JointMomentStateJacobian(const BodyModel& model);
+struct JointWrenchStateJacobian {
+  explicit JointWrenchStateJacobian(const BodyModel& model);
 
-  /// d(n_j)/d(η_i, ω_i, α_i) at [j * size + i]; zero when i is neither in subtree(j) nor an
-  /// ancestor of j (then `touches` is false). Row j = 0 (the root wrench's moment) is filled
-  /// too, in the root frame about the root origin.
-  std::vector<JointMomentColumns> joint;
+  /// d(n_j, f_j)/d(η_i, ω_i, α_i) at [j * size + i]; zero when i is neither in subtree(j) nor
+  /// an ancestor of j (then `touches` is false). Row j = 0 (the root wrench) is filled too, in
+  /// the root frame about the root origin.
+  std::vector<JointWrenchColumns> joint;
   std::vector<char> touches;
-  /// d(n_j)/d(ṗ, p̈) (world frame), per j.
-  std::vector<Eigen::Matrix<double, 3, 6>> root_translation;
+  /// d(n_j, f_j)/d(ṗ, p̈) (world frame), per j.
+  std::vector<Eigen::Matrix<double, 6, 6>> root_translation;
   int size = 0;
 
   /// Workspace: the velocity and acceleration changes carried down from one ancestor (its 9
@@ -43,9 +44,9 @@ struct JointMomentStateJacobian {
 
 /// Fills `out` for the state whose inverse dynamics is in `data` and whose root-wrench sweep is
 /// in `sweep` (root_wrench_state_jacobian on the same state).
-void joint_moment_state_jacobian(const BodyModel& model, const DynamicsData<double>& data,
+void joint_wrench_state_jacobian(const BodyModel& model, const DynamicsData<double>& data,
                                  const BodyState<double>& state,
                                  const RootWrenchStateJacobian& sweep,
-                                 JointMomentStateJacobian& out);
+                                 JointWrenchStateJacobian& out);
 
 }  // namespace saltus

@@ -1,4 +1,4 @@
-#include "saltus/dynamics/joint_moment_state_jacobian.h"
+#include "saltus/dynamics/joint_wrench_state_jacobian.h"
 
 #include "saltus/dynamics/spatial_cross_matrices.h"
 
@@ -11,7 +11,7 @@ constexpr int kCarriedColumns = kJointStateTangentSize + 6;
 using Carried = Eigen::Matrix<double, 6, kCarriedColumns>;
 }  // namespace
 
-JointMomentStateJacobian::JointMomentStateJacobian(const BodyModel& model)
+JointWrenchStateJacobian::JointWrenchStateJacobian(const BodyModel& model)
     : joint(static_cast<std::size_t>(model.size()) * model.size()),
       touches(static_cast<std::size_t>(model.size()) * model.size()),
       root_translation(model.size()),
@@ -19,10 +19,10 @@ JointMomentStateJacobian::JointMomentStateJacobian(const BodyModel& model)
       velocity_change(model.size()),
       acceleration_change(model.size()) {}
 
-void joint_moment_state_jacobian(const BodyModel& model, const DynamicsData<double>& data,
+void joint_wrench_state_jacobian(const BodyModel& model, const DynamicsData<double>& data,
                                  const BodyState<double>& state,
                                  const RootWrenchStateJacobian& sweep,
-                                 JointMomentStateJacobian& out) {
+                                 JointWrenchStateJacobian& out) {
   const int n = model.size();
   std::fill(out.touches.begin(), out.touches.end(), 0);
   for (auto& m : out.root_translation)
@@ -34,11 +34,11 @@ void joint_moment_state_jacobian(const BodyModel& model, const DynamicsData<doub
     Eigen::Matrix<double, 6, kJointStateTangentSize> own = sweep.segment_columns[i];
     // F_i in its own turning frame: without the turn of X*_i that segment_columns includes.
     if (i > 0) own.leftCols<3>() += 2.0 * motion_cross_rotation(data.joint_wrench[i]);
-    out.joint[i * n + i] = own.topRows<3>();
+    out.joint[i * n + i] = own;
     out.touches[i * n + i] = 1;
     Mat6<double> to_ancestor = data.placement[i].motion_matrix_to_child().transpose();
     for (int j = model.segments[i].parent; j >= 0; j = model.segments[j].parent) {
-      out.joint[j * n + i] = (to_ancestor * sweep.segment_columns[i]).topRows<3>();
+      out.joint[j * n + i] = to_ancestor * sweep.segment_columns[i];
       out.touches[j * n + i] = 1;
       if (j > 0) to_ancestor = data.placement[j].motion_matrix_to_child().transpose() * to_ancestor;
     }
@@ -64,7 +64,7 @@ void joint_moment_state_jacobian(const BodyModel& model, const DynamicsData<doub
       const Eigen::Matrix<double, 6, 6> root_change =
           sweep.parent_velocity_sensitivity[0] * dv.rightCols<6>() +
           sweep.composite_inertia[0] * da.rightCols<6>();
-      out.root_translation[0] = root_change.topRows<3>();
+      out.root_translation[0] = root_change;
     }
     // The velocity product's share: the parts of du ×m Sω not yet counted.
     da.leftCols<3>() -= rate_a * dv.leftCols<3>();
@@ -84,9 +84,9 @@ void joint_moment_state_jacobian(const BodyModel& model, const DynamicsData<doub
       const Carried db = to_child * out.acceleration_change[p];
       const Carried df =
           sweep.parent_velocity_sensitivity[c] * du + sweep.composite_inertia[c] * db;
-      out.joint[c * n + a] = df.topLeftCorner<3, kJointStateTangentSize>();
+      out.joint[c * n + a] = df.leftCols<kJointStateTangentSize>();
       out.touches[c * n + a] = 1;
-      if (a == 0) out.root_translation[c] = df.topRightCorner<3, 6>();
+      if (a == 0) out.root_translation[c] = df.rightCols<6>();
       out.velocity_change[c] = du;
       out.acceleration_change[c] = db - joint_rate_cross_matrix(state.joints[c].omega) * du;
     }
