@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// A motion's joint moments against what people can produce: each joint's peak moment per kg of
-/// body mass beside the published maximal voluntary moment of strong adult men at that joint, and
+/// body mass beside the published maximal voluntary moment of healthy adult men at that joint, and
 /// its share of it (issue 24: the optimised motion's joint loads stay "within published maximal
 /// joint moments of athletes").
 ///
