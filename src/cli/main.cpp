@@ -23,6 +23,7 @@
 #include "saltus/evaluation/evaluate.h"
 #include "saltus/evaluation/force_metrics.h"
 #include "saltus/evaluation/joint_loads.h"
+#include "saltus/evaluation/joint_strength.h"
 #include "saltus/evaluation/simulate.h"
 #include "saltus/evaluation/twist_sources.h"
 #include "saltus/evaluation/what_if.h"
@@ -364,6 +365,10 @@ int run_optimize(const CommonArgs& args) {
     if (!rise.joint.empty())
       std::printf("  joint loads: largest rise at %s\n",
                   saltus::joint_load_rise_words(rise, saltus::body_weight_N(file.model)).c_str());
+    std::printf("  joint moments: %s\n",
+                saltus::joint_moment_share_words(
+                    saltus::joint_moment_shares(file.model, result.after.check))
+                    .c_str());
     std::printf(
         "  wrote %s/{result.json, trajectory_before.csv, trajectory_after.csv, model.json, "
         "optimized.motion.json} in %.3f s\n",

@@ -55,6 +55,7 @@ void set_joint_loads(ResultJson& r, const BodyModel& model, const DenseCheck& be
     if (after && k < static_cast<int>(after->joint_peaks.size())) l.after = after->joint_peaks[k];
     r.joint_loads.push_back(std::move(l));
   }
+  r.joint_moment_shares = joint_moment_shares(model, after ? *after : before);
 }
 
 /// The closest pass to the apparatus and a dive's entry, from the flight's samples.
@@ -379,6 +380,20 @@ nlohmann::json result_to_json(const ResultJson& r) {
     }
     j["joint_loads"] = loads;
   }
+  if (!r.joint_moment_shares.empty()) {
+    nlohmann::json joints = nlohmann::json::object();
+    const auto optional_number = [](const std::optional<double>& x) {
+      return x ? nlohmann::json(*x) : nlohmann::json(nullptr);
+    };
+    for (const JointMomentShare& s : r.joint_moment_shares)
+      joints[s.joint] = {{"max_moment_per_kg", s.max_moment_per_kg},
+                         {"published_max_per_kg", optional_number(s.published_max_per_kg)},
+                         {"share_of_published_max", optional_number(s.share)}};
+    j["joint_moment_shares"] = {
+        {"motion", r.kind == ResultJson::Kind::kOptimization ? "after" : "before"},
+        {"joints", joints},
+        {"largest", joint_moment_share_words(r.joint_moment_shares)}};
+  }
   if (r.rotation_before) {
     j["rotation"]["before"] = rotation_json(*r.rotation_before);
     if (r.rotation_after) j["rotation"]["after"] = rotation_json(*r.rotation_after);
@@ -502,6 +517,21 @@ ResultJson parse_result_json(const nlohmann::json& document, const std::string& 
       l.before = peak(node.at("before"));
       if (const auto after = node.find("after")) l.after = peak(*after);
       r.joint_loads.push_back(std::move(l));
+    }
+  }
+  if (const auto shares = root.find("joint_moment_shares")) {
+    shares->require_object();
+    const JsonNode joints = shares->at("joints");
+    joints.require_object();
+    for (const auto& [name, node] : joints.members()) {
+      node.require_object();
+      JointMomentShare s;
+      s.joint = name;
+      s.max_moment_per_kg = node.at("max_moment_per_kg").as_double();
+      if (const auto published = node.find("published_max_per_kg"))
+        s.published_max_per_kg = published->as_double();
+      if (const auto share = node.find("share_of_published_max")) s.share = share->as_double();
+      r.joint_moment_shares.push_back(std::move(s));
     }
   }
   if (r.kind == ResultJson::Kind::kSimulation) {

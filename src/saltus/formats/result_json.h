@@ -15,6 +15,7 @@
 
 #include "saltus/evaluation/clearance.h"
 #include "saltus/evaluation/evaluate.h"
+#include "saltus/evaluation/joint_strength.h"
 #include "saltus/evaluation/simulate.h"
 #include "saltus/evaluation/yeadon_angles.h"
 #include "saltus/formats/motion_file.h"
@@ -74,6 +75,11 @@ struct ResultJson {
     std::optional<JointLoadPeak> after;
   };
   std::vector<JointLoad> joint_loads;
+  /// Each joint's peak moment per kg of body mass against the published maximal voluntary
+  /// moment at that joint (evaluation/joint_strength.h): of the optimised motion for
+  /// optimisations, of the evaluated one for evaluations; the root left out. Missing from files
+  /// before it.
+  std::vector<JointMomentShare> joint_moment_shares;
   /// Yeadon's somersaults, twists, largest tilt and peak twist rate (evaluation/yeadon_angles.h)
   /// of the evaluated, simulated or interpolated motion and of the optimised one; missing from
   /// files before them. A simulation's peak rate is not known (its samples hold no ω): 0.

@@ -90,6 +90,14 @@ auto fields(const DiveEntry& e) {
   return std::tie(e.time_s, e.first_contact, e.com_height_m, e.angle_to_vertical_deg, e.head_first,
                   e.vertical);
 }
+// By joint name: the file's object keeps no order (nlohmann sorts its keys).
+auto fields(const std::vector<JointMomentShare>& shares) {
+  std::vector<std::tuple<std::string, double, std::optional<double>, std::optional<double>>> all;
+  for (const JointMomentShare& s : shares)
+    all.emplace_back(s.joint, s.max_moment_per_kg, s.published_max_per_kg, s.share);
+  std::sort(all.begin(), all.end());
+  return all;
+}
 template <typename T>
 auto optional_fields(const std::optional<T>& x) {
   return x ? std::optional(fields(*x)) : std::nullopt;
@@ -109,6 +117,7 @@ void expect_same(const ResultJson& a, const ResultJson& b) {
   EXPECT_TRUE(optional_fields(a.clearance) == optional_fields(b.clearance));
   EXPECT_TRUE(optional_fields(a.entry) == optional_fields(b.entry));
   EXPECT_TRUE(optional_fields(a.optimization) == optional_fields(b.optimization));
+  EXPECT_TRUE(fields(a.joint_moment_shares) == fields(b.joint_moment_shares));
 }
 
 /// A result.json of `kind` with seeded values in every field the kind has.
@@ -166,6 +175,11 @@ ResultJson random_result(ResultJson::Kind kind, std::mt19937& rng) {
       r.residual_check->converged = rng() % 2;
     }
     if (kind == ResultJson::Kind::kOptimization) r.residual_check->optimizer_agrees = rng() % 2;
+    // Joints with and without a bound.
+    std::vector<std::pair<std::string, double>> peaks;
+    for (const char* joint : {"elbow_l", "hip_r", "knee_l", "lumbar"})
+      peaks.emplace_back(joint, positive(rng) / 10);
+    r.joint_moment_shares = joint_moment_shares(peaks, 40 + positive(rng) / 100);
   }
   if (kind != ResultJson::Kind::kOptimization)
     r.takeoff_angular_momentum = Eigen::Vector3d(any(rng), any(rng), any(rng));
@@ -287,20 +301,27 @@ TEST(ResultJson, KeysAreThoseOfDesignSection6) {
                           "max_rotation_error_deg",
                           "takeoff_angular_momentum",
                           "residual_check",
-                          "clearance"})
+                          "clearance",
+                          "joint_moment_shares"})
     EXPECT_TRUE(e.contains(key)) << key;
   // "entry" for dives only.
   EXPECT_EQ(e.contains("entry"), e["clearance"]["apparatus"] == "platform");
-  EXPECT_EQ(e.size(), 23u + e.contains("entry")) << e.dump();
+  EXPECT_EQ(e.size(), 24u + e.contains("entry")) << e.dump();
+  EXPECT_EQ(e["joint_moment_shares"]["motion"], "before");
+  for (const char* key : {"max_moment_per_kg", "published_max_per_kg", "share_of_published_max"})
+    EXPECT_TRUE(e["joint_moment_shares"]["joints"]["knee_l"].contains(key)) << key;
+  EXPECT_TRUE(e["joint_moment_shares"]["joints"]["hip_r"]["share_of_published_max"].is_null());
+  EXPECT_TRUE(e["joint_moment_shares"]["largest"].is_string());
   EXPECT_TRUE(e["after"].is_null());
   EXPECT_TRUE(e["iterations"].is_null());
   EXPECT_TRUE(e["samples"].is_number_integer());
   const nlohmann::json o = result_to_json(random_result(ResultJson::Kind::kOptimization, rng));
-  for (const char* key :
-       {"knots_per_interval_requested", "ipopt_status", "restarts", "formulation",
-        "timing_optimized", "tolerances", "joint_turn_limit_deg", "largest_joint_turn_deg",
-        "resolution", "keyframe_time_spread_s", "keyframe_times_undetermined"})
+  for (const char* key : {"knots_per_interval_requested", "ipopt_status", "restarts", "formulation",
+                          "timing_optimized", "tolerances", "joint_turn_limit_deg",
+                          "largest_joint_turn_deg", "resolution", "keyframe_time_spread_s",
+                          "keyframe_times_undetermined", "joint_moment_shares"})
     EXPECT_TRUE(o.contains(key)) << key;
+  EXPECT_EQ(o["joint_moment_shares"]["motion"], "after");
   for (const char* key : {"automatic", "subdivisions", "knots", "levels"})
     EXPECT_TRUE(o["resolution"].contains(key)) << key;
   EXPECT_TRUE(o["resolution"]["automatic"].is_boolean());
@@ -324,10 +345,11 @@ TEST(ResultJson, KeysAreThoseOfDesignSection6) {
 TEST(ResultJson, OlderOptimisationResultsWithoutTheLaterKeysStillRead) {
   std::mt19937 rng(5);
   nlohmann::json j = result_to_json(random_result(ResultJson::Kind::kOptimization, rng));
-  for (const char* key : {"restarts", "tolerances", "largest_joint_turn_deg", "ipopt_status",
-                          "knots_per_interval_requested", "joint_turn_limit_deg", "formulation",
-                          "timing_optimized", "epsilon", "residual_check", "resolution",
-                          "keyframe_time_spread_s", "keyframe_times_undetermined"})
+  for (const char* key :
+       {"restarts", "tolerances", "largest_joint_turn_deg", "ipopt_status", "joint_moment_shares",
+        "knots_per_interval_requested", "joint_turn_limit_deg", "formulation", "timing_optimized",
+        "epsilon", "residual_check", "resolution", "keyframe_time_spread_s",
+        "keyframe_times_undetermined"})
     j.erase(key);
   for (const char* stage : {"before", "after"})
     for (const char* key : {"optimizer_objective", "optimizer_avg_root_force"})
