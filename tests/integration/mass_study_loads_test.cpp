@@ -1,7 +1,7 @@
 // The mass study (§6.1, Fig. 8) reports joint loads a person can produce: optimised as `optimize`
-// does, M2's joints stay near what the interpolated input needs on both models while the root
-// force goes below 0.5 N; at the paper's resolution (`--paper-protocol`) the joints pay for the
-// root force with peaks many times the input's, which is why it is not the default.
+// does, M2's joints stay within 1.5 times what the interpolated input needs on both models while
+// the root force goes below 0.5 N; at the paper's resolution (`--paper-protocol`) the joints pay
+// for the root force with peaks many times the input's, which is why it is not the default.
 
 #include <gtest/gtest.h>
 
@@ -33,8 +33,9 @@ TEST(MassStudyLoads, OptimisedAsOptimizeDoesTheJointsDoNotPayForTheRootForce) {
                 paper.runs[r].result.after.metrics.avg_root_force, largest_rise(paper.runs[r]));
     EXPECT_TRUE(run.result.solve.solved) << run.label;
     EXPECT_LE(run.result.after.metrics.avg_root_force, 0.5) << run.label;
-    // Measured 3.1x and 3.2x (the left knee's 30 N·m against 9.7; an elbow's 8.4 N·m against 2.6).
-    EXPECT_LE(largest_rise(run), 4.0) << run.label;
+    // Issue 24's bar. Measured 1.40x and 1.41x (an ankle's force at landing) with the polish's
+    // joint bounds; 2.48x and 1.74x with the effort term alone, 3.1x and 3.2x in N·m.
+    EXPECT_LE(largest_rise(run), 1.5) << run.label;
     EXPECT_GE(largest_rise(paper.runs[r]), 10.0) << run.label;
   }
 }
