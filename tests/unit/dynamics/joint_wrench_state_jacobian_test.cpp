@@ -24,17 +24,26 @@ Eigen::VectorXd joint_wrenches(const BodyModel& model, const BodyState<double>& 
   return out;
 }
 
+/// The root wrench's sweep and the joint wrenches' Jacobian at one state.
+struct Sweeps {
+  DynamicsData<double> data;
+  RootWrenchStateJacobian root;
+  JointWrenchStateJacobian joints;
+  Sweeps(const BodyModel& model, const BodyState<double>& state)
+      : data(model), root(model), joints(model) {
+    inverse_dynamics(model, data, state);
+    root_wrench_state_jacobian(model, data, state, root);
+    joint_wrench_state_jacobian(model, data, state, root, joints);
+  }
+};
+
 TEST(JointWrenchStateJacobian, MatchesCentralDifferencesForEveryJointAndState) {
   const BodyModel model = test::bundled_model();
   const int n = model.size();
   for (unsigned seed : {3u, 8u}) {
     const BodyState<double> state = test::random_body_state(n, seed);
-    DynamicsData<double> data(model);
-    inverse_dynamics(model, data, state);
-    RootWrenchStateJacobian sweep(model);
-    root_wrench_state_jacobian(model, data, state, sweep);
-    JointWrenchStateJacobian jac(model);
-    joint_wrench_state_jacobian(model, data, state, sweep, jac);
+    const Sweeps sweeps(model, state);
+    const JointWrenchStateJacobian& jac = sweeps.joints;
 
     const double h = 1e-6;
     // Column `entry` of segment k's state (η, ω, α), or k = −1: the root's ṗ then p̈.
@@ -77,13 +86,9 @@ TEST(JointWrenchStateJacobian, MatchesCentralDifferencesForEveryJointAndState) {
 
 TEST(JointWrenchStateJacobian, RootRowIsTheRootWrench) {
   const BodyModel model = test::bundled_model();
-  const BodyState<double> state = test::random_body_state(model.size(), 5);
-  DynamicsData<double> data(model);
-  inverse_dynamics(model, data, state);
-  RootWrenchStateJacobian sweep(model);
-  root_wrench_state_jacobian(model, data, state, sweep);
-  JointWrenchStateJacobian jac(model);
-  joint_wrench_state_jacobian(model, data, state, sweep, jac);
+  const Sweeps sweeps(model, test::random_body_state(model.size(), 5));
+  const RootWrenchStateJacobian& sweep = sweeps.root;
+  const JointWrenchStateJacobian& jac = sweeps.joints;
   for (int k = 0; k < model.size(); ++k) {
     // root_wrench_state_jacobian's rows are force first.
     EXPECT_LE((jac.joint[k].topRows<3>() - sweep.joint[k].bottomRows<3>()).norm(),
