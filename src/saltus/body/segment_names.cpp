@@ -5,9 +5,6 @@
 
 namespace saltus {
 
-namespace {
-
-/// Side and base of an identifier: "thigh_r" -> {"right", "thigh"}; no side -> {"", name}.
 std::pair<std::string, std::string> split_side(const std::string& name) {
   if (name.size() > 2 && name[name.size() - 2] == '_') {
     const char side = name.back();
@@ -16,6 +13,8 @@ std::pair<std::string, std::string> split_side(const std::string& name) {
   }
   return {"", name};
 }
+
+namespace {
 
 std::string spaced(std::string text) {
   for (char& c : text)

@@ -6,12 +6,15 @@
 /// anything else keeps its words with underscores read as spaces, so other models read too.
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace saltus {
 
 /// "thigh_r" -> "right thigh", "shank_l" -> "left lower leg", "thorax" -> "upper trunk and head".
 std::string segment_label(const std::string& segment);
+/// Side and base of an identifier: "thigh_r" -> {"right", "thigh"}; no side -> {"", name}.
+std::pair<std::string, std::string> split_side(const std::string& name);
 /// "knee_r" -> "right knee", "lumbar" -> "lower back", "root" -> "root (the body in space)".
 std::string joint_label(const std::string& joint);
 /// The same with a capital first letter, for the start of a line or a list entry.

@@ -9,14 +9,6 @@ namespace saltus {
 
 namespace {
 
-/// "knee_l" -> "knee"; a name without a side stays as it is.
-std::string without_side(const std::string& joint) {
-  if (joint.size() > 2 && joint[joint.size() - 2] == '_' &&
-      (joint.back() == 'l' || joint.back() == 'r'))
-    return joint.substr(0, joint.size() - 2);
-  return joint;
-}
-
 /// A share in per cent: "12 %", "3.4 %".
 std::string percent_words(double share) {
   const double percent = 100.0 * share;
@@ -53,7 +45,7 @@ const std::vector<PublishedJointMoment>& published_joint_moments() {
 }
 
 const PublishedJointMoment* published_joint_moment(const std::string& joint) {
-  const std::string base = without_side(joint);
+  const std::string base = split_side(joint).second;  // "knee_l" -> "knee"
   for (const PublishedJointMoment& entry : published_joint_moments())
     if (base == entry.joint) return &entry;
   return nullptr;
