@@ -297,14 +297,14 @@ int run_optimize(const CommonArgs& args) {
                       "each joint's moment and force within %.2gx its peak before",
                       polish->joint_bound);
       std::printf(
-          "  least joint effort at these times (weight %.3g, %s%s): %.3g N -> %.3g N average "
-          "root force, free flight landing %.1f -> %.1f deg from the motion, %s\n",
-          polish->weight, bound,
-          polish->attempts > 1
-              ? (", try " + std::to_string(polish->attempts) + " of " +
-                 std::to_string(saltus::kPolishAttempts) + ", each at half the last")
-                    .c_str()
-              : "",
+          "  least joint effort at these times (weight %.3g, root moment weighed %.3gx, %s%s): "
+          "%.3g N -> %.3g N average root force, free flight landing %.1f -> %.1f deg from the "
+          "motion, %s\n",
+          polish->weight, polish->root_moment_weight, bound,
+          polish->attempts > 1 ? (", try " + std::to_string(polish->attempts) + " of " +
+                                  std::to_string(saltus::kPolishAttempts))
+                                     .c_str()
+                               : "",
           polish->avg_root_force_before, polish->avg_root_force_after,
           polish->landing_drift_before_deg, polish->landing_drift_after_deg,
           polish->kept ? "kept" : ("not kept (" + polish->status + ")").c_str());

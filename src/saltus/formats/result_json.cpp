@@ -132,6 +132,7 @@ nlohmann::json resolution_json(const ResultJson::Optimization::Resolution& resol
   if (resolution.landing_drift_deg) j["landing_drift_deg"] = *resolution.landing_drift_deg;
   if (const auto& p = resolution.joint_load_polish)
     j["joint_load_polish"] = {{"weight", p->weight},
+                              {"root_moment_weight", p->root_moment_weight},
                               {"joint_bound", p->joint_bound},
                               {"attempts", p->attempts},
                               {"avg_root_force_before", p->avg_root_force_before},
@@ -311,6 +312,7 @@ ResultJson::Optimization::Resolution read_resolution(const JsonNode& node) {
     polish->require_object();
     JointLoadPolish& p = r.joint_load_polish.emplace();
     if (const auto w = polish->find("weight")) p.weight = w->as_double();
+    if (const auto m = polish->find("root_moment_weight")) p.root_moment_weight = m->as_double();
     if (const auto b = polish->find("joint_bound")) p.joint_bound = b->as_double();
     if (const auto a = polish->find("attempts")) p.attempts = a->as_int();
     p.avg_root_force_before = polish->at("avg_root_force_before").as_double();

@@ -395,7 +395,6 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       best.solve.solved && !(cancel && cancel->load())) {
     MotionNlpOptions polish_options = nlp_options;
     polish_options.subdivisions = best_subdivisions;
-    polish_options.root_moment_weight = kPolishRootMomentWeight;
     polish_options.joint_load_scales = joint_load_scales(result.before.check);
     polish_options.optimize_timing = false;
     SolverOptions polish_solver = options.solver;
@@ -405,20 +404,20 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
     JointLoadPolish& p = result.joint_load_polish.emplace();
     p.avg_root_force_before = best_force;
     p.landing_drift_before_deg = best_flown->drift_deg;
-    for (double weight = joint_load_weight; p.attempts < kPolishAttempts && !p.kept;
-         weight *= 0.5) {
-      if (cancel && cancel->load()) break;
-      polish_options.joint_load_weight = weight;
-      const bool bounded = p.attempts < kPolishBoundedAttempts;
+    for (const PolishTry& attempt : kPolishTries) {
+      if (p.kept || (cancel && cancel->load())) break;
+      polish_options.joint_load_weight = attempt.weight_factor * joint_load_weight;
+      polish_options.root_moment_weight = attempt.root_moment_weight;
       polish_options.joint_moment_bounds.clear();
       polish_options.joint_force_bounds.clear();
-      if (bounded) set_joint_bounds(result.before.check, polish_options);
+      if (attempt.joints_bounded) set_joint_bounds(result.before.check, polish_options);
       Solved polished = solve_level(motion, best.optimized, model, best.trajectory, polish_options,
                                     polish_solver, counted, cancel);
       count(polished.solve);
       Flown polished_flown = fly(polished.optimized, model, options.nlp.samples);
-      p.weight = weight;
-      p.joint_bound = bounded ? kPolishJointBound : 0.0;
+      p.weight = polish_options.joint_load_weight;
+      p.root_moment_weight = attempt.root_moment_weight;
+      p.joint_bound = attempt.joints_bounded ? kPolishJointBound : 0.0;
       ++p.attempts;
       p.avg_root_force_after = polished_flown.evaluation.metrics.avg_root_force;
       p.landing_drift_after_deg = polished_flown.drift_deg;

@@ -4,6 +4,7 @@
 /// ("after") evaluated on the same grid — the one call behind `saltus optimize` and the GUI.
 
 #include <atomic>
+#include <iterator>
 #include <optional>
 #include <string>
 
@@ -106,11 +107,6 @@ double largest_control_turn(const Trajectory<double>& trajectory, int first_segm
 /// N: the least-joint-effort polish may trade root force for joint loads up to this average
 /// root force (a flight's true residual is held to it: docs/optimizer.md, "Joint loads").
 inline constexpr double kPolishMaxRootForce = 0.5;
-/// A polish that is not kept is tried again at half the weight, at most this many times in all;
-/// the first kPolishBoundedAttempts with the joints bounded (kPolishJointBound), the others
-/// without (only least joint effort then holds them: the dive's elbow at 3.3x its input).
-inline constexpr int kPolishAttempts = 3;
-inline constexpr int kPolishBoundedAttempts = 2;
 /// Iterations a polish try may take: kept tries take 20-80; one that has not converged by then
 /// is not going to be kept, and each iteration costs several of a level's (the joint bounds).
 inline constexpr int kPolishMaxIterations = 150;
@@ -120,19 +116,39 @@ inline constexpr int kPolishMaxIterations = 150;
 /// ended 70° from the polished motion; with 100, 1.8°: docs/optimizer.md, "Landing drift").
 inline constexpr double kPolishRootMomentWeight = 100.0;
 
+/// One try of the polish: its joint-load weight (a multiple of MotionNlpOptions::
+/// joint_load_weight), its root_moment_weight, and whether it bounds the joints
+/// (kPolishJointBound).
+struct PolishTry {
+  double weight_factor;
+  double root_moment_weight;
+  bool joints_bounded;
+};
+/// The polish's tries, in order, until one is kept: bounded at the full and half weight; then,
+/// for a flight whose first two tries land off (the dive), bounded at a quarter of the weight with
+/// the root moment weighed 3 times more; last without bounds (least joint effort alone then holds
+/// the joints). Why these: docs/optimizer.md, "Joint bounds".
+inline constexpr PolishTry kPolishTries[] = {{1.0, kPolishRootMomentWeight, true},
+                                             {0.5, kPolishRootMomentWeight, true},
+                                             {0.25, 3.0 * kPolishRootMomentWeight, true},
+                                             {0.25, kPolishRootMomentWeight, false}};
+inline constexpr int kPolishAttempts = static_cast<int>(std::size(kPolishTries));
+
 /// The polish bounds each joint's moment and force by this multiple of the input's peak there
 /// (at least kJointMomentFloorNm and kJointForceFloorN), at nodes on every span: a joint may not
 /// pay for the root residual (our bar is 1.5 times the input's peak on the dense grid; a load
-/// may rise a little between nodes).
-inline constexpr double kPolishJointBound = 1.4;
+/// rises a little between nodes, and a finer grid than ours finds a little more).
+inline constexpr double kPolishJointBound = 1.3;
 
 /// Least joint effort (MotionNlpOptions::joint_load_weight > 0): a last solve at the keyframe
 /// times the levels found, with the joint loads in the objective; kept when it solved with an
 /// average root force within kPolishMaxRootForce, or no larger than before, and its free flight
 /// lands within AutomaticResolution::max_landing_drift_deg of it, or no farther than before;
-/// otherwise tried again at half the weight (kPolishAttempts). The figures are the last try's.
+/// otherwise tried again as kPolishTries say. The figures are the last try's.
 struct JointLoadPolish {
   double weight = 0.0;  ///< the last try's joint-load weight, N²/(N·m)²
+  /// The last try's MotionNlpOptions::root_moment_weight.
+  double root_moment_weight = 0.0;
   /// The last try's joint bound, a multiple of the input's peaks (kPolishJointBound); 0: none.
   double joint_bound = 0.0;
   int attempts = 0;

@@ -16,9 +16,10 @@ TEST(RootWrenchTerm, ValueGradientAndDampedGaussNewtonMatchFiniteDifferences) {
   test::check_term(p, p.term("root wrench"), p.x, p.nlp->damping_factor());
 }
 
-// Least joint effort's polish weighs the root moment 100 times (kPolishRootMomentWeight): the
-// weighted term's derivatives still match finite differences, its value is J with the moment's
-// share multiplied by the weight, and force_objective() stays the paper's J.
+// Least joint effort's polish weighs the root moment 100 times (kPolishRootMomentWeight; 300 in
+// one of its tries): the weighted term's derivatives still match finite differences, its value
+// is J with the moment's share multiplied by the weight, and force_objective() stays the
+// paper's J.
 TEST(RootWrenchTerm, AWeightedMomentKeepsTheDerivativesAndTheReportedJ) {
   test::RandomPoint plain(Formulation::kRelaxed, 11, 2, 1.0);
   test::RandomPoint weighted(Formulation::kRelaxed, 11, 2, 100.0);
