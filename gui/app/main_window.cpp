@@ -140,7 +140,13 @@ MainWindow::MainWindow(bool interactive, QWidget* parent) : QMainWindow(parent) 
   scene_->setFocus();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+  // A window destroyed while shown hides its docks from ~QWidget, once its controllers and the
+  // document are gone: the Twist and What if panels must not hear of it then (the What if
+  // panel's figure would be drawn from a document already destroyed).
+  for (QDockWidget* d : {twist_dock_, what_if_dock_})
+    disconnect(d, &QDockWidget::visibilityChanged, nullptr, nullptr);
+}
 
 void MainWindow::build_menus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
