@@ -213,19 +213,27 @@ void MainWindow::build_menus() {
 }
 
 void MainWindow::build_docks(QMenu* view_menu) {
-  auto dock = [this](const QString& title, const char* name, QWidget* widget) {
+  auto dock = [this](const QString& title, const char* name, QWidget* widget,
+                     bool scrolled = true) {
     auto* d = new QDockWidget(title, this);
     d->setObjectName(name);
     // Scrollable, so that no panel sets a minimum height on the window (1280×720 must fit).
-    auto* scroll = new QScrollArea(d);
-    scroll->setWidget(widget);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    d->setWidget(scroll);
+    if (scrolled) {
+      auto* scroll = new QScrollArea(d);
+      scroll->setWidget(widget);
+      scroll->setWidgetResizable(true);
+      scroll->setFrameShape(QFrame::NoFrame);
+      d->setWidget(scroll);
+    } else {
+      d->setWidget(widget);
+    }
     addDockWidget(Qt::RightDockWidgetArea, d);
     return d;
   };
-  QDockWidget* optimise = dock(tr("Optimise"), "optimise_dock", runs_->panel());
+  // The Optimise panel scrolls its own table and options and asks for little height; in a
+  // scroll area of its own it was given its wrapped labels' preferred height (886 px at
+  // 1366×768) and the column scrolled around the options' scroll bar, two bars side by side.
+  QDockWidget* optimise = dock(tr("Optimise"), "optimise_dock", runs_->panel(), false);
   QDockWidget* keyframes = dock(tr("Keyframes"), "keyframe_dock", edits_->keyframe_panel());
   QDockWidget* capture = dock(tr("Capture"), "capture_dock", edits_->capture_panel());
   QDockWidget* model = dock(tr("Model"), "model_dock", edits_->model_panel());
