@@ -42,6 +42,10 @@ KeyframePanel::KeyframePanel(QWidget* parent) : QWidget(parent) {
   grid->addWidget(time_, 0, 1, 1, 2);
   grid->addWidget(new QLabel(tr("Joint:"), this), 1, 0);
   joint_ = new QComboBox(this);
+  // The longest joint's name ("Right shoulder (right upper arm)") would widen the panel past
+  // its column; the list that drops down shows the names whole.
+  joint_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  joint_->setMinimumContentsLength(16);
   grid->addWidget(joint_, 1, 1, 1, 2);
   const char* axes[3] = {"X (°):", "Y (°):", "Z (°):"};
   for (int a = 0; a < 3; ++a) {
@@ -64,14 +68,16 @@ KeyframePanel::KeyframePanel(QWidget* parent) : QWidget(parent) {
   }
   layout->addLayout(grid);
 
-  auto* buttons = new QHBoxLayout;
+  // Two rows, as in the Model panel: three buttons in one row were wider than the panel column
+  // on a 1366×768 laptop, which cut "Save motion…" and the angle boxes.
+  auto* buttons = new QGridLayout;
   add_ = new QPushButton(tr("Add at current time"), this);
   add_->setToolTip(tr("A new keyframe with the pose the motion has now"));
   delete_ = new QPushButton(tr("Delete"), this);
   save_ = new QPushButton(tr("Save motion…"), this);
-  buttons->addWidget(add_);
-  buttons->addWidget(delete_);
-  buttons->addWidget(save_);
+  buttons->addWidget(add_, 0, 0);
+  buttons->addWidget(delete_, 0, 1);
+  buttons->addWidget(save_, 1, 0, 1, 2);
   layout->addLayout(buttons);
   problem_ = new QLabel(this);
   problem_->setWordWrap(true);

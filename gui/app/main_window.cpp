@@ -140,7 +140,13 @@ MainWindow::MainWindow(bool interactive, QWidget* parent) : QMainWindow(parent) 
   scene_->setFocus();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+  // A window destroyed while shown hides its docks from ~QWidget, once its controllers and the
+  // document are gone: the Twist and What if panels must not hear of it then (the What if
+  // panel's figure would be drawn from a document already destroyed).
+  for (QDockWidget* d : {twist_dock_, what_if_dock_})
+    disconnect(d, &QDockWidget::visibilityChanged, nullptr, nullptr);
+}
 
 void MainWindow::build_menus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
@@ -207,19 +213,27 @@ void MainWindow::build_menus() {
 }
 
 void MainWindow::build_docks(QMenu* view_menu) {
-  auto dock = [this](const QString& title, const char* name, QWidget* widget) {
+  auto dock = [this](const QString& title, const char* name, QWidget* widget,
+                     bool scrolled = true) {
     auto* d = new QDockWidget(title, this);
     d->setObjectName(name);
     // Scrollable, so that no panel sets a minimum height on the window (1280×720 must fit).
-    auto* scroll = new QScrollArea(d);
-    scroll->setWidget(widget);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    d->setWidget(scroll);
+    if (scrolled) {
+      auto* scroll = new QScrollArea(d);
+      scroll->setWidget(widget);
+      scroll->setWidgetResizable(true);
+      scroll->setFrameShape(QFrame::NoFrame);
+      d->setWidget(scroll);
+    } else {
+      d->setWidget(widget);
+    }
     addDockWidget(Qt::RightDockWidgetArea, d);
     return d;
   };
-  QDockWidget* optimise = dock(tr("Optimise"), "optimise_dock", runs_->panel());
+  // The Optimise panel scrolls its own table and options and asks for little height; in a
+  // scroll area of its own it was given its wrapped labels' preferred height (886 px at
+  // 1366×768) and the column scrolled around the options' scroll bar, two bars side by side.
+  QDockWidget* optimise = dock(tr("Optimise"), "optimise_dock", runs_->panel(), false);
   QDockWidget* keyframes = dock(tr("Keyframes"), "keyframe_dock", edits_->keyframe_panel());
   QDockWidget* capture = dock(tr("Capture"), "capture_dock", edits_->capture_panel());
   QDockWidget* model = dock(tr("Model"), "model_dock", edits_->model_panel());

@@ -28,7 +28,11 @@ ModelPanel::ModelPanel(QWidget* parent) : QWidget(parent) {
   layout->setContentsMargins(4, 4, 4, 4);
   table_ = new QTableWidget(0, 3, this);
   table_->setHorizontalHeaderLabels({tr("segment"), tr("mass (kg)"), tr("× loaded")});
+  // The numbers' columns as wide as they need, the segment's names the rest: with equal
+  // columns the names were cut ("Upper trun…", "Right …") in the panel column of a laptop.
   table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+  table_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
+  table_->horizontalHeader()->setSectionResizeMode(2, QHeaderView::ResizeToContents);
   table_->verticalHeader()->setVisible(false);
   table_->setToolTip(tr("Edit a mass or a factor: the segment's mass and inertia scale together"));
   layout->addWidget(table_, 1);

@@ -43,9 +43,11 @@ struct OptionForm::Row {
 
 OptionForm::OptionForm(QWidget* parent) : QWidget(parent) {
   auto* form = new QFormLayout(this);
-  form->setContentsMargins(0, 0, 0, 0);
-  // In a narrow panel (a laptop screen) a field goes below its label rather than out of view.
-  form->setRowWrapPolicy(QFormLayout::WrapLongRows);
+  form->setContentsMargins(0, 0, 6, 0);  // units clear of the scroll bar
+  // Each field below its label, the whole width of the panel column its own: beside the labels
+  // ("Objective change tolerance") the fields were a few characters wide and the units
+  // ("N²/(N·m)²") were cut at the column's edge, on a laptop and on a 1920×1080 screen alike.
+  form->setRowWrapPolicy(QFormLayout::WrapAllRows);
   for (const OptionSpec& spec : option_table()) {
     Row row;
     row.spec = &spec;

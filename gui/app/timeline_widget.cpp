@@ -2,11 +2,13 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPainter>
 #include <QProxyStyle>
+#include <QRegularExpression>
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QStringList>
@@ -29,6 +31,36 @@ class JumpToClickStyle : public QProxyStyle {
     return QProxyStyle::styleHint(hint, option, widget, returned);
   }
 };
+
+/// A flag's colour, on the strip and in its legend.
+QColor flag_colour(FlagKind kind) {
+  switch (kind) {
+    case FlagKind::kClearance:
+      return QColor(44, 160, 44);
+    case FlagKind::kCollision:
+      return QColor(214, 39, 40);
+    case FlagKind::kEntry:
+      return QColor(31, 119, 180);
+    case FlagKind::kEntryOffLine:
+      return QColor(148, 103, 189);
+  }
+  return QColor(Qt::black);
+}
+
+/// A flag's name in the legend beside the strip: a few words; the figures stay in the tooltip.
+QString flag_name(FlagKind kind) {
+  switch (kind) {
+    case FlagKind::kClearance:
+      return QCoreApplication::translate("TimelineWidget", "closest pass, clear");
+    case FlagKind::kCollision:
+      return QCoreApplication::translate("TimelineWidget", "closest pass, inside");
+    case FlagKind::kEntry:
+      return QCoreApplication::translate("TimelineWidget", "entry, vertical");
+    case FlagKind::kEntryOffLine:
+      return QCoreApplication::translate("TimelineWidget", "entry, not vertical");
+  }
+  return {};
+}
 
 }  // namespace
 
@@ -82,21 +114,7 @@ void TickStrip::paintEvent(QPaintEvent*) {
   painter.setRenderHint(QPainter::Antialiasing);
   for (const TimelineFlag& flag : flags_) {
     const int x = x0 + static_cast<int>(flag.fraction * span + 0.5);
-    QColor colour;
-    switch (flag.kind) {
-      case FlagKind::kClearance:
-        colour = QColor(44, 160, 44);
-        break;
-      case FlagKind::kCollision:
-        colour = QColor(214, 39, 40);
-        break;
-      case FlagKind::kEntry:
-        colour = QColor(31, 119, 180);
-        break;
-      case FlagKind::kEntryOffLine:
-        colour = QColor(148, 103, 189);
-        break;
-    }
+    const QColor colour = flag_colour(flag.kind);
     const int h = height(), w = h / 2 + 1;
     const QPoint triangle[3] = {{x, 0}, {x - w, h}, {x + w, h}};
     painter.setPen(QPen(colour.darker(130), 1));
@@ -146,6 +164,16 @@ TimelineWidget::TimelineWidget(QWidget* parent) : QWidget(parent) {
   loop_->setChecked(timeline_.loop());
   time_label_ = new QLabel(this);
   time_label_->setMinimumWidth(fontMetrics().horizontalAdvance("00.000 s / 00.000 s") + 8);
+  // What the flags are, in a smaller font under the time and speed, so that a coach sees it
+  // without pointing at them; it never widens the window (the tooltip has it all).
+  flag_legend_ = new QLabel(this);
+  flag_legend_->setObjectName("timeline_flag_legend");
+  flag_legend_->setTextFormat(Qt::RichText);
+  QFont small = flag_legend_->font();
+  small.setPointSizeF(small.pointSizeF() * 0.85);
+  flag_legend_->setFont(small);
+  flag_legend_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+  flag_legend_->setVisible(false);
 
   layout->addWidget(back_button_, 0, 0);
   layout->addWidget(play_button_, 0, 1);
@@ -156,6 +184,7 @@ TimelineWidget::TimelineWidget(QWidget* parent) : QWidget(parent) {
   layout->addWidget(new QLabel(tr("Speed"), this), 0, 5);
   layout->addWidget(speed_, 0, 6);
   layout->addWidget(loop_, 0, 7);
+  layout->addWidget(flag_legend_, 1, 4, 1, 4, Qt::AlignLeft | Qt::AlignVCenter);
   layout->setColumnStretch(3, 1);
 
   connect(play_button_, &QToolButton::clicked, this, &TimelineWidget::toggle_play);
@@ -189,7 +218,24 @@ void TimelineWidget::set_motion(double duration, int frame_count, const std::vec
 }
 
 void TimelineWidget::set_flags(std::vector<TimelineFlag> flags) {
+  // One entry per kind shown, in the flags' order: a coloured triangle and its name.
+  QStringList entries;
+  for (const TimelineFlag& f : flags) {
+    const QString entry = QString("<span style='color:%1'>&#9650;</span>&nbsp;%2")
+                              .arg(flag_colour(f.kind).name(), flag_name(f.kind).toHtmlEscaped());
+    if (!entries.contains(entry)) entries << entry;
+  }
+  flag_legend_->setText(entries.join("&nbsp;&nbsp; "));
+  flag_legend_->setVisible(!entries.isEmpty());
   ticks_->set_flags(std::move(flags));
+  flag_legend_->setToolTip(ticks_->toolTip());
+}
+
+QString TimelineWidget::flag_legend() const {
+  if (flag_legend_->isHidden()) return {};
+  QString text = flag_legend_->text();
+  text.remove(QRegularExpression("<[^>]*>"));
+  return text.replace("&#9650;", QString(QChar(0x25B2))).replace("&nbsp;", " ");
 }
 
 const std::vector<TimelineFlag>& TimelineWidget::flags() const {

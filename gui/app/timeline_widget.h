@@ -2,9 +2,10 @@
 /// @file
 /// Playback controls: play/pause, step, a scrub slider over the sample frames with keyframe ticks
 /// (given times grey, optimised times orange) and flags (the closest pass to the apparatus, red
-/// when inside it, green when clear; a dive's entry, blue when vertical, purple when not; what
-/// each says in the strip's tooltip), speed 0.1×-2×, loop and the time. Owns the Timeline model
-/// and the playback clock; emits time_changed whenever the time moves.
+/// when inside it, green when clear; a dive's entry, blue when vertical, purple when not; named
+/// in a small legend beside the strip, their figures in the strip's tooltip), speed 0.1×-2×,
+/// loop and the time. Owns the Timeline model and the playback clock; emits time_changed
+/// whenever the time moves.
 
 #include <QElapsedTimer>
 #include <QTimer>
@@ -54,6 +55,8 @@ class TimelineWidget : public QWidget {
   /// The flags of the flight shown (apparatus_flags); empty for none.
   void set_flags(std::vector<TimelineFlag> flags);
   const std::vector<TimelineFlag>& flags() const;
+  /// The flags' legend as plain text ("▲ closest pass, clear"), empty when it is hidden.
+  QString flag_legend() const;
   const Timeline& timeline() const { return timeline_; }
   bool playing() const { return timeline_.playing(); }
 
@@ -93,6 +96,7 @@ class TimelineWidget : public QWidget {
   QComboBox* speed_ = nullptr;
   QCheckBox* loop_ = nullptr;
   QLabel* time_label_ = nullptr;
+  QLabel* flag_legend_ = nullptr;
 };
 
 }  // namespace saltus::gui

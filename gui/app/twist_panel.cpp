@@ -94,6 +94,9 @@ TwistPanel::TwistPanel(AppContext& context, QWidget* parent) : QWidget(parent), 
   chart_->setMinimumHeight(220);
   chart_box_ = with_legend_strip(chart_, this);
   layout->addWidget(chart_box_, 1);
+  // With no chart to show (nothing to twist with) the lines stay together at the top, not
+  // spread down the column.
+  layout->addStretch(0);
   connect(chart_, &ChartWidget::seek_requested, this, &TwistPanel::seek_requested);
 
   context_.workspace().subscribe([this](WorkspaceChange change) {

@@ -1,12 +1,16 @@
 // Compare: the test motion against itself evaluated with heavier thighs (a second model file,
 // as a user picks it), both 3D views drawn and the root force and moment overlaid; before vs
-// after of an optimisation; closing; bad input.
+// after of an optimisation; closing; bad input; each of the window's buttons pressed with the
+// mouse (the cameras, play / pause, the log scale, the timeline's, Close compare).
 
 #include <gtest/gtest.h>
 
 #include <QApplication>
+#include <QCheckBox>
 #include <QDir>
 #include <QTest>
+#include <QToolBar>
+#include <QToolButton>
 #include <filesystem>
 #include <fstream>
 
@@ -19,6 +23,8 @@
 #include "app/main_window.h"
 #include "app/plots_panel.h"
 #include "app/run_controller.h"
+#include "app/scene_widget.h"
+#include "app/timeline_widget.h"
 #include "app/view_controller.h"
 #include "gui/support/image_checks.h"
 #include "gui/support/open_motion_fixture.h"
@@ -109,6 +115,89 @@ TEST_F(CompareWindowTest, SameMotionWithAScaledModelSideBySide) {
 
   window_->compare().close();
   EXPECT_EQ(window_->compare().window(), nullptr);
+}
+
+/// The button of `parent` showing `text` (mnemonics left out), enabled, clicked with the mouse.
+template <class Button>
+void click(QWidget* parent, const QString& text) {
+  for (Button* b : parent->findChildren<Button*>()) {
+    if (b->text().remove('&') == text) {
+      ASSERT_TRUE(b->isEnabled()) << text.toStdString();
+      // On a check box's square: a wide box takes no click beside its label.
+      const QPoint at =
+          qobject_cast<QCheckBox*>(b) ? QPoint(8, b->height() / 2) : b->rect().center();
+      QTest::mouseClick(b, Qt::LeftButton, Qt::NoModifier, at);
+      QApplication::processEvents();
+      return;
+    }
+  }
+  FAIL() << "no button " << text.toStdString();
+}
+
+TEST_F(CompareWindowTest, EachButtonOfTheWindowActsOnBothRuns) {
+  QString error;
+  ASSERT_TRUE(
+      window_->compare().compare_with_model(QString::fromStdString(scaled_model_file()), &error))
+      << error.toStdString();
+  CompareWindow* compare = window_->compare().window();
+  ASSERT_NE(compare, nullptr);
+  compare->resize(1400, 900);
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(compare));
+  compare->seek(0.8);
+  QApplication::processEvents();
+  auto* bar = compare->findChild<QToolBar*>("compare_toolbar");
+  ASSERT_NE(bar, nullptr);
+  const QList<SceneWidget*> scenes = compare->findChildren<SceneWidget*>();
+  ASSERT_EQ(scenes.size(), 2);
+
+  // Each camera button sets both views' camera, and the views show it.
+  QImage side;
+  for (CameraPreset preset : camera_presets()) {
+    const QString label = QString::fromStdString(camera_preset_label(preset));
+    SCOPED_TRACE(label.toStdString());
+    click<QToolButton>(bar, label);
+    for (SceneWidget* s : scenes)
+      EXPECT_EQ(s->scene().camera(), preset);
+    if (preset == CameraPreset::kSide) side = compare->grab_view(0);
+    if (preset == CameraPreset::kTop) {
+      EXPECT_GT(test::block_difference(compare->grab_view(0), side), 0.02);
+    }
+  }
+
+  // Play / pause in the toolbar and the timeline's own buttons drive the one timeline.
+  auto* timeline = compare->findChild<TimelineWidget*>();
+  ASSERT_NE(timeline, nullptr);
+  click<QToolButton>(bar, "Play / pause");
+  EXPECT_TRUE(timeline->playing());
+  click<QToolButton>(bar, "Play / pause");
+  EXPECT_FALSE(timeline->playing());
+  compare->seek(0.0);
+  click<QToolButton>(timeline, "Step forward");
+  const double stepped = compare->time();
+  EXPECT_GT(stepped, 0.0);
+  click<QToolButton>(timeline, "Step back");
+  EXPECT_DOUBLE_EQ(compare->time(), 0.0);
+  click<QToolButton>(timeline, "Play");
+  EXPECT_TRUE(timeline->playing());
+  timeline->pause();
+  const bool loop = timeline->timeline().loop();
+  click<QCheckBox>(timeline, "Loop");
+  EXPECT_EQ(timeline->timeline().loop(), !loop);
+
+  // Log scale: |F| and |M| of both runs on a logarithmic axis, and back.
+  EXPECT_FALSE(compare->force_chart().log_y);
+  click<QCheckBox>(bar, "Log scale");
+  EXPECT_TRUE(compare->force_chart().log_y);
+  EXPECT_TRUE(compare->moment_chart().log_y);
+  EXPECT_EQ(compare->force_chart().lines.size(), 2u);
+  click<QCheckBox>(bar, "Log scale");
+  EXPECT_FALSE(compare->force_chart().log_y);
+
+  // Close compare closes the window and leaves the main window's motion open.
+  click<QToolButton>(bar, "Close compare");
+  QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
+  EXPECT_EQ(window_->compare().window(), nullptr);
+  EXPECT_TRUE(window_->workspace().loaded());
 }
 
 TEST_F(CompareWindowTest, AnotherModelIsOptimisedLikeTheRunShown) {

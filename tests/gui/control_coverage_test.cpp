@@ -1,8 +1,9 @@
-// Every control of the main window is pressed by some GUI test: each entry of the menu bar
-// (submenus included) and each button or check box of the window, its docks, toolbar and status
-// bar must be in the list of tests/gui/support/pressed_controls.h, which names the test that
-// presses it; a new control without one fails here with its name. The list is checked the
-// other way too: each entry names a control the window has, and a test that exists.
+// Every control of the app is pressed by some GUI test: each entry of the main window's menu bar
+// (submenus included), each button or check box of the window, its docks, toolbar and status
+// bar, and each button or check box of the compare window and of the New athlete dialog must be
+// in the list of tests/gui/support/pressed_controls.h, which names the test that presses it; a
+// new control without one fails here with its name. The list is checked the other way too: each
+// entry names a control the app has, and a test that exists.
 
 #include <gtest/gtest.h>
 
@@ -20,7 +21,11 @@
 #include <set>
 #include <string>
 
+#include "app/athlete_controller.h"
+#include "app/compare_controller.h"
+#include "app/compare_window.h"
 #include "app/main_window.h"
+#include "app/new_athlete_dialog.h"
 #include "gui/support/menu_actions.h"
 #include "gui/support/open_motion_fixture.h"
 #include "gui/support/pressed_controls.h"
@@ -98,6 +103,19 @@ class ControlCoverageTest : public test::EmptyWindowTest {
     return out;
   }
 
+  /// The buttons and check boxes of a window of its own (no menu bar, so every toolbar button
+  /// counts), by "<container> / <object name or text>". The dialog button box's Cancel counts as
+  /// ours: the dialog puts it there, and pressing it must drop the athlete.
+  static std::set<std::string> window_buttons(const QWidget* window, const QString& container) {
+    std::set<std::string> out;
+    for (QAbstractButton* b : window->findChildren<QAbstractButton*>()) {
+      if (qt_own(b)) continue;
+      const QString name = b->objectName().isEmpty() ? b->text().remove('&') : b->objectName();
+      out.insert((container + " / " + name).toStdString());
+    }
+    return out;
+  }
+
   static void add_actions(const QMenu* menu, std::set<QAction*>* out) {
     for (QAction* a : menu->actions()) {
       out->insert(a);
@@ -112,6 +130,26 @@ TEST_F(ControlCoverageTest, EveryMenuEntryAndButtonIsPressedByATest) {
   ASSERT_GT(controls.size(), 40u);
   ASSERT_GT(found_buttons.size(), 15u);
   controls.insert(found_buttons.begin(), found_buttons.end());
+
+  // The compare window, opened on the open motion against itself.
+  QString error;
+  ASSERT_TRUE(window_->compare().compare_with_motion(
+      SALTUS_EXAMPLES_DIR "/motions/M1-straight-back-somersault.motion.json", &error))
+      << error.toStdString();
+  ASSERT_NE(window_->compare().window(), nullptr);
+  const std::set<std::string> compare =
+      window_buttons(window_->compare().window(), "compare window");
+  EXPECT_GT(compare.size(), 8u);
+  controls.insert(compare.begin(), compare.end());
+  window_->compare().close();
+
+  // The New athlete dialog, as File > New athlete… opens it.
+  NewAthleteDialog* dialog = window_->athletes().open_dialog(false);
+  ASSERT_NE(dialog, nullptr);
+  const std::set<std::string> athlete = window_buttons(dialog, "new athlete dialog");
+  EXPECT_GE(athlete.size(), 6u);
+  controls.insert(athlete.begin(), athlete.end());
+  dialog->reject();
 
   std::map<std::string, const test::PressedControl*> listed;
   for (const test::PressedControl& c : test::kPressedControls) {

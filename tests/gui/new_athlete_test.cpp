@@ -4,19 +4,24 @@
 // Open model (the unsaved-work prompt, a fresh undo history, the same take-off spin); a height
 // no person has shows the library's message and disables the buttons; a Yeadon measurements file
 // builds an athlete; "Save and compare…" and batch --compare with a model file show the motion
-// on both athletes side by side, on one scale.
+// on both athletes side by side, on one scale; the source choices, Browse… and Cancel pressed
+// with the mouse do what they say.
 
 #include <gtest/gtest.h>
 
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
+#include <QDialogButtonBox>
 #include <QDir>
 #include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QRadioButton>
 #include <QTest>
+#include <QTimer>
 #include <QUndoStack>
 #include <filesystem>
 #include <fstream>
@@ -30,6 +35,7 @@
 #include "app/main_window.h"
 #include "app/new_athlete_dialog.h"
 #include "gui/support/image_checks.h"
+#include "gui/support/menu_actions.h"
 #include "gui/support/open_motion_fixture.h"
 #include "saltus/body/mass_properties.h"
 #include "saltus/formats/model_file.h"
@@ -236,6 +242,83 @@ TEST_F(NewAthleteTest, AYeadonMeasurementsFileBuildsAnAthlete) {
       << dialog->problem().toStdString();
   EXPECT_FALSE(dialog->use_button()->isEnabled());
   dialog->reject();
+}
+
+/// Clicks `button` and answers the file dialog it opens with `path` (the way
+/// trigger_and_answer_file_dialog answers a menu entry's), rejecting it after 5 s.
+void click_and_answer_file_dialog(QAbstractButton* button, const QString& path) {
+  int ticks = 0;
+  QTimer timer;
+  timer.setInterval(50);
+  QObject::connect(&timer, &QTimer::timeout, [&] {
+    auto* files = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
+    if (!files) return;
+    if (++ticks < 100) {
+      test::type_file_name(files, path);
+      static_cast<QDialog*>(files)->accept();  // QFileDialog::accept takes the name typed
+    } else {
+      files->reject();
+    }
+  });
+  timer.start();
+  QTest::mouseClick(button, Qt::LeftButton);
+  timer.stop();
+  QApplication::processEvents();
+}
+
+TEST_F(NewAthleteTest, TheSourceChoicesBrowseAndCancelDoWhatTheySay) {
+  NewAthleteDialog* dialog = open_dialog();
+  ASSERT_NE(dialog, nullptr);
+  type_junior(dialog);
+  ASSERT_TRUE(dialog->draft().model);
+  const double junior_mass = dialog->draft().model->total_mass();
+
+  // "From Yeadon's 95 measurements": the file fields open, the size fields close, and with no
+  // file yet there is no athlete.
+  QTest::mouseClick(dialog->yeadon_choice(), Qt::LeftButton, Qt::NoModifier,
+                    QPoint(8, dialog->yeadon_choice()->height() / 2));
+  QApplication::processEvents();
+  EXPECT_EQ(dialog->request().source, AthleteRequest::Source::kYeadon);
+  EXPECT_TRUE(dialog->measurements_edit()->isEnabled());
+  EXPECT_FALSE(dialog->height_box()->isEnabled());
+  EXPECT_FALSE(dialog->draft().model);
+  EXPECT_FALSE(dialog->use_button()->isEnabled());
+
+  // Browse… fills the file chosen in the file dialog, and the athlete is that file's.
+  QPushButton* browse = nullptr;
+  for (QPushButton* b : dialog->findChildren<QPushButton*>())
+    if (b->text() == "Browse…") browse = b;
+  ASSERT_NE(browse, nullptr);
+  const QString file = QString(SALTUS_EXAMPLES_DIR) + "/athletes/yeadon-female1.txt";
+  click_and_answer_file_dialog(browse, file);
+  EXPECT_EQ(QFileInfo(dialog->measurements_edit()->text()).canonicalFilePath(),
+            QFileInfo(file).canonicalFilePath());
+  ASSERT_TRUE(dialog->draft().model) << dialog->problem().toStdString();
+  const YeadonModel library = yeadon_athlete_model(
+      file.toStdString(), dialog->densities_box()->currentText().toStdString(), 0.0, "junior");
+  EXPECT_DOUBLE_EQ(dialog->draft().model->total_mass(), library.model.total_mass());
+  EXPECT_NE(dialog->draft().model->total_mass(), junior_mass);
+  EXPECT_TRUE(dialog->use_button()->isEnabled());
+
+  // "From height, mass and sex": back to the junior typed before.
+  QTest::mouseClick(dialog->size_choice(), Qt::LeftButton, Qt::NoModifier,
+                    QPoint(8, dialog->size_choice()->height() / 2));
+  QApplication::processEvents();
+  EXPECT_EQ(dialog->request().source, AthleteRequest::Source::kSize);
+  EXPECT_TRUE(dialog->height_box()->isEnabled());
+  ASSERT_TRUE(dialog->draft().model);
+  EXPECT_DOUBLE_EQ(dialog->draft().model->total_mass(), junior_mass);
+
+  // Cancel closes the dialog: no save dialog, no file, the open model kept.
+  answer_save_dialog(QString::fromStdString(dir_ / "never.model.json"));
+  QAbstractButton* cancel =
+      dialog->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Cancel);
+  ASSERT_NE(cancel, nullptr);
+  press(qobject_cast<QPushButton*>(cancel));
+  EXPECT_EQ(window_->athletes().dialog(), nullptr);
+  EXPECT_EQ(asked_, 0);
+  EXPECT_TRUE(std::filesystem::is_empty(dir_.path()));
+  EXPECT_EQ(window_->document().file().model.name, "zatsiorsky-66kg");
 }
 
 /// Share of a view's pixels in the left limbs' blue: a smaller athlete on one scale covers less.

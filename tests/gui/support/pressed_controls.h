@@ -1,10 +1,12 @@
 #pragma once
-// The controls of the main window that GUI tests press, each with the test that presses it
+// The controls of the app (the main window, the compare window, the New athlete dialog) that GUI
+// tests press, each with the test that presses it
 // (trigger(), click() or the mouse) and checks its effect. control_coverage_test.cpp fails when
 // the window has a menu entry or button missing here, or when an entry names a control or test
 // that does not exist. A menu entry is named by its path of texts ("View > Side camera"); a
 // button by the dock or toolbar it sits in and its object name or text
-// ("keyframe_dock / Delete"); the recent files of File > Open recent are one entry.
+// ("keyframe_dock / Delete"), or by its window ("compare window / Log scale", "new athlete dialog /
+// Cancel"); the recent files of File > Open recent are one entry.
 
 namespace saltus::gui::test {
 
@@ -191,6 +193,40 @@ inline constexpr PressedControl kPressedControls[] = {
     {"main / z", "panel_buttons_test.cpp", "PanelButtonsTest, PlotsBoxesRedrawTheRootCharts"},
     {"main / Log scale for before/after", "panel_buttons_test.cpp",
      "PanelButtonsTest, PlotsBoxesRedrawTheRootCharts"},
+    {"compare window / Side", "compare_window_test.cpp",
+     "CompareWindowTest, EachButtonOfTheWindowActsOnBothRuns"},
+    {"compare window / Front", "compare_window_test.cpp",
+     "CompareWindowTest, EachButtonOfTheWindowActsOnBothRuns"},
+    {"compare window / Top", "compare_window_test.cpp",
+     "CompareWindowTest, EachButtonOfTheWindowActsOnBothRuns"},
+    {"compare window / Follow", "compare_window_test.cpp",
+     "CompareWindowTest, EachButtonOfTheWindowActsOnBothRuns"},
+    {"compare window / Play / pause", "compare_window_test.cpp",
+     "CompareWindowTest, EachButtonOfTheWindowActsOnBothRuns"},
+    {"compare window / Log scale", "compare_window_test.cpp",
+     "CompareWindowTest, EachButtonOfTheWindowActsOnBothRuns"},
+    {"compare window / Close compare", "compare_window_test.cpp",
+     "CompareWindowTest, EachButtonOfTheWindowActsOnBothRuns"},
+    {"compare window / Step back", "compare_window_test.cpp",
+     "CompareWindowTest, EachButtonOfTheWindowActsOnBothRuns"},
+    {"compare window / Play", "compare_window_test.cpp",
+     "CompareWindowTest, EachButtonOfTheWindowActsOnBothRuns"},
+    {"compare window / Step forward", "compare_window_test.cpp",
+     "CompareWindowTest, EachButtonOfTheWindowActsOnBothRuns"},
+    {"compare window / Loop", "compare_window_test.cpp",
+     "CompareWindowTest, EachButtonOfTheWindowActsOnBothRuns"},
+    {"new athlete dialog / From height, mass and sex (de Leva 1996)", "new_athlete_test.cpp",
+     "NewAthleteTest, TheSourceChoicesBrowseAndCancelDoWhatTheySay"},
+    {"new athlete dialog / From Yeadon's 95 measurements (a file)", "new_athlete_test.cpp",
+     "NewAthleteTest, TheSourceChoicesBrowseAndCancelDoWhatTheySay"},
+    {"new athlete dialog / Browse…", "new_athlete_test.cpp",
+     "NewAthleteTest, TheSourceChoicesBrowseAndCancelDoWhatTheySay"},
+    {"new athlete dialog / Cancel", "new_athlete_test.cpp",
+     "NewAthleteTest, TheSourceChoicesBrowseAndCancelDoWhatTheySay"},
+    {"new athlete dialog / Save and use…", "new_athlete_test.cpp",
+     "NewAthleteTest, AJuniorIsTheLibrarysModelSavedAndFliesTheOpenMotion"},
+    {"new athlete dialog / Save and compare…", "new_athlete_test.cpp",
+     "NewAthleteTest, SaveAndCompareShowsTheMotionOnBothAthletesOnOneScale"},
 };
 
 }  // namespace saltus::gui::test
