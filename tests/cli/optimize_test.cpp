@@ -164,7 +164,7 @@ TEST(CliOptimize, ReportedResidualIsTheMotionsOnAFarFinerGrid) {
 // Issue 24's joint loads: the optimised M2 used to put 142 N·m on the left hip at take-off,
 // where the interpolated input needed 18 N·m at most (7.8x). The default polish (least joint
 // effort, each joint's moment and force bounded by 1.3x its input peak) holds M1, M2, M6 and the
-// dive within the issue's 1.5x at every joint (measured 1.31x, 1.31x, 1.28x, 1.35x; 3.13x, 2.48x,
+// dive within the issue's 1.5x at every joint (measured 1.31x, 1.30x, 1.27x, 1.28x; 3.13x, 2.48x,
 // 1.36x, 7.0x with the effort term alone). The dive needs the third try of the ladder (its first
 // two land 3-6 deg off): result.json must name a bounded try whose weights are the ladder's.
 // Without the polish (--joint-load-weight 0) M2's kick is back, so the polish is what removes it.

@@ -135,7 +135,8 @@ inline constexpr PolishTry kPolishTries[] = {{1.0, kPolishRootMomentWeight, true
 inline constexpr int kPolishAttempts = static_cast<int>(std::size(kPolishTries));
 
 /// The polish bounds each joint's moment and force by this multiple of the input's peak there
-/// (at least kJointMomentFloorNm and kJointForceFloorN), at nodes on every span: a joint may not
+/// (the smaller of the paper's interpolation's and the optimiser's starting point's; at least
+/// kJointMomentFloorNm and kJointForceFloorN), at nodes on every span: a joint may not
 /// pay for the root residual (our bar is 1.5 times the input's peak on the dense grid; a load
 /// rises a little between nodes, and a finer grid than ours finds a little more).
 inline constexpr double kPolishJointBound = 1.3;
