@@ -50,6 +50,30 @@ class CompareWindowTest : public test::OpenMotionTest {
     return path;
   }
 
+  /// The compare window with that model beside the open one, shown at 1400×900 at t = 0.8 s;
+  /// nullptr (and a failure) when it does not open.
+  CompareWindow* open_side_by_side() {
+    QString error;
+    if (!window_->compare().compare_with_model(QString::fromStdString(scaled_model_file()),
+                                               &error)) {
+      ADD_FAILURE() << error.toStdString();
+      return nullptr;
+    }
+    CompareWindow* compare = window_->compare().window();
+    if (!compare) {
+      ADD_FAILURE() << "no compare window";
+      return nullptr;
+    }
+    compare->resize(1400, 900);
+    if (!QTest::qWaitForWindowExposed(compare)) {
+      ADD_FAILURE() << "the compare window is not shown";
+      return nullptr;
+    }
+    compare->seek(0.8);
+    QApplication::processEvents();
+    return compare;
+  }
+
   saltus::test::TempDir dir_;
 };
 
@@ -63,16 +87,8 @@ void expect_drawn(const QImage& view, const char* name) {
 
 TEST_F(CompareWindowTest, SameMotionWithAScaledModelSideBySide) {
   EXPECT_EQ(window_->compare().window(), nullptr);
-  QString error;
-  ASSERT_TRUE(
-      window_->compare().compare_with_model(QString::fromStdString(scaled_model_file()), &error))
-      << error.toStdString();
-  CompareWindow* compare = window_->compare().window();
+  CompareWindow* compare = open_side_by_side();
   ASSERT_NE(compare, nullptr);
-  compare->resize(1400, 900);
-  ASSERT_TRUE(QTest::qWaitForWindowExposed(compare));
-  compare->seek(0.8);
-  QApplication::processEvents();
   EXPECT_DOUBLE_EQ(compare->time(), 0.8);
 
   // Both runs are the library's evaluations: the second uses the heavier model.
@@ -135,16 +151,8 @@ void click(QWidget* parent, const QString& text) {
 }
 
 TEST_F(CompareWindowTest, EachButtonOfTheWindowActsOnBothRuns) {
-  QString error;
-  ASSERT_TRUE(
-      window_->compare().compare_with_model(QString::fromStdString(scaled_model_file()), &error))
-      << error.toStdString();
-  CompareWindow* compare = window_->compare().window();
+  CompareWindow* compare = open_side_by_side();
   ASSERT_NE(compare, nullptr);
-  compare->resize(1400, 900);
-  ASSERT_TRUE(QTest::qWaitForWindowExposed(compare));
-  compare->seek(0.8);
-  QApplication::processEvents();
   auto* bar = compare->findChild<QToolBar*>("compare_toolbar");
   ASSERT_NE(bar, nullptr);
   const QList<SceneWidget*> scenes = compare->findChildren<SceneWidget*>();
