@@ -244,28 +244,6 @@ TEST_F(NewAthleteTest, AYeadonMeasurementsFileBuildsAnAthlete) {
   dialog->reject();
 }
 
-/// Clicks `button` and answers the file dialog it opens with `path` (the way
-/// trigger_and_answer_file_dialog answers a menu entry's), rejecting it after 5 s.
-void click_and_answer_file_dialog(QAbstractButton* button, const QString& path) {
-  int ticks = 0;
-  QTimer timer;
-  timer.setInterval(50);
-  QObject::connect(&timer, &QTimer::timeout, [&] {
-    auto* files = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
-    if (!files) return;
-    if (++ticks < 100) {
-      test::type_file_name(files, path);
-      static_cast<QDialog*>(files)->accept();  // QFileDialog::accept takes the name typed
-    } else {
-      files->reject();
-    }
-  });
-  timer.start();
-  QTest::mouseClick(button, Qt::LeftButton);
-  timer.stop();
-  QApplication::processEvents();
-}
-
 TEST_F(NewAthleteTest, TheSourceChoicesBrowseAndCancelDoWhatTheySay) {
   NewAthleteDialog* dialog = open_dialog();
   ASSERT_NE(dialog, nullptr);
@@ -290,7 +268,8 @@ TEST_F(NewAthleteTest, TheSourceChoicesBrowseAndCancelDoWhatTheySay) {
     if (b->text() == "Browse…") browse = b;
   ASSERT_NE(browse, nullptr);
   const QString file = QString(SALTUS_EXAMPLES_DIR) + "/athletes/yeadon-female1.txt";
-  click_and_answer_file_dialog(browse, file);
+  test::answer_file_dialog([browse] { QTest::mouseClick(browse, Qt::LeftButton); }, file);
+  QApplication::processEvents();
   EXPECT_EQ(QFileInfo(dialog->measurements_edit()->text()).canonicalFilePath(),
             QFileInfo(file).canonicalFilePath());
   ASSERT_TRUE(dialog->draft().model) << dialog->problem().toStdString();

@@ -77,11 +77,12 @@ inline void type_file_name(QFileDialog* dialog, const QString& path) {
     dialog->selectFile(path);
 }
 
-/// Triggers `action` and answers the modal dialog it opens, a file dialog, with `path` (empty:
-/// cancelled); returns the dialog's title (empty: no dialog was opened). The answer is given
-/// again at each tick while the dialog stays open (it may still be reading its folder), and the
-/// dialog is rejected after 5 s, so that a dialog refusing the answer fails the test, not hangs.
-inline QString trigger_and_answer_file_dialog(QAction* action, const QString& path) {
+/// Calls `open` (a menu entry triggered, a button clicked) and answers the modal dialog it opens,
+/// a file dialog, with `path` (empty: cancelled); returns the dialog's title (empty: no dialog was
+/// opened). The answer is given again at each tick while the dialog stays open (it may still be
+/// reading its folder), and the dialog is rejected after 5 s, so that a dialog refusing the answer
+/// fails the test, not hangs.
+inline QString answer_file_dialog(const std::function<void()>& open, const QString& path) {
   QString title;
   int ticks = 0;
   QTimer timer;
@@ -99,9 +100,13 @@ inline QString trigger_and_answer_file_dialog(QAction* action, const QString& pa
     }
   });
   timer.start();
-  action->trigger();
+  open();
   timer.stop();
   return title;
+}
+
+inline QString trigger_and_answer_file_dialog(QAction* action, const QString& path) {
+  return answer_file_dialog([action] { action->trigger(); }, path);
 }
 
 /// Triggers `action` and hands the modal dialogs it opens, one after the other, to `answers`
