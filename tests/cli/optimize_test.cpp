@@ -217,7 +217,7 @@ TEST(CliOptimize, JointLoadsStayNearTheInputsWithLeastJointEffort) {
 
 // Issue 24's "within published maximal joint moments of athletes": the bundled M1, optimised with
 // the defaults, stays below the published maximum at every joint that has one (both knees and
-// elbows; measured 2026-11-27: largest 4.4 %, the right elbow), result.json's per-kg figures are
+// elbows; measured 2026-11-27: largest 2.6 %, the left elbow), result.json's per-kg figures are
 // the joint-load peaks written in the same file over the mass of the model.json beside it, and the
 // summary prints the largest share as result.json words it.
 TEST(CliOptimize, JointMomentsStayBelowThePublishedMaxima) {
