@@ -20,7 +20,8 @@ std::string percent_words(double share) {
 const std::vector<PublishedJointMoment>& published_joint_moments() {
   // Only numbers read in the sources themselves. Hips, ankles, shoulders and the trunk (lumbar,
   // thoracic) have no entry: no source giving their maximal moment per kg could be verified,
-  // and a joint without one is reported as such rather than given a guessed bound.
+  // and a joint without one is reported as such rather than given a guessed bound (searched
+  // again 2026-11-27; docs/optimizer.md lists what was read and why none of it was taken).
   static const std::vector<PublishedJointMoment> kTable = {
       /// Šarabon N, Kozinc Ž, Perman M (2021). Establishing reference values for isometric knee
       /// extension and flexion strength. Front. Physiol. 12:767941, doi:10.3389/fphys.2021.767941.
