@@ -62,11 +62,13 @@ TEST(JointBoundBlock, RowsAreEachJointsLoadAgainstItsBoundOnTheTrajectory) {
     for (int j = 1; j <= joints; ++j) {
       const double moment = sample.joint_wrench[j].tail<3>().norm();
       const double force = sample.joint_wrench[j].head<3>().norm();
-      EXPECT_NEAR(g[row++], moment * moment / (moment_bounds[j - 1] * moment_bounds[j - 1]),
-                  1e-9 * (1.0 + g[row - 1]))
+      const double moment_row = g[row], force_row = g[row + 1];
+      row += 2;
+      EXPECT_NEAR(moment_row, moment * moment / (moment_bounds[j - 1] * moment_bounds[j - 1]),
+                  1e-9 * (1.0 + moment_row))
           << "moment of joint " << j << " at t = " << sample.time;
-      EXPECT_NEAR(g[row++], force * force / (force_bounds[j - 1] * force_bounds[j - 1]),
-                  1e-9 * (1.0 + g[row - 1]))
+      EXPECT_NEAR(force_row, force * force / (force_bounds[j - 1] * force_bounds[j - 1]),
+                  1e-9 * (1.0 + force_row))
           << "force of joint " << j << " at t = " << sample.time;
     }
 }
