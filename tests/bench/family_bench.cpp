@@ -4,6 +4,7 @@
 // issue 25; docs/studies.md). Run by name, one run each ('Family' alone matches all four):
 //   build/release/tests/saltus_benchmarks --benchmark_filter='ExactFlights|Bundled'
 //   build/release/tests/saltus_benchmarks --benchmark_filter=AthleteFamily
+//   build/release/tests/saltus_benchmarks --benchmark_filter=OneMotionOnTheFamily/6/   (M7 alone)
 // The smoke run in ctest leaves these out.
 
 #include <benchmark/benchmark.h>
@@ -159,18 +160,14 @@ BENCHMARK(BM_BundledMotion)->DenseRange(0, 7)->Iterations(3)->Unit(benchmark::kS
 /// flight against it at landing, °: issue 24's bar is 3°) and how many runs pass it, and the
 /// median and worst wall time (s). Each run is printed on stderr as it ends, with the
 /// optimiser's status, so that a failure names its motion and athlete.
-void BM_AthleteFamily(benchmark::State& bench) {
-  std::vector<std::filesystem::path> motions;
-  for (const auto& entry :
-       std::filesystem::directory_iterator(std::string(SALTUS_EXAMPLES_DIR) + "/motions"))
-    motions.push_back(entry.path());
-  std::sort(motions.begin(), motions.end());
+void fly_family(benchmark::State& bench, const std::vector<std::filesystem::path>& motions) {
   const std::vector<test::FamilyMember>& members = test::athlete_family().members;
   for (auto _ : bench) {
     std::vector<double> forces, seconds, drifts;
     int solved = 0, near_zero = 0, drift_above_3 = 0;
-    std::fprintf(stderr, "%-54s %-12s %6s %6s %-6s %9s %9s %8s %7s  %s\n", "motion", "athlete", "m",
-                 "kg", "solved", "before_N", "after_N", "drift_deg", "s", "status");
+    std::fprintf(stderr, "%-54s %-12s %6s %6s %-6s %9s %9s %8s %7s  %s  %s\n", "motion", "athlete",
+                 "m", "kg", "solved", "before_N", "after_N", "drift_deg", "s", "status",
+                 "levels' drift (deg), polish tries");
     for (const std::filesystem::path& motion : motions) {
       for (const test::FamilyMember& member : members) {
         const MotionFile file =
@@ -186,11 +183,17 @@ void BM_AthleteFamily(benchmark::State& bench) {
         solved += r.solve.solved;
         near_zero += r.solve.solved && force <= 0.5;
         drift_above_3 += drift > 3.0;
-        std::fprintf(stderr, "%-54s %-12s %6.3f %6.1f %-6s %9.4f %9.4f %8.2f %7.2f  %s\n",
+        // Where a landing was lost: each level's drift, then how many tries the polish took.
+        std::string levels;
+        for (const OptimizationResult::Level& level : r.levels)
+          levels +=
+              (levels.empty() ? "" : "/") + std::to_string(std::lround(level.landing_drift_deg));
+        if (r.joint_load_polish) levels += ", " + std::to_string(r.joint_load_polish->attempts);
+        std::fprintf(stderr, "%-54s %-12s %6.3f %6.1f %-6s %9.4f %9.4f %8.2f %7.2f  %s  %s\n",
                      motion.filename().string().c_str(), member.model.name.c_str(),
                      standing_body(member.model).height(), member.model.total_mass(),
                      r.solve.solved ? "yes" : "no", r.before.check.metrics.avg_root_force, force,
-                     drift, seconds.back(), r.solve.status.c_str());
+                     drift, seconds.back(), r.solve.status.c_str(), levels.c_str());
       }
     }
     const double runs = static_cast<double>(forces.size());
@@ -205,7 +208,28 @@ void BM_AthleteFamily(benchmark::State& bench) {
     bench.counters["worst_s"] = *std::max_element(seconds.begin(), seconds.end());
   }
 }
+
+/// The bundled motions, sorted by file name (M1 ... M7, then the dive).
+std::vector<std::filesystem::path> bundled_motions() {
+  std::vector<std::filesystem::path> motions;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::string(SALTUS_EXAMPLES_DIR) + "/motions"))
+    motions.push_back(entry.path());
+  std::sort(motions.begin(), motions.end());
+  return motions;
+}
+
+void BM_AthleteFamily(benchmark::State& bench) {
+  fly_family(bench, bundled_motions());
+}
 BENCHMARK(BM_AthleteFamily)->Iterations(1)->Unit(benchmark::kSecond);
+
+/// One bundled motion (by its place in bundled_motions(): 5 is M6, 6 M7, 7 the dive) on the
+/// whole family, the same counters: `--benchmark_filter=OneMotionOnTheFamily/5/`.
+void BM_OneMotionOnTheFamily(benchmark::State& bench) {
+  fly_family(bench, {bundled_motions().at(static_cast<std::size_t>(bench.range(0)))});
+}
+BENCHMARK(BM_OneMotionOnTheFamily)->DenseRange(0, 7)->Iterations(1)->Unit(benchmark::kSecond);
 
 }  // namespace
 }  // namespace saltus
