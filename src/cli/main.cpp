@@ -278,7 +278,10 @@ int run_optimize(const CommonArgs& args) {
         std::printf(" [");
         for (std::size_t i = 0; i < level.subdivisions.size(); ++i)
           std::printf("%s%d", i ? "," : "", level.subdivisions[i]);
-        std::printf("] %.3g N, %.1f deg;", level.avg_root_force, level.landing_drift_deg);
+        std::printf("] %.3g N, %.1f deg", level.avg_root_force, level.landing_drift_deg);
+        if (level.root_moment_weight != 1.0)
+          std::printf(" (root moment weighed %.3gx)", level.root_moment_weight);
+        std::printf(";");
       }
       std::printf(
           " knot spans per keyframe interval, true average root force, free flight's landing "

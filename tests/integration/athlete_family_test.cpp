@@ -4,7 +4,7 @@
 // twisting free flight on each conserves angular momentum, L(t) computed here from the segments'
 // masses, inertias and finite-differenced motion, not by the library's momentum code; and M1
 // optimises to a true residual of at most 0.5 N on the smallest, the heaviest and a measured
-// athlete.
+// athlete; a twist that flies off on a light athlete is made again weighing the root moment.
 
 #include <gtest/gtest.h>
 
@@ -127,6 +127,41 @@ TEST(AthleteFamily, M1IsMadePhysicalOnTheSmallestTheHeaviestAndAMeasuredAthlete)
     EXPECT_LE(result.after.check.metrics.avg_root_force, 0.5)
         << "before " << result.before.check.metrics.avg_root_force << " N";
   }
+}
+
+/// M6 (a half twist into 1½ front) on a 1.29 m, 36.9 kg girl: the levels of the paper's
+/// objective end near zero root force but the motion's own free flight lands tens of degrees off
+/// (its root moment, a few tenths of a N·m, turns this light body's twist). The levels then run
+/// again weighing the root moment (kLandingRootMomentWeight) and that motion is kept: what is
+/// returned lands within the 3° bar, by a free flight run here, at most 0.5 N. Least joint effort
+/// is left out: only the levels are under test.
+TEST(AthleteFamily, ATwistThatFliesOffIsMadeAgainWeighingTheRootMoment) {
+  const FamilyMember& girl = family()[2];
+  ASSERT_EQ(girl.model.name, "family-2");
+  const MotionFile file =
+      load_motion_for_athlete(motion_path("M6-half-twist-into-one-and-a-half-front.motion.json"),
+                              girl.path, TakeoffRule::kSameSpin);
+  OptimizeOptions options;
+  options.nlp.joint_load_weight = 0.0;
+  const OptimizationResult result = optimize_motion(file.motion, file.model, options);
+  ASSERT_TRUE(result.solve.solved) << result.solve.status;
+  // The first pass (weight 1) ended off; a second (the landing weight) followed.
+  double first_pass_best = 1e9, first_pass_force = 1e9;
+  int weighed_levels = 0;
+  for (const OptimizationResult::Level& level : result.levels) {
+    if (level.root_moment_weight == 1.0 && level.avg_root_force < first_pass_force) {
+      first_pass_force = level.avg_root_force;
+      first_pass_best = level.landing_drift_deg;
+    }
+    weighed_levels += level.root_moment_weight == kLandingRootMomentWeight;
+  }
+  EXPECT_GT(first_pass_best, 3.0) << "the paper's objective alone";
+  EXPECT_GT(weighed_levels, 0);
+  const double flown = simulate_motion(result.optimized_motion, file.model).landing_vs_motion_deg;
+  ASSERT_TRUE(result.landing_drift_deg);
+  EXPECT_NEAR(*result.landing_drift_deg, flown, 0.01);
+  EXPECT_LE(flown, 3.0);
+  EXPECT_LE(result.after.check.metrics.avg_root_force, 0.5);
 }
 
 }  // namespace

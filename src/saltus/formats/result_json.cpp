@@ -124,7 +124,8 @@ nlohmann::json resolution_json(const ResultJson::Optimization::Resolution& resol
                       {"avg_root_force", level.avg_root_force},
                       {"landing_drift_deg", level.landing_drift_deg},
                       {"iterations", level.iterations},
-                      {"status", level.status}});
+                      {"status", level.status},
+                      {"root_moment_weight", level.root_moment_weight}});
   nlohmann::json j = {{"automatic", resolution.automatic},
                       {"subdivisions", resolution.subdivisions},
                       {"knots", resolution.knots},
@@ -306,6 +307,8 @@ ResultJson::Optimization::Resolution read_resolution(const JsonNode& node) {
       l.landing_drift_deg = drift->as_double();
     l.iterations = level.at("iterations").as_int();
     l.status = level.at("status").as_string();
+    if (const auto weight = level.find("root_moment_weight"))
+      l.root_moment_weight = weight->as_double();
     r.levels.push_back(std::move(l));
   }
   if (const auto polish = node.find("joint_load_polish")) {

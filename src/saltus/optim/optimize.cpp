@@ -282,16 +282,8 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
   // where the joints work least, not back to where the flight puts them.
   const double joint_load_weight = nlp_options.joint_load_weight;
   nlp_options.joint_load_weight = 0.0;
-  SolverOptions solver = options.solver;
   for (const Keyframe& k : motion.keyframes)
     nlp_options.given_keyframe_times.push_back(k.time);
-  Motion at_start = start;
-  Trajectory<double> start_trajectory = start_evaluation.trajectory;
-  Solved best;
-  std::vector<int> best_subdivisions;
-  double best_force = 0.0;
-  std::optional<Flown> best_flown;  // when the drift was measured
-  bool have_best = false;
   int iterations = 0, restarts = 0;
   double seconds = 0.0;
   // Each level's solver counts from 0: the caller sees one count and one clock over the levels
@@ -309,105 +301,138 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
     restarts += solve.restarts;
     seconds += solve.seconds;
   };
-  for (int level = 0;; ++level) {
-    nlp_options.subdivisions = subdivisions;
-    // A level that may still be refined only has to show where its residual lives, so it stops
-    // at the coarse objective change; one that then turns out to be the last (near the target)
-    // is finished below. The first level stops so only when it starts far above the target.
-    SolverOptions level_solver = solver;
-    const bool coarse =
-        automatic && level < rules.max_refinements &&
-        (level > 0 || start_evaluation.metrics.avg_root_force > 10.0 * rules.target_force);
-    if (coarse)
-      level_solver.objective_change_tolerance =
-          std::max(solver.objective_change_tolerance, rules.coarse_objective_change);
-    Solved solved = solve_level(motion, at_start, model, start_trajectory, nlp_options,
-                                level_solver, counted, cancel);
-    count(solved.solve);
-    // Only the automatic resolution decides by the drift in its levels (a free flight: ~50 ms);
-    // the free flight's evaluation holds the level's dense check, so it is not run twice.
-    std::optional<Flown> flown;
-    DenseCheck check;
-    if (automatic && !coarse) {
-      flown = fly(solved.optimized, model, options.nlp.samples);
-      check = flown->evaluation.check;
-    } else {
-      check = dense_check(model, solved.trajectory, options.nlp.samples);
-    }
-    double force = check.metrics.avg_root_force;
-    if (coarse && solved.solve.solved && force <= rules.target_force &&
-        !(cancel && cancel->load())) {
-      // Near the target already: this level is the last, so finish it at the full tolerance,
-      // warm-started from where the coarse stop left it.
-      SolverOptions finish = solver;
-      finish.warm_start = true;
-      Solved finished = solve_level(motion, solved.optimized, model, solved.trajectory, nlp_options,
-                                    finish, counted, cancel);
-      count(finished.solve);
-      Flown finished_flown = fly(finished.optimized, model, options.nlp.samples);
-      if (finished.solve.solved &&
-          finished_flown.evaluation.check.metrics.avg_root_force <= force) {
-        finished.solve.iterations += solved.solve.iterations;
-        solved = std::move(finished);
-        check = finished_flown.evaluation.check;
-        force = check.metrics.avg_root_force;
-        flown = std::move(finished_flown);
+
+  // One pass of levels from the starting point, the root moment weighed `root_moment_weight`
+  // times; each level is recorded in result.levels.
+  struct Levels {
+    Solved best;
+    std::vector<int> subdivisions;
+    double force = 0.0;
+    std::optional<Flown> flown;  // when the drift was measured
+    /// Of the best level, which has the time variables (the polish has none).
+    std::vector<double> time_spreads;
+    int variables = 0, constraints = 0;
+  };
+  const std::vector<int> first_level = subdivisions;
+  auto run_levels = [&](double root_moment_weight) {
+    MotionNlpOptions level_options = nlp_options;
+    level_options.root_moment_weight = root_moment_weight;
+    std::vector<int> spans = first_level;
+    SolverOptions solver = options.solver;
+    Motion at_start = start;
+    Trajectory<double> start_trajectory = start_evaluation.trajectory;
+    Levels out;
+    bool have_best = false;
+    for (int level = 0;; ++level) {
+      level_options.subdivisions = spans;
+      // A level that may still be refined only has to show where its residual lives, so it
+      // stops at the coarse objective change; one that then turns out to be the last (near the
+      // target) is finished below. The first level stops so only when it starts far above the
+      // target.
+      SolverOptions level_solver = solver;
+      const bool coarse =
+          automatic && level < rules.max_refinements &&
+          (level > 0 || start_evaluation.metrics.avg_root_force > 10.0 * rules.target_force);
+      if (coarse)
+        level_solver.objective_change_tolerance =
+            std::max(solver.objective_change_tolerance, rules.coarse_objective_change);
+      Solved solved = solve_level(motion, at_start, model, start_trajectory, level_options,
+                                  level_solver, counted, cancel);
+      count(solved.solve);
+      // Only the automatic resolution decides by the drift in its levels (a free flight:
+      // ~50 ms); the free flight's evaluation holds the level's dense check, so it is not run
+      // twice.
+      std::optional<Flown> flown;
+      DenseCheck check;
+      if (automatic && !coarse) {
+        flown = fly(solved.optimized, model, options.nlp.samples);
+        check = flown->evaluation.check;
+      } else {
+        check = dense_check(model, solved.trajectory, options.nlp.samples);
       }
+      double force = check.metrics.avg_root_force;
+      if (coarse && solved.solve.solved && force <= rules.target_force &&
+          !(cancel && cancel->load())) {
+        // Near the target already: this level is the last, so finish it at the full tolerance,
+        // warm-started from where the coarse stop left it.
+        SolverOptions finish = solver;
+        finish.warm_start = true;
+        Solved finished = solve_level(motion, solved.optimized, model, solved.trajectory,
+                                      level_options, finish, counted, cancel);
+        count(finished.solve);
+        Flown finished_flown = fly(finished.optimized, model, options.nlp.samples);
+        if (finished.solve.solved &&
+            finished_flown.evaluation.check.metrics.avg_root_force <= force) {
+          finished.solve.iterations += solved.solve.iterations;
+          solved = std::move(finished);
+          check = finished_flown.evaluation.check;
+          force = check.metrics.avg_root_force;
+          flown = std::move(finished_flown);
+        }
+      }
+      if (automatic && !flown) flown = fly(solved.optimized, model, options.nlp.samples);
+      const double drift = flown ? flown->drift_deg : 0.0;
+      result.levels.push_back(
+          {spans, force, drift, solved.solve.iterations, solved.solve.status, root_moment_weight});
+      if (result.levels.size() == 1) result.optimizer_objective_before = solved.objective_before;
+      const bool better = !have_best || (solved.solve.solved && !out.best.solve.solved) ||
+                          (solved.solve.solved == out.best.solve.solved && force < out.force);
+      const double previous_force = out.force;
+      if (better) {
+        out.best = std::move(solved);
+        out.subdivisions = spans;
+        out.force = force;
+        out.flown = std::move(flown);
+        have_best = true;
+      }
+      const bool force_met = force <= rules.target_force;
+      if (!automatic || !out.best.solve.solved ||
+          (force_met && drift <= rules.max_landing_drift_deg) || level >= rules.max_refinements ||
+          (cancel && cancel->load()))
+        break;
+      if (level > 0 && !(force < (1.0 - rules.min_gain) * previous_force)) break;  // stopped paying
+      if (!better) break;
+      const std::vector<double> times = keyframe_times_of(out.best.optimized);
+      // Below the force target but drifting: aim at half the force the level reached.
+      AutomaticResolution aim = rules;
+      if (force_met) aim.target_force = 0.5 * force;
+      if (!refine(spans, residual_per_interval(check, times), times, aim)) break;
+      // The finer level starts from this optimum, refitted onto the finer knots at its times.
+      at_start = out.best.optimized;
+      at_start.spline.reset();
+      start_trajectory = refit_trajectory(out.best.trajectory,
+                                          clamped_cubic_knots(refine_breakpoints(times, spans)));
+      solver.warm_start = true;
     }
-    if (automatic && !flown) flown = fly(solved.optimized, model, options.nlp.samples);
-    const double drift = flown ? flown->drift_deg : 0.0;
-    result.levels.push_back(
-        {subdivisions, force, drift, solved.solve.iterations, solved.solve.status});
-    if (level == 0) result.optimizer_objective_before = solved.objective_before;
-    const bool better = !have_best || (solved.solve.solved && !best.solve.solved) ||
-                        (solved.solve.solved == best.solve.solved && force < best_force);
-    const double previous_force = best_force;
-    if (better) {
-      best = std::move(solved);
-      best_subdivisions = subdivisions;
-      best_force = force;
-      best_flown = std::move(flown);
-      have_best = true;
+    if (have_best) {
+      out.time_spreads = keyframe_time_spreads(out.best);
+      out.variables = out.best.variables;
+      out.constraints = out.best.constraints;
     }
-    const bool force_met = force <= rules.target_force;
-    if (!automatic || !best.solve.solved || (force_met && drift <= rules.max_landing_drift_deg) ||
-        level >= rules.max_refinements || (cancel && cancel->load()))
-      break;
-    if (level > 0 && !(force < (1.0 - rules.min_gain) * previous_force)) break;  // stopped paying
-    if (!better) break;
-    const std::vector<double> times = keyframe_times_of(best.optimized);
-    // Below the force target but drifting: aim at half the force the level reached.
-    AutomaticResolution aim = rules;
-    if (force_met) aim.target_force = 0.5 * force;
-    if (!refine(subdivisions, residual_per_interval(check, times), times, aim)) break;
-    // The finer level starts from this optimum, refitted onto the finer knots at its times.
-    at_start = best.optimized;
-    at_start.spline.reset();
-    start_trajectory = refit_trajectory(
-        best.trajectory, clamped_cubic_knots(refine_breakpoints(times, subdivisions)));
-    solver.warm_start = true;
-  }
-  result.keyframe_time_spreads = keyframe_time_spreads(best);
-  result.variables = best.variables;  // the problem's size with its times, polish or not
-  result.constraints = best.constraints;
+    return out;
+  };
 
   // The polish: least joint effort at the keyframe times found, from the best level's optimum
   // on its knots. Kept when it solves and its root force stays within the target a motion is
   // held to (kPolishMaxRootForce) or below the levels' (it trades a little root force for
-  // joints that do not kick; result.joint_load_polish records both figures).
-  if (joint_load_weight > 0 && nlp_options.formulation == Formulation::kRelaxed &&
-      best.solve.solved && !(cancel && cancel->load())) {
+  // joints that do not kick; result.joint_load_polish records both figures). `pass` then holds
+  // the polished motion.
+  auto polish = [&](Levels& pass) {
+    std::optional<JointLoadPolish> out;
+    if (!(joint_load_weight > 0 && nlp_options.formulation == Formulation::kRelaxed &&
+          pass.best.solve.solved && !(cancel && cancel->load())))
+      return out;
     MotionNlpOptions polish_options = nlp_options;
-    polish_options.subdivisions = best_subdivisions;
+    polish_options.subdivisions = pass.subdivisions;
     polish_options.joint_load_scales = joint_load_scales(result.before.check);
     polish_options.optimize_timing = false;
     SolverOptions polish_solver = options.solver;
     polish_solver.warm_start = false;  // no time variables: another layout
     polish_solver.max_iterations = std::min(polish_solver.max_iterations, kPolishMaxIterations);
-    if (!best_flown) best_flown = fly(best.optimized, model, options.nlp.samples);
-    JointLoadPolish& p = result.joint_load_polish.emplace();
-    p.avg_root_force_before = best_force;
-    p.landing_drift_before_deg = best_flown->drift_deg;
+    if (!pass.flown) pass.flown = fly(pass.best.optimized, model, options.nlp.samples);
+    JointLoadPolish& p = out.emplace();
+    p.avg_root_force_before = pass.force;
+    p.landing_drift_before_deg = pass.flown->drift_deg;
     for (const PolishTry& attempt : kPolishTries) {
       if (p.kept || (cancel && cancel->load())) break;
       polish_options.joint_load_weight = attempt.weight_factor * joint_load_weight;
@@ -416,8 +441,8 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       polish_options.joint_force_bounds.clear();
       if (attempt.joints_bounded)
         set_joint_bounds(result.before.check, start_evaluation.check, polish_options);
-      Solved polished = solve_level(motion, best.optimized, model, best.trajectory, polish_options,
-                                    polish_solver, counted, cancel);
+      Solved polished = solve_level(motion, pass.best.optimized, model, pass.best.trajectory,
+                                    polish_options, polish_solver, counted, cancel);
       count(polished.solve);
       Flown polished_flown = fly(polished.optimized, model, options.nlp.samples);
       p.weight = polish_options.joint_load_weight;
@@ -434,11 +459,41 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
                (p.landing_drift_after_deg <= rules.max_landing_drift_deg ||
                 p.landing_drift_after_deg <= p.landing_drift_before_deg);
       if (p.kept) {
-        best = std::move(polished);
-        best_flown = std::move(polished_flown);
+        pass.best = std::move(polished);
+        pass.flown = std::move(polished_flown);
+      }
+    }
+    return out;
+  };
+
+  Levels levels = run_levels(nlp_options.root_moment_weight);
+  std::optional<JointLoadPolish> polished = polish(levels);
+  // A motion that still flies off (a light athlete's twist turns 0.1-0.2 N·m of root moment into
+  // tens of degrees) is made again: the levels from the start with the root moment weighed as
+  // the polish weighs it, then the polish. The motion that lands closer is kept, if its root
+  // force stays within the polish's limit or below the first's.
+  if (automatic && levels.best.solve.solved && levels.flown &&
+      levels.flown->drift_deg > rules.max_landing_drift_deg &&
+      nlp_options.root_moment_weight < kLandingRootMomentWeight && !(cancel && cancel->load())) {
+    Levels weighed = run_levels(kLandingRootMomentWeight);
+    std::optional<JointLoadPolish> weighed_polished = polish(weighed);
+    if (weighed.best.solve.solved && weighed.flown &&
+        weighed.flown->drift_deg < levels.flown->drift_deg) {
+      const double force = weighed.flown->evaluation.metrics.avg_root_force;
+      if (force <= kPolishMaxRootForce ||
+          force <= levels.flown->evaluation.metrics.avg_root_force) {
+        levels = std::move(weighed);
+        polished = std::move(weighed_polished);
       }
     }
   }
+  result.joint_load_polish = std::move(polished);
+  result.keyframe_time_spreads = std::move(levels.time_spreads);
+  result.variables = levels.variables;  // the problem's size with its times, polish or not
+  result.constraints = levels.constraints;
+  Solved best = std::move(levels.best);
+  const std::vector<int> best_subdivisions = levels.subdivisions;
+  std::optional<Flown> best_flown = std::move(levels.flown);
 
   result.solve = best.solve;
   result.solve.iterations = iterations;

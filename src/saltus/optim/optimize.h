@@ -116,6 +116,13 @@ inline constexpr int kPolishMaxIterations = 150;
 /// ended 70° from the polished motion; with 100, 1.8°: docs/optimizer.md, "Landing drift").
 inline constexpr double kPolishRootMomentWeight = 100.0;
 
+/// The root_moment_weight of the levels' second pass: when the motion made by the levels and the
+/// polish still flies off (its free flight lands more than
+/// AutomaticResolution::max_landing_drift_deg from it), the levels run again from the start
+/// weighing the root moment as the polish does, then the polish, and the motion that lands closer
+/// is kept (docs/optimizer.md, "Landing drift on other athletes").
+inline constexpr double kLandingRootMomentWeight = kPolishRootMomentWeight;
+
 /// One try of the polish: its joint-load weight (a multiple of MotionNlpOptions::
 /// joint_load_weight), its root_moment_weight, and whether it bounds the joints
 /// (kPolishJointBound).
@@ -179,6 +186,9 @@ struct OptimizationResult {
     double landing_drift_deg = 0.0;
     int iterations = 0;
     std::string status;
+    /// MotionNlpOptions::root_moment_weight of this level's pass: 1, or
+    /// kLandingRootMomentWeight in the second pass (when the first landed off).
+    double root_moment_weight = 1.0;
   };
   std::vector<Level> levels;
   /// Degrees between the optimised motion's whole-body orientation at landing and that of the

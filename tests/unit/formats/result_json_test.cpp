@@ -59,7 +59,8 @@ auto fields(const ResultJson::ResidualCheck& c) {
   return std::tie(c.rule, c.points, c.halvings, c.converged, c.optimizer_agrees);
 }
 auto fields(const OptimizationResult::Level& l) {
-  return std::tie(l.subdivisions, l.avg_root_force, l.landing_drift_deg, l.iterations, l.status);
+  return std::tie(l.subdivisions, l.avg_root_force, l.landing_drift_deg, l.iterations, l.status,
+                  l.root_moment_weight);
 }
 auto fields(const ResultJson::Optimization::Resolution& r) {
   std::vector<decltype(fields(r.levels.front()))> levels;
@@ -249,7 +250,7 @@ ResultJson random_result(ResultJson::Kind kind, std::mt19937& rng) {
     resolution.knots = times(count(rng) + 7);
     for (int level = 0; resolution.automatic && level < 1 + static_cast<int>(rng() % 3); ++level)
       resolution.levels.push_back({resolution.subdivisions, positive(rng), positive(rng),
-                                   count(rng), rng() % 2 ? "solved" : "acceptable"});
+                                   count(rng), rng() % 2 ? "solved" : "acceptable", positive(rng)});
     if (rng() % 2)
       resolution.joint_load_polish = JointLoadPolish{
           positive(rng), positive(rng), positive(rng), count(rng), positive(rng), positive(rng),
