@@ -309,7 +309,9 @@ TEST(CliOptimize, ATwistThatFliesOffOnALightAthleteIsMadeAgainWeighingTheRootMom
     const double weight = level["root_moment_weight"].get<double>();
     first += weight == 1.0;
     weighed += weight == 100.0;
-    if (weight == 1.0) EXPECT_GT(level["landing_drift_deg"].get<double>(), 3.0);
+    if (weight == 1.0) {
+      EXPECT_GT(level["landing_drift_deg"].get<double>(), 3.0);
+    }
   }
   EXPECT_GT(first, 0);
   EXPECT_GT(weighed, 0);

@@ -82,9 +82,9 @@ void expect_panels_like_baselines(int width, int height) {
     QApplication::processEvents();
     // The Twist and What if panels work out their result once raised (busy says so only then).
     const auto busy = [&window, &tab] {
-      const QString dock = tab.dock;
-      return (dock == "twist_dock" && window->twist().busy()) ||
-             (dock == "what_if_dock" && window->what_if().busy());
+      const QString raised = tab.dock;
+      return (raised == "twist_dock" && window->twist().busy()) ||
+             (raised == "what_if_dock" && window->what_if().busy());
     };
     QElapsedTimer waited;
     waited.start();

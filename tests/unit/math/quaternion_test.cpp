@@ -56,14 +56,14 @@ TEST(QuatLog, InvertsExpUpToHalfATurnAndKeepsTheSign) {
 
 TEST(QuatExpLog, DerivativesThroughTheSmallAngleBranchMatchFiniteDifferences) {
   // The Taylor branches near zero must carry the derivatives of the functions they replace.
-  using Ad = Eigen::AutoDiffScalar<Eigen::Vector3d>;
+  using Ad3 = Eigen::AutoDiffScalar<Eigen::Vector3d>;
   for (const Eigen::Vector3d& v0 : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(3e-7, -2e-7, 1e-7),
                                     Eigen::Vector3d(0.2, 0.1, -0.3)}) {
-    Vec3<Ad> v;
+    Vec3<Ad3> v;
     for (int a = 0; a < 3; ++a)
-      v[a] = Ad(v0[a], 3, a);
-    const Quat<Ad> q = quat_exp(v);
-    const Vec3<Ad> back = quat_log(q);
+      v[a] = Ad3(v0[a], 3, a);
+    const Quat<Ad3> q = quat_exp(v);
+    const Vec3<Ad3> back = quat_log(q);
     const double h = 1e-6;
     for (int a = 0; a < 3; ++a) {
       Eigen::Vector3d plus = v0, minus = v0;
