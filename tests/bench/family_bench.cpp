@@ -133,14 +133,19 @@ BENCHMARK(BM_FamilyOfExactFlights)
     ->Iterations(1)
     ->Unit(benchmark::kSecond);
 
-/// Each bundled motion, default options: true residual before and after (N), wall time (s).
-void BM_BundledMotion(benchmark::State& bench) {
-  std::vector<std::filesystem::path> paths;
+/// The bundled motions, sorted by file name (M1 ... M7, then the dive).
+std::vector<std::filesystem::path> bundled_motions() {
+  std::vector<std::filesystem::path> motions;
   for (const auto& entry :
        std::filesystem::directory_iterator(std::string(SALTUS_EXAMPLES_DIR) + "/motions"))
-    paths.push_back(entry.path());
-  std::sort(paths.begin(), paths.end());
-  const std::filesystem::path path = paths.at(static_cast<std::size_t>(bench.range(0)));
+    motions.push_back(entry.path());
+  std::sort(motions.begin(), motions.end());
+  return motions;
+}
+
+/// Each bundled motion, default options: true residual before and after (N), wall time (s).
+void BM_BundledMotion(benchmark::State& bench) {
+  const std::filesystem::path path = bundled_motions().at(static_cast<std::size_t>(bench.range(0)));
   bench.SetLabel(path.filename().string());
   const MotionFile file = load_motion_file(path.string());
   OptimizationResult r;
@@ -190,7 +195,8 @@ void fly_family(benchmark::State& bench, const std::vector<std::filesystem::path
         solved += r.solve.solved;
         near_zero += r.solve.solved && force <= 0.5;
         drift_above_3 += drift > 3.0;
-        // Where a landing was lost: each level's drift, then how many tries the polish took.
+        // Where a landing or a joint was lost: each level's drift, how many tries the polish
+        // took (and whether one was kept), the largest joint rise.
         std::string levels;
         for (const OptimizationResult::Level& level : r.levels)
           levels +=
@@ -223,16 +229,6 @@ void fly_family(benchmark::State& bench, const std::vector<std::filesystem::path
     bench.counters["joint_rise_at_most_1.5"] = static_cast<double>(
         std::count_if(joint_rises.begin(), joint_rises.end(), [](double r) { return r <= 1.5; }));
   }
-}
-
-/// The bundled motions, sorted by file name (M1 ... M7, then the dive).
-std::vector<std::filesystem::path> bundled_motions() {
-  std::vector<std::filesystem::path> motions;
-  for (const auto& entry :
-       std::filesystem::directory_iterator(std::string(SALTUS_EXAMPLES_DIR) + "/motions"))
-    motions.push_back(entry.path());
-  std::sort(motions.begin(), motions.end());
-  return motions;
 }
 
 void BM_AthleteFamily(benchmark::State& bench) {
