@@ -210,6 +210,13 @@ std::vector<double> joint_load_scales(const DenseCheck& input) {
   return peaks;
 }
 
+/// Whether a solve that trades root force for something else (the polish for joint loads, the
+/// second pass for the landing) may keep its motion: its average root force `after` (N) is
+/// within kPolishMaxRootForce or no larger than the motion it replaces (`before`).
+bool root_force_within_limit(double after, double before) {
+  return after <= kPolishMaxRootForce || after <= before;
+}
+
 /// The polish's bounds on each joint's moment and force: kPolishJointBound times the smaller of
 /// two interpolations' peaks there, the paper's (`input`, knots at the keyframes) and the
 /// optimiser's starting point (`start`, its finer knots, which often needs less: M2's right hip
@@ -312,6 +319,7 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
     /// Of the best level, which has the time variables (the polish has none).
     std::vector<double> time_spreads;
     int variables = 0, constraints = 0;
+    std::optional<JointLoadPolish> polish;  // least joint effort's, when it ran
   };
   const std::vector<int> first_level = subdivisions;
   auto run_levels = [&](double root_moment_weight) {
@@ -416,12 +424,11 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
   // on its knots. Kept when it solves and its root force stays within the target a motion is
   // held to (kPolishMaxRootForce) or below the levels' (it trades a little root force for
   // joints that do not kick; result.joint_load_polish records both figures). `pass` then holds
-  // the polished motion.
+  // the polished motion and the polish's record.
   auto polish = [&](Levels& pass) {
-    std::optional<JointLoadPolish> out;
     if (!(joint_load_weight > 0 && nlp_options.formulation == Formulation::kRelaxed &&
           pass.best.solve.solved && !(cancel && cancel->load())))
-      return out;
+      return;
     MotionNlpOptions polish_options = nlp_options;
     polish_options.subdivisions = pass.subdivisions;
     polish_options.joint_load_scales = joint_load_scales(result.before.check);
@@ -430,7 +437,7 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
     polish_solver.warm_start = false;  // no time variables: another layout
     polish_solver.max_iterations = std::min(polish_solver.max_iterations, kPolishMaxIterations);
     if (!pass.flown) pass.flown = fly(pass.best.optimized, model, options.nlp.samples);
-    JointLoadPolish& p = out.emplace();
+    JointLoadPolish& p = pass.polish.emplace();
     p.avg_root_force_before = pass.force;
     p.landing_drift_before_deg = pass.flown->drift_deg;
     for (const PolishTry& attempt : kPolishTries) {
@@ -454,8 +461,7 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       p.iterations += polished.solve.iterations;
       p.status = polished.solve.status;
       p.kept = polished.solve.solved &&
-               (p.avg_root_force_after <= kPolishMaxRootForce ||
-                p.avg_root_force_after <= p.avg_root_force_before) &&
+               root_force_within_limit(p.avg_root_force_after, p.avg_root_force_before) &&
                (p.landing_drift_after_deg <= rules.max_landing_drift_deg ||
                 p.landing_drift_after_deg <= p.landing_drift_before_deg);
       if (p.kept) {
@@ -463,11 +469,10 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
         pass.flown = std::move(polished_flown);
       }
     }
-    return out;
   };
 
   Levels levels = run_levels(nlp_options.root_moment_weight);
-  std::optional<JointLoadPolish> polished = polish(levels);
+  polish(levels);
   // A motion that still flies off (a light athlete's twist turns 0.1-0.2 N·m of root moment into
   // tens of degrees) is made again: the levels from the start with the root moment weighed as
   // the polish weighs it, then the polish. The motion that lands closer is kept, if its root
@@ -476,18 +481,14 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       levels.flown->drift_deg > rules.max_landing_drift_deg &&
       nlp_options.root_moment_weight < kLandingRootMomentWeight && !(cancel && cancel->load())) {
     Levels weighed = run_levels(kLandingRootMomentWeight);
-    std::optional<JointLoadPolish> weighed_polished = polish(weighed);
+    polish(weighed);
     if (weighed.best.solve.solved && weighed.flown &&
-        weighed.flown->drift_deg < levels.flown->drift_deg) {
-      const double force = weighed.flown->evaluation.metrics.avg_root_force;
-      if (force <= kPolishMaxRootForce ||
-          force <= levels.flown->evaluation.metrics.avg_root_force) {
-        levels = std::move(weighed);
-        polished = std::move(weighed_polished);
-      }
-    }
+        weighed.flown->drift_deg < levels.flown->drift_deg &&
+        root_force_within_limit(weighed.flown->evaluation.metrics.avg_root_force,
+                                levels.flown->evaluation.metrics.avg_root_force))
+      levels = std::move(weighed);
   }
-  result.joint_load_polish = std::move(polished);
+  result.joint_load_polish = std::move(levels.polish);
   result.keyframe_time_spreads = std::move(levels.time_spreads);
   result.variables = levels.variables;  // the problem's size with its times, polish or not
   result.constraints = levels.constraints;
