@@ -305,7 +305,11 @@ int run_optimize(const CommonArgs& args) {
           "motion, %s\n",
           polish->weight, polish->root_moment_weight, bound,
           polish->attempts > 1 ? (", try " + std::to_string(polish->attempts) + " of " +
-                                  std::to_string(saltus::kPolishAttempts))
+                                  std::to_string(saltus::kPolishAttempts) +
+                                  (polish->bounded_tries_skipped > 0
+                                       ? " (" + std::to_string(polish->bounded_tries_skipped) +
+                                             " bounded skipped: a bounded try had landed far off)"
+                                       : std::string()))
                                      .c_str()
                                : "",
           polish->avg_root_force_before, polish->avg_root_force_after,

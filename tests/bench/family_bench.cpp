@@ -195,15 +195,19 @@ void fly_family(benchmark::State& bench, const std::vector<std::filesystem::path
         solved += r.solve.solved;
         near_zero += r.solve.solved && force <= 0.5;
         drift_above_3 += drift > 3.0;
-        // Where a landing or a joint was lost: each level's drift, how many tries the polish
-        // took (and whether one was kept), the largest joint rise.
+        // Where a landing or a joint was lost: each level's drift, the polish's last step on its
+        // ladder (how many bounded steps it skipped, whether it was kept), the largest joint rise.
         std::string levels;
         for (const OptimizationResult::Level& level : r.levels)
           levels +=
               (levels.empty() ? "" : "/") + std::to_string(std::lround(level.landing_drift_deg));
         if (r.joint_load_polish)
           levels +=
-              ", " + std::to_string(r.joint_load_polish->attempts) + (kept ? "" : " not kept");
+              ", " + std::to_string(r.joint_load_polish->attempts) +
+              (r.joint_load_polish->bounded_tries_skipped > 0
+                   ? " (" + std::to_string(r.joint_load_polish->bounded_tries_skipped) + " skipped)"
+                   : "") +
+              (kept ? "" : " not kept");
         levels += ", joints " + format_number("%.2f", joint_rises.back()) + "x";
         std::fprintf(stderr, "%-54s %-12s %6.3f %6.1f %-6s %9.4f %9.4f %8.2f %7.2f  %s  %s\n",
                      motion.filename().string().c_str(), member.model.name.c_str(),

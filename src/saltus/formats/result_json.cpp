@@ -136,6 +136,7 @@ nlohmann::json resolution_json(const ResultJson::Optimization::Resolution& resol
                               {"root_moment_weight", p->root_moment_weight},
                               {"joint_bound", p->joint_bound},
                               {"attempts", p->attempts},
+                              {"bounded_tries_skipped", p->bounded_tries_skipped},
                               {"avg_root_force_before", p->avg_root_force_before},
                               {"avg_root_force_after", p->avg_root_force_after},
                               {"landing_drift_before_deg", p->landing_drift_before_deg},
@@ -318,6 +319,7 @@ ResultJson::Optimization::Resolution read_resolution(const JsonNode& node) {
     if (const auto m = polish->find("root_moment_weight")) p.root_moment_weight = m->as_double();
     if (const auto b = polish->find("joint_bound")) p.joint_bound = b->as_double();
     if (const auto a = polish->find("attempts")) p.attempts = a->as_int();
+    if (const auto s = polish->find("bounded_tries_skipped")) p.bounded_tries_skipped = s->as_int();
     p.avg_root_force_before = polish->at("avg_root_force_before").as_double();
     p.avg_root_force_after = polish->at("avg_root_force_after").as_double();
     if (const auto d = polish->find("landing_drift_before_deg"))

@@ -440,8 +440,14 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
     JointLoadPolish& p = pass.polish.emplace();
     p.avg_root_force_before = pass.force;
     p.landing_drift_before_deg = pass.flown->drift_deg;
-    for (const PolishTry& attempt : kPolishTries) {
+    bool bounded_tries_hopeless = false;
+    for (int step = 0; step < kPolishAttempts; ++step) {
+      const PolishTry& attempt = kPolishTries[step];
       if (p.kept || (cancel && cancel->load())) break;
+      if (attempt.joints_bounded && bounded_tries_hopeless) {
+        ++p.bounded_tries_skipped;
+        continue;
+      }
       polish_options.joint_load_weight = attempt.weight_factor * joint_load_weight;
       polish_options.root_moment_weight = attempt.root_moment_weight;
       polish_options.joint_moment_bounds.clear();
@@ -455,7 +461,7 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       p.weight = polish_options.joint_load_weight;
       p.root_moment_weight = attempt.root_moment_weight;
       p.joint_bound = attempt.joints_bounded ? kPolishJointBound : 0.0;
-      ++p.attempts;
+      p.attempts = step + 1;
       p.avg_root_force_after = polished_flown.evaluation.metrics.avg_root_force;
       p.landing_drift_after_deg = polished_flown.drift_deg;
       p.iterations += polished.solve.iterations;
@@ -464,6 +470,11 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
                root_force_within_limit(p.avg_root_force_after, p.avg_root_force_before) &&
                (p.landing_drift_after_deg <= rules.max_landing_drift_deg ||
                 p.landing_drift_after_deg <= p.landing_drift_before_deg);
+      if (attempt.joints_bounded && !p.kept &&
+          p.landing_drift_after_deg >
+              std::max(kPolishHopelessDriftFactor * rules.max_landing_drift_deg,
+                       p.landing_drift_before_deg))
+        bounded_tries_hopeless = true;
       if (p.kept) {
         pass.best = std::move(polished);
         pass.flown = std::move(polished_flown);

@@ -133,12 +133,20 @@ struct PolishTry {
 };
 /// The polish's tries, in order, until one is kept: bounded at the full and half weight; then,
 /// for a flight whose first two tries land off (the dive), bounded at a quarter of the weight with
-/// the root moment weighed 3 times more; last without bounds (least joint effort alone then holds
-/// the joints). Why these: docs/optimizer.md, "Joint bounds".
+/// the root moment weighed 3 times more, then 10 times more (M6 on a 2 m, 120 kg man); last
+/// without bounds (least joint effort alone then holds the joints). Why these:
+/// docs/optimizer.md, "Joint bounds" and "Joint loads on other athletes".
 inline constexpr PolishTry kPolishTries[] = {{1.0, kPolishRootMomentWeight, true},
                                              {0.5, kPolishRootMomentWeight, true},
                                              {0.25, 3.0 * kPolishRootMomentWeight, true},
+                                             {0.25, 10.0 * kPolishRootMomentWeight, true},
                                              {0.25, kPolishRootMomentWeight, false}};
+/// A bounded try whose free flight lands farther from it than this multiple of
+/// AutomaticResolution::max_landing_drift_deg, and farther than the motion it would replace,
+/// ends the bounded tries; the polish goes on to its unbounded one. On small athletes M6's and
+/// M7's bounded tries land 17-177 deg off, and no later bounded step was kept; the dive's land
+/// 7-10 deg off before its third step lands within 3 (docs/optimizer.md).
+inline constexpr double kPolishHopelessDriftFactor = 5.0;
 inline constexpr int kPolishAttempts = static_cast<int>(std::size(kPolishTries));
 
 /// The polish bounds each joint's moment and force by this multiple of the input's peak there
@@ -159,7 +167,11 @@ struct JointLoadPolish {
   double root_moment_weight = 0.0;
   /// The last try's joint bound, a multiple of the input's peaks (kPolishJointBound); 0: none.
   double joint_bound = 0.0;
+  /// The last try's step on the ladder, 1-based (kPolishTries[attempts - 1]); bounded steps
+  /// skipped after a hopeless one (kPolishHopelessDriftFactor) count.
   int attempts = 0;
+  /// Bounded steps skipped because an earlier bounded try landed hopelessly off.
+  int bounded_tries_skipped = 0;
   double avg_root_force_before = 0.0;     ///< N, the best level's (dense check)
   double avg_root_force_after = 0.0;      ///< N, the polished motion's
   double landing_drift_before_deg = 0.0;  ///< see OptimizationResult::landing_drift_deg
