@@ -12,6 +12,7 @@
 
 #include "app/optimization_runner.h"
 #include "app/optimize_panel.h"
+#include "saltus/evaluation/joint_loads.h"
 
 namespace saltus::gui {
 
@@ -181,13 +182,22 @@ void RunController::on_finished(int tag, bool ok, const QString& error) {
     return;
   }
   const OptimizationResult& r = *run.result;
-  const QString outcome = tr("Run %1 %2 after %3 iterations in %4 s: average root force %5 → %6.")
+  // The joints' verdict beside the root force: a run that zeroes the root force by making a
+  // joint carry many times its input load is not physics to read as the athlete's.
+  const JointLoadRise rise =
+      largest_joint_load_rise(ws.document().file().model, r.before.check, r.after.check);
+  const QString joints =
+      rise.joint.empty()
+          ? QString()
+          : tr(" Joints: %1.").arg(QString::fromStdString(joint_load_verdict_words(rise)));
+  const QString outcome = tr("Run %1 %2 after %3 iterations in %4 s: average root force %5 → %6.%7")
                               .arg(run.number)
                               .arg(QString::fromStdString(status_text(r.solve.status)))
                               .arg(r.solve.iterations)
                               .arg(r.solve.seconds, 0, 'f', 1)
                               .arg(newtons(r.before.metrics.avg_root_force))
-                              .arg(newtons(r.after.metrics.avg_root_force));
+                              .arg(newtons(r.after.metrics.avg_root_force))
+                              .arg(joints);
   QString where;
   if (ws.shown_run() == index) {
     where = tr(" Shown now (View > After).");

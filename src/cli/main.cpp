@@ -370,7 +370,8 @@ int run_optimize(const CommonArgs& args) {
     const saltus::JointLoadRise rise =
         saltus::largest_joint_load_rise(file.model, result.before.check, result.after.check);
     if (!rise.joint.empty())
-      std::printf("  joint loads: largest rise at %s\n",
+      std::printf("  joint loads: %s; largest rise at %s\n",
+                  saltus::joint_load_verdict_words(rise).c_str(),
                   saltus::joint_load_rise_words(rise, saltus::body_weight_N(file.model)).c_str());
     std::printf("  joint moments: %s\n",
                 saltus::joint_moment_share_words(

@@ -1,6 +1,7 @@
 // The result list in the real window: every run is kept; a solved run stays shown when a later
 // run is cancelled or stops worse; the user can pick any run with a result; Save writes the run
-// shown. (The case: a cancelled run at 90 N replaced a solved 13.1 N one.)
+// shown. A run's message says what it asked of the joints. (The case: a cancelled run
+// at 90 N replaced a solved 13.1 N one.)
 
 #include <gtest/gtest.h>
 
@@ -18,6 +19,7 @@
 #include "app/optimize_panel.h"
 #include "app/run_controller.h"
 #include "gui/support/open_motion_fixture.h"
+#include "saltus/evaluation/joint_loads.h"
 #include "support/cli_runner.h"
 
 namespace saltus::gui {
@@ -51,6 +53,13 @@ TEST_F(ResultListTest, ASolvedRunStaysShownWhateverComesAfter) {
   ASSERT_TRUE(runs().at(solved).result->solve.solved) << runs().at(solved).result->solve.status;
   EXPECT_EQ(window_->workspace().shown_run(), solved);
   const double best = runs().at(solved).result->after.metrics.avg_root_force;
+  // Beside the root force, what the run asked of the joints, in the library's words.
+  const OptimizationResult& solved_result = *runs().at(solved).result;
+  const std::string joints = joint_load_verdict_words(largest_joint_load_rise(
+      window_->document().file().model, solved_result.before.check, solved_result.after.check));
+  EXPECT_NE(
+      window_->runs().panel()->message().indexOf(QString::fromStdString(" Joints: " + joints)), -1)
+      << window_->runs().panel()->message().toStdString();
 
   // A run that stops after one iteration: worse, not solved, listed but not shown.
   const int early = run(1);

@@ -52,4 +52,14 @@ std::string joint_load_rise_words(const JointLoadRise& rise, double body_weight)
          format_number(" (%.2fx)", rise.force_ratio);
 }
 
+std::string joint_load_verdict_words(const JointLoadRise& rise) {
+  if (rise.ratio() <= kJointLoadRiseLimit)
+    return format_number("every joint within %.2fx of its peak load before", rise.ratio());
+  return rise.joint + format_number(" carries %.2fx its peak load before", rise.ratio()) +
+         format_number(
+             " (more than %.2gx): the optimiser made it pay for the root force; do not "
+             "read it as the athlete's",
+             kJointLoadRiseLimit);
+}
+
 }  // namespace saltus

@@ -17,6 +17,11 @@ namespace saltus {
 inline constexpr double kJointForceFloorN = 10.0;
 inline constexpr double kJointMomentFloorNm = 1.0;
 
+/// A joint whose peak load after optimisation is more than this multiple of its peak before
+/// (the interpolated input's) is flagged to the reader: the optimiser made it pay for the root
+/// residual, a load the keyframes did not ask for (docs/optimizer.md, "Joint loads").
+inline constexpr double kJointLoadRiseLimit = 1.5;
+
 /// One joint's peak load after against before (dense-check peaks).
 struct JointLoadRise {
   std::string joint;  ///< e.g. "hip_r"
@@ -40,5 +45,11 @@ double body_weight_N(const BodyModel& model);
 /// The rise in words, by its larger ratio: "elbow_l, moment 7.17 N·m at t = 0.224 s after,
 /// 2.6 N·m before (2.76x)"; a force also in % of `body_weight` (N).
 std::string joint_load_rise_words(const JointLoadRise& rise, double body_weight);
+
+/// What the largest rise means, in one sentence the CLI and the app both show: "every joint
+/// within 1.30x of its peak load before", or, above kJointLoadRiseLimit, "ankle_l carries 14.38x
+/// its peak load before (more than 1.5x): the optimiser made it pay for the root force; do not
+/// read it as the athlete's".
+std::string joint_load_verdict_words(const JointLoadRise& rise);
 
 }  // namespace saltus

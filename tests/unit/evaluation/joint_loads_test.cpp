@@ -76,6 +76,11 @@ TEST(JointLoads, RatiosAreAfterOverBeforeWithFloors) {
             "knee_l, moment 4 N·m at t = 2.040 s after, 0 N·m before (4.00x)");
   EXPECT_EQ(joint_load_rise_words(h, 640.0),
             "hip_r, force 300 N (47 % of body weight) at t = 1.900 s after, 200 N before (1.50x)");
+  // What it means: at the limit (1.5x) every joint is within it; above, the joint is named.
+  EXPECT_EQ(joint_load_verdict_words(h), "every joint within 1.50x of its peak load before");
+  EXPECT_EQ(joint_load_verdict_words(largest),
+            "knee_l carries 4.00x its peak load before (more than 1.5x): the optimiser made it pay "
+            "for the root force; do not read it as the athlete's");
 }
 
 }  // namespace
