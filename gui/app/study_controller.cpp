@@ -259,8 +259,6 @@ void StudyController::cancel() {
 
 void StudyController::on_finished(int exit_code) {
   read_progress();
-  const QString cases =
-      progress_ ? tr("%1 of %2 cases").arg(progress_->done).arg(progress_->total) : tr("no case");
   const bool done = exit_code == 0 || exit_code == 3;
   const bool stopped = !done && (exit_code > 128 || cancelled_);
   // What the folder holds, as the library reads it: the whole study, or the cases kept.
@@ -274,6 +272,12 @@ void StudyController::on_finished(int exit_code) {
       unread = qstr(e.what());
     }
   }
+  // A study stopped between writing a case and reporting it has kept more than it reported:
+  // the count said is what the folder holds, as the case table shows it.
+  if (stopped && results_ && progress_)
+    progress_->done = std::max(progress_->done, static_cast<int>(results_->outcomes.size()));
+  const QString cases =
+      progress_ ? tr("%1 of %2 cases").arg(progress_->done).arg(progress_->total) : tr("no case");
   if (done) {
     const QString failures =
         progress_ ? tr(", %1 failed, %2 not solved").arg(progress_->failed).arg(progress_->unsolved)
