@@ -192,8 +192,8 @@ TEST(AthleteFamily, OnALightAthleteThePolishSkipsBoundedTriesAfterOneLandsFarOff
 /// M6 on the 2.0 m, 120 kg man: the polish's bounded tries at the root moment weighed 100 and
 /// 300 times land 3.0-5.2 deg off (the 3 deg bar); the fourth step, 1000 times, lands within it.
 /// What is returned keeps every joint within 1.5x of the peak his own interpolated input needs
-/// there (the unbounded polish had left the left ankle at 14x), lands within 3 deg by a free
-/// flight run here, at most 0.5 N.
+/// there (without that step no try was kept and his left ankle stayed at 14x), lands within
+/// 3 deg by a free flight run here, at most 0.5 N.
 TEST(AthleteFamily, ATwistOnTheHeaviestManKeepsHisJointsNearWhatHisInputNeeds) {
   const FamilyMember& man = family()[1];
   ASSERT_EQ(man.model.name, "family-1");

@@ -144,8 +144,8 @@ inline constexpr PolishTry kPolishTries[] = {{1.0, kPolishRootMomentWeight, true
 /// A bounded try whose free flight lands farther from it than this multiple of
 /// AutomaticResolution::max_landing_drift_deg, and farther than the motion it would replace,
 /// ends the bounded tries; the polish goes on to its unbounded one. On small athletes M6's and
-/// M7's bounded tries land 17-177 deg off, and no later bounded step was kept; the dive's land
-/// 7-10 deg off before its third step lands within 3 (docs/optimizer.md).
+/// M7's bounded tries land 17-177 deg off and no later bounded step landed within 3 deg; the
+/// dive's land 7-10 deg off before its third step lands within 3 (docs/optimizer.md).
 inline constexpr double kPolishHopelessDriftFactor = 5.0;
 inline constexpr int kPolishAttempts = static_cast<int>(std::size(kPolishTries));
 
