@@ -201,7 +201,11 @@ struct MotionDesign {
   /// landing is reported: the tilt of a take-off twist dies out as the body comes round to
   /// upright again (0.6-2.3° left after whole somersaults here), but not after the dive's one and
   /// a half (examples/README.md).
-  bool twisting() const { return twists != 0.0; }
+  bool twisting() const { return twists != 0.0 || aerial_twist; }
+  /// The twist comes from the joint movements alone (an aerial twist): the take-off angular
+  /// momentum is tuned about the somersault axis only, and `twists` is not a target but the
+  /// nearest half twist of what the flight gives (the file states the flown value).
+  bool aerial_twist = false;
   /// The last keyframe's root orientation is designed, not read off the flight: the flight's
   /// somersault and twist with its tilt removed, i.e. exactly vertical, head down (the dive's
   /// entry, paper §6.2). The free flight then misses it by that tilt; closing the gap is the
@@ -325,7 +329,7 @@ Eigen::Vector3d tune_angular_momentum(const MotionDesign& design, const BodyMode
   // Steps are capped: a long one can jump to a flight with a different number of twists.
   constexpr double kMaxStep = 2.0;
   constexpr int kMaxIterations = 40;
-  const int unknowns = design.twisting() ? 2 : 1;
+  const int unknowns = design.twisting() && !design.aerial_twist ? 2 : 1;
   const auto residual = [&](const Eigen::Vector3d& h) {
     const Eigen::Vector3d e = landing_error(design, simulate(design, model, h));
     return unknowns == 1 ? Eigen::VectorXd(e.head<1>())
@@ -453,7 +457,9 @@ Outcome analyse(const MotionDesign& design, const BodyModel& model, const Eigen:
   o.landing_angles = flight.athlete_angles.back();
   for (const Eigen::Vector3d& a : flight.athlete_angles)
     o.max_tilt_deg = std::max(o.max_tilt_deg, std::abs(a.y()));
-  if (design.twisting()) {
+  if (design.aerial_twist) {
+    o.aerial_twists = o.landing_angles.z() / 360.0;
+  } else if (design.twisting()) {
     o.momentum_tilt_deg = std::atan2(h.y(), std::abs(h.x())) * kRadToDeg;
     o.aerial_twists =
         simulate(design, model, Eigen::Vector3d(h.x(), 0.0, 0.0)).athlete_angles.back().z() / 360.0;
@@ -477,7 +483,11 @@ std::string describe(const MotionDesign& design, const std::vector<Eigen::Vector
       << ") kg m^2/s (takeoff.angular_momentum), tuned so that the flight lands with exactly "
       << format(std::abs(design.somersaults), 1) << (design.somersaults < 0 ? " backward" : "")
       << " somersaults";
-  if (twisting) {
+  if (design.aerial_twist) {
+    out << "; the twist, " << format(outcome.aerial_twists, 2)
+        << " twists, comes from the joint movements alone (tilt left at the end of the flight "
+        << format(outcome.landing_angles.y(), 1) << " deg)";
+  } else if (twisting) {
     out << " and " << format(design.twists, 1) << " twists (tilt left at the end of the flight "
         << format(outcome.landing_angles.y(), 1) << " deg)";
   }
@@ -502,7 +512,10 @@ std::string describe(const MotionDesign& design, const std::vector<Eigen::Vector
         << " deg removed), so the free flight misses it by that much and the optimiser has to "
            "reach it (paper section 6.2).";
   }
-  if (twisting) {
+  if (design.aerial_twist) {
+    out << " " << design.twist_source
+        << " The take-off angular momentum lies along the somersault axis (no take-off twist).";
+  } else if (twisting) {
     out << " " << design.twist_source << " The take-off angular momentum is tilted "
         << format(outcome.momentum_tilt_deg, 1)
         << " deg from the somersault axis towards the vertical (the take-off twist); with it "
@@ -799,6 +812,39 @@ std::vector<MotionDesign> designs(const BodyModel& model) {
     m.somersaults = 1.5;
     m.twists = 1.5;
     m.angular_momentum_guess = Eigen::Vector3d(50, 10, 0);
+    out.push_back(m);
+  }
+  {
+    MotionDesign m;
+    m.file = "full-twisting-back-somersault-from-the-arms.motion.json";
+    m.name = "Back somersault with a full twist from the arms (aerial twist)";
+    m.summary =
+        "Straight back somersault with a full twist on the trampoline, the twist made in the air: "
+        "the athlete leaves the bed with the arms overhead and no twist at all (the angular "
+        "momentum lies along the somersault axis); the left arm is brought down sideways to the "
+        "hip in the first 0.4 s while the right stays overhead, which tilts the body about 9 deg; "
+        "then both arms wrap to the chest (0.6-1.55 s) and the tilted body twists fast; the right "
+        "arm opens sideways to slow the twist and the athlete lands upright, facing the way they "
+        "took off, with the arms forward.";
+    m.twist_source =
+        "Twist source: the arms alone, moving differently (an aerial twist in Yeadon's sense; "
+        "`saltus analyse twist` shares it between them).";
+    const Pose up = symmetric(0, kArmsOverhead, leg(0, 0, 10));
+    m.keyframes = {{0.0, kTakeoff},
+                   {0.20, with_arms(up, arm(-90, 90, -10), kArmsOverhead)},
+                   {0.40, with_arms(up, arm(-10, 15, -10), kArmsOverhead)},
+                   {0.60, kTwistingLayout},
+                   {0.80, kTwistingLayout},
+                   {1.00, kTwistingLayout},
+                   {1.20, kTwistingLayout},
+                   {1.40, kTwistingLayout},
+                   {1.55, kTwistingLayout},
+                   {1.75, with_arms(symmetric(0, kArmsHugging, leg(-10, 0, 15)), arm(-60, 20, -20),
+                                    arm(-90, 90, -10))},
+                   {2.04, kLanding}};
+    m.somersaults = -1.0;
+    m.aerial_twist = true;
+    m.angular_momentum_guess = Eigen::Vector3d(-31, 0, 0);
     out.push_back(m);
   }
   return out;

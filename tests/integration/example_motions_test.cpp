@@ -2,7 +2,7 @@
 // keyframes: their root keyframes were read off a free flight of their own joint movements. A
 // free-flight simulation of each file must therefore land on its last keyframe; the trampoline
 // skills must land upright and the dive must enter head down. Also checks the paper's keyframe
-// counts (Table 1) and take-off states (§3.4, §6.2).
+// counts (Table 1) and take-off states (§3.4, §6.2; the aerial full twist has M1's take-off).
 
 #include <gtest/gtest.h>
 
@@ -50,7 +50,8 @@ bool is_dive(const std::string& path) {
   return starts_with(file_name(path), "dive");
 }
 
-/// Keyframe counts of the paper's Table 1 (M1-M7) and of its §6.2 dive (10).
+/// Keyframe counts of the paper's Table 1 (M1-M7) and of its §6.2 dive (10); -1 for a motion
+/// that is not the paper's (the aerial full twist).
 int expected_keyframes(const std::string& path) {
   const std::string name = file_name(path);
   if (is_dive(path)) return 10;
@@ -73,7 +74,8 @@ TEST(ExampleMotions, TheWholeSetIsBundled) {
 TEST_P(ExampleMotion, HasThePapersKeyframeCountAndTakeoff) {
   const MotionFile file = load_motion_file(GetParam());
   const Motion& m = file.motion;
-  EXPECT_EQ(static_cast<int>(m.keyframes.size()), expected_keyframes(GetParam()));
+  if (expected_keyframes(GetParam()) >= 0)
+    EXPECT_EQ(static_cast<int>(m.keyframes.size()), expected_keyframes(GetParam()));
   ASSERT_TRUE(m.takeoff.angular_momentum.has_value()) << "the flight's take-off must be stored";
   EXPECT_DOUBLE_EQ(m.tolerances.translation_m, 0.25);
   EXPECT_DOUBLE_EQ(m.tolerances.quaternion, 0.05);
