@@ -79,12 +79,16 @@ TwistPanel::TwistPanel(AppContext& context, QWidget* parent) : QWidget(parent), 
   layout->addWidget(table_);
 
   method_ = new QLabel(
-      tr("A share is the tilt lost when that movement is made symmetric (same take-off)."), this);
+      tr("A share is the tilt a movement adds: lost when it is made symmetric, averaged over the "
+         "orders of making them symmetric (same take-off). The shares add up to the total."),
+      this);
   method_->setWordWrap(true);
   method_->setToolTip(
       tr("A movement made symmetric: an arm replaced by the mean of itself and the other arm's "
          "mirror image, legs and trunk likewise. The take-off's share is the tilt left with "
-         "every movement symmetric. (Yeadon's counterfactual free flights.)"));
+         "every movement symmetric. Each movement's share is its Shapley value, so that an "
+         "asymmetry between the two arms is shared between them. (Yeadon's counterfactual free "
+         "flights.)"));
   QFont small = method_->font();
   small.setPointSizeF(small.pointSizeF() * 0.9);
   method_->setFont(small);
@@ -235,12 +239,7 @@ void TwistPanel::show_result(const Result& result) {
       if (c > 0) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
       QFont font = item->font();
       font.setBold(row.kind == TwistRow::Kind::kTotal);
-      font.setItalic(row.kind == TwistRow::Kind::kInteraction);
       item->setFont(font);
-      if (row.kind == TwistRow::Kind::kInteraction)
-        item->setToolTip(
-            tr("The total minus the sum of the shares: what the movements do together beyond "
-               "their separate effects"));
       table_->setItem(r, c, item);
     }
   }

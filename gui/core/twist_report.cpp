@@ -104,12 +104,6 @@ TwistReport twist_report(const TwistSources& s) {
     row.percent = share.percent;
     r.rows.push_back(row);
   }
-  TwistRow together;
-  together.kind = TwistRow::Kind::kInteraction;
-  together.label = "Together (interaction)";
-  together.tilt_deg = sign * s.interaction_deg;
-  together.percent = 100.0 * s.interaction_deg / s.total_tilt_deg;
-  r.rows.push_back(together);
   TwistRow total;
   total.kind = TwistRow::Kind::kTotal;
   total.label = "Total";

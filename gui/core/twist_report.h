@@ -1,9 +1,10 @@
 #pragma once
 /// @file
 /// What the Twist panel shows of the library's `twist_sources`: the rows of its table (each
-/// source's tilt and share, the interaction, the total) and the chart of tilt over time of the
-/// actual flight and of each counterfactual. Which motion it analyses is the one the 3D view shows
-/// (core/shown_motion.h). The numbers are the library's; this file only labels and formats them.
+/// source's tilt and share, then the total, which the shares add up to) and the chart of tilt over
+/// time of the actual flight and of each counterfactual. Which motion it analyses is the one the 3D
+/// view shows (core/shown_motion.h). The numbers are the library's; this file only labels and
+/// formats them.
 
 #include <string>
 #include <vector>
@@ -15,9 +16,9 @@ namespace saltus::gui {
 
 /// One row of the table.
 struct TwistRow {
-  enum class Kind { kSource, kInteraction, kTotal };
+  enum class Kind { kSource, kTotal };
   Kind kind = Kind::kSource;
-  std::string label;  ///< "Right arm", "Together (interaction)", "Total"
+  std::string label;  ///< "Right arm", "Total"
   /// The library's tilt counted in the direction of the total tilt (its sign, Yeadon's θ,
   /// says which side the body leans; here a share < 0 works against the total, as its percent).
   double tilt_deg = 0.0;
@@ -31,7 +32,7 @@ struct TwistReport {
   /// False when the flight is not tilted enough to share out (has_tilt_to_share): the panel
   /// shows the sentence alone, no table of zeros and no percentages of nearly nothing.
   bool tilted = false;
-  /// Sources in the library's order, then the interaction, then the total; empty if !tilted.
+  /// Sources in the library's order, then the total; empty if !tilted.
   std::vector<TwistRow> rows;
   /// "Tilt 23.1° at mid-flight (t = 1.02 s; θ = −23.1° in the chart); 1.50 twists to the left."
   std::string summary;

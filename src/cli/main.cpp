@@ -402,8 +402,6 @@ int run_analyse_twist(const CommonArgs& args) {
       std::printf("  %-10s %7.1f deg of tilt at mid-flight (%.0f %%)\n",
                   share.at("source").get<std::string>().c_str(), share.at("tilt_deg").get<double>(),
                   share.at("percent").get<double>());
-    std::printf("  together beyond their separate effects: %.1f deg\n",
-                written.at("interaction_deg").get<double>());
     std::printf("  wrote %s/{result.json, twist.csv, twist.md} in %.3f s\n",
                 absolute(args.out_dir).c_str(), seconds);
   }

@@ -27,12 +27,23 @@ TEST(CliAnalyseTwist, WritesTheSharesAndSaysWhereTheTwistComesFrom) {
   for (const auto& share : r["shares"])
     sum += share["tilt_deg"].get<double>();
   EXPECT_NEAR(sum, r["total_tilt_deg"].get<double>(), 1e-9);
+  EXPECT_LT(std::abs(r["interaction_deg"].get<double>()), 1e-9);  // Shapley shares add up
   EXPECT_NE(run.output.find(r["sentence"].get<std::string>()), std::string::npos) << run.output;
   EXPECT_TRUE(std::filesystem::exists(dir / "twist/twist.csv"));
   EXPECT_TRUE(std::filesystem::exists(dir / "twist/twist.md"));
   // Run again into its own folder: replaced.
   EXPECT_EQ(test::run_cli("analyse twist " + motion + " --out " + (dir / "twist") + " -q").status,
             0);
+
+  // The bundled aerial twist: the arms, not the take-off, in the sentence printed and written.
+  const auto aerial = test::run_cli(
+      "analyse twist " + std::string(SALTUS_EXAMPLES_DIR) +
+      "/motions/full-twisting-back-somersault-from-the-arms.motion.json --out " + (dir / "aerial"));
+  ASSERT_EQ(aerial.status, 0) << aerial.output;
+  const std::string said = test::read_json(dir / "aerial/result.json")["sentence"];
+  EXPECT_NE(said.find("left arm"), std::string::npos) << said;
+  EXPECT_EQ(said.find("take-off"), std::string::npos) << said;
+  EXPECT_NE(aerial.output.find(said), std::string::npos) << aerial.output;
 
   test::write_text(dir / "bad.motion.json", "{\"format\": \"saltus-motion/1\"");
   const auto bad =

@@ -1,5 +1,5 @@
 // The Twist panel's table and chart (core/twist_report.h): rows carry the library's numbers and
-// add up to the total with the interaction, labels say what each row and curve is, and a flight
+// add up to the total, labels say what each row and curve is, and a flight
 // without tilt gets the library's sentence alone (no table, no percentages of nothing).
 
 #include "core/twist_report.h"
@@ -18,8 +18,8 @@ std::string motion_path(const std::string& name) {
 }
 
 /// A result as twist_sources makes one, with round numbers: 24° of tilt, 17° from the right arm,
-/// 6° from the take-off, −1° from the left arm (against), 1.5° from the legs, 0° from the trunk,
-/// so 0.5° of interaction.
+/// 6° from the take-off, −1° from the left arm (against), 2° from the legs, 0° from the trunk
+/// (the shares add up to the total, as Shapley values do).
 TwistSources made_up() {
   TwistSources s;
   s.reference_time_s = 0.6;
@@ -28,25 +28,25 @@ TwistSources made_up() {
   s.shares = {{"take-off", 6.0, 25.0},
               {"left arm", -1.0, -100.0 / 24.0},
               {"right arm", 17.0, 1700.0 / 24.0},
-              {"legs", 1.5, 150.0 / 24.0},
+              {"legs", 2.0, 200.0 / 24.0},
               {"trunk", 0.0, 0.0}};
-  s.interaction_deg = 0.5;
+  s.interaction_deg = 0.0;
   s.times = {0.0, 0.6, 1.2};
   s.flight_names = {"actual",       "take-off only", "without left arm", "without right arm",
                     "without legs", "without trunk"};
   s.tilt_deg = {{0, 24, 30}, {0, 6, 7}, {0, 25, 31}, {0, 7, 8}, {0, 22.5, 28}, {0, 24, 30}};
   s.sentence =
       "Of the 24° of tilt at mid-flight, 71 % came from the right arm, 25 % from the "
-      "take-off, 6 % from the legs.";
+      "take-off, 8 % from the legs.";
   return s;
 }
 
-TEST(TwistReport, RowsAreTheSourcesThenTheInteractionThenTheTotal) {
+TEST(TwistReport, RowsAreTheSourcesThenTheTotal) {
   const TwistSources s = made_up();
   const TwistReport r = twist_report(s);
   ASSERT_TRUE(r.tilted);
   EXPECT_EQ(r.sentence, s.sentence);
-  ASSERT_EQ(r.rows.size(), s.shares.size() + 2);
+  ASSERT_EQ(r.rows.size(), s.shares.size() + 1);
   const std::vector<std::string> labels = {"Take-off", "Left arm", "Right arm", "Legs", "Trunk"};
   for (std::size_t i = 0; i < s.shares.size(); ++i) {
     EXPECT_EQ(r.rows[i].kind, TwistRow::Kind::kSource);
@@ -54,10 +54,6 @@ TEST(TwistReport, RowsAreTheSourcesThenTheInteractionThenTheTotal) {
     EXPECT_EQ(r.rows[i].tilt_deg, s.shares[i].tilt_deg);
     EXPECT_EQ(r.rows[i].percent, s.shares[i].percent);
   }
-  const TwistRow& together = r.rows[s.shares.size()];
-  EXPECT_EQ(together.kind, TwistRow::Kind::kInteraction);
-  EXPECT_EQ(together.label, "Together (interaction)");
-  EXPECT_EQ(together.tilt_deg, s.interaction_deg);
   const TwistRow& total = r.rows.back();
   EXPECT_EQ(total.kind, TwistRow::Kind::kTotal);
   EXPECT_EQ(total.label, "Total");
@@ -65,7 +61,7 @@ TEST(TwistReport, RowsAreTheSourcesThenTheInteractionThenTheTotal) {
   EXPECT_EQ(total.percent_text, "100 %");
 }
 
-TEST(TwistReport, SourceRowsAddUpToTheTotalMinusTheInteraction) {
+TEST(TwistReport, SourceRowsAddUpToTheTotal) {
   const TwistReport r = twist_report(made_up());
   double tilt = 0.0, percent = 0.0;
   for (const TwistRow& row : r.rows)
@@ -73,11 +69,10 @@ TEST(TwistReport, SourceRowsAddUpToTheTotalMinusTheInteraction) {
       tilt += row.tilt_deg;
       percent += row.percent;
     }
-  const TwistRow& together = r.rows[r.rows.size() - 2];
-  EXPECT_NEAR(tilt, r.rows.back().tilt_deg - together.tilt_deg, 1e-12);
-  EXPECT_NEAR(percent + together.percent, 100.0, 1e-9);
-  EXPECT_EQ(together.tilt_text, "0.5°");
-  EXPECT_EQ(together.percent_text, "2 %");
+  EXPECT_NEAR(tilt, r.rows.back().tilt_deg, 1e-12);
+  EXPECT_NEAR(percent, 100.0, 1e-9);
+  EXPECT_EQ(r.rows[3].tilt_text, "2.0°");
+  EXPECT_EQ(r.rows[3].percent_text, "8 %");
 }
 
 TEST(TwistReport, NumbersAreWrittenForPeople) {
@@ -99,7 +94,6 @@ TEST(TwistReport, TiltIsCountedInTheDirectionOfTheTotal) {
   // The same flight mirrored: θ < 0 and twisting to the right. The table reads as before.
   TwistSources s = made_up();
   s.total_tilt_deg = -s.total_tilt_deg;
-  s.interaction_deg = -s.interaction_deg;
   s.twists = -s.twists;
   for (TwistShare& share : s.shares)
     share.tilt_deg = -share.tilt_deg;  // percents keep their sign: of the total

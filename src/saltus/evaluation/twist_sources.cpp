@@ -113,21 +113,59 @@ TwistSources twist_sources(const Motion& motion, const BodyModel& model,
   out.twists = yeadon_summary(roots).twists;
   out.total_tilt_deg = at_time(out.times, out.tilt_deg[0], out.reference_time_s);
 
-  const auto fly = [&](const std::string& name, const std::vector<std::string>& joints) {
+  // Each movement's share is its Shapley value: the tilt it adds, v(S) − v(S ∪ {it}), averaged
+  // over every set S of the other movements made symmetric first, weighted |S|!(n−|S|−1)!/n!.
+  // The shares then add up to v(none) − v(all) exactly, whatever the movements do together
+  // (one arm adducting against the other overhead tilts the body only through both).
+  std::vector<const Movement*> present;
+  for (const Movement& m : movements)
+    if (!m.joints.empty()) present.push_back(&m);
+  const int n = static_cast<int>(present.size());
+  const int subsets = 1 << n;
+  std::vector<double> tilt_with_symmetric(subsets, out.total_tilt_deg);  // [mask of movements]
+  for (int mask = 1; mask < subsets; ++mask) {
+    std::vector<std::string> joints;
+    for (int i = 0; i < n; ++i)
+      if (mask & (1 << i))
+        joints.insert(joints.end(), present[i]->joints.begin(), present[i]->joints.end());
     const SimulationResult flight =
         simulate_motion(with_symmetric_joints(actual, model, joints), model, options);
-    out.flight_names.push_back(name);
-    out.tilt_deg.push_back(tilt_of(flight));
-    return at_time(out.times, out.tilt_deg.back(), out.reference_time_s);
+    const std::vector<double> tilt = tilt_of(flight);
+    tilt_with_symmetric[mask] = at_time(out.times, tilt, out.reference_time_s);
+    // The curves kept: every movement symmetric (the take-off's), then each one alone.
+    if (mask == subsets - 1) {
+      out.flight_names.insert(out.flight_names.begin() + 1, "take-off only");
+      out.tilt_deg.insert(out.tilt_deg.begin() + 1, tilt);
+    }
+    if ((mask & (mask - 1)) == 0) {
+      int i = 0;
+      while (!(mask & (1 << i)))
+        ++i;
+      out.flight_names.push_back(std::string("without ") + present[i]->name);
+      out.tilt_deg.push_back(tilt);
+    }
+  }
+  const auto factorial = [](int k) {
+    double f = 1.0;
+    for (int i = 2; i <= k; ++i)
+      f *= i;
+    return f;
   };
-  const double takeoff = fly("take-off only", every_joint);
+  const double takeoff = tilt_with_symmetric[subsets - 1];
   out.shares.push_back({"take-off", takeoff, 0.0});
   double sum = takeoff;
-  for (const Movement& m : movements) {
-    if (m.joints.empty()) continue;
-    const double without = fly(std::string("without ") + m.name, m.joints);
-    out.shares.push_back({m.name, out.total_tilt_deg - without, 0.0});
-    sum += out.total_tilt_deg - without;
+  for (int i = 0; i < n; ++i) {
+    double value = 0.0;
+    for (int mask = 0; mask < subsets; ++mask) {
+      if (mask & (1 << i)) continue;
+      int size = 0;
+      for (int b = mask; b; b &= b - 1)
+        ++size;
+      value += factorial(size) * factorial(n - size - 1) / factorial(n) *
+               (tilt_with_symmetric[mask] - tilt_with_symmetric[mask | (1 << i)]);
+    }
+    out.shares.push_back({present[i]->name, value, 0.0});
+    sum += value;
   }
   out.interaction_deg = out.total_tilt_deg - sum;
   for (TwistShare& s : out.shares) {
@@ -135,7 +173,8 @@ TwistSources twist_sources(const Motion& motion, const BodyModel& model,
     if (std::abs(s.percent) < 0.05) s.percent = 0.0;  // no "−0 %"
   }
 
-  // The sentence: the sources in order of their share, those of at least 5 %.
+  // The sentence: the sources in order of their share, those of at least 5 %; then those that
+  // worked against the tilt by at least 5 % (else "202 % came from the right arm" stands alone).
   std::vector<TwistShare> ordered = out.shares;
   std::sort(ordered.begin(), ordered.end(),
             [](const TwistShare& a, const TwistShare& b) { return a.percent > b.percent; });
@@ -154,6 +193,16 @@ TwistSources twist_sources(const Motion& motion, const BodyModel& model,
                       "the " + s.source;
       first = false;
     }
+    // Largest first: "; the left arm (102 %) and the legs (6 %) worked against it".
+    std::vector<const TwistShare*> against;
+    for (auto s = ordered.rbegin(); s != ordered.rend() && s->percent <= -5.0; ++s)
+      against.push_back(&*s);
+    for (std::size_t i = 0; i < against.size(); ++i)
+      out.sentence += std::string(i == 0                    ? "; the "
+                                  : i + 1 == against.size() ? " and the "
+                                                            : ", the ") +
+                      against[i]->source + format_number(" (%.0f %%)", -against[i]->percent);
+    if (!against.empty()) out.sentence += " worked against it";
     out.sentence += ".";
   }
   return out;

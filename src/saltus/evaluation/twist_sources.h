@@ -3,12 +3,14 @@
 /// Where a twist comes from, by Yeadon's method of counterfactual free flights (M. R. Yeadon,
 /// "The biomechanics of twisting somersaults", J. Sports Sci. 11, 1993): a twist needs tilt,
 /// and the tilt at mid-flight comes from the take-off (angular momentum tilted from the
-/// somersault axis) and from asymmetric movements in the air. Each aerial movement's share is
-/// the tilt it adds: the actual free flight's tilt minus that of the same flight with the
-/// movement replaced by its symmetric part (with_symmetric_joints: an arm by the mean of itself
-/// and the other arm's mirror image, legs and trunk likewise); the take-off's share is the tilt
-/// of the flight with every movement made symmetric. The shares add up to the whole only as far as
-/// the movements act independently; `interaction_deg` says how far.
+/// somersault axis) and from asymmetric movements in the air. A movement is taken away by
+/// replacing it with its symmetric part (with_symmetric_joints: an arm by the mean of itself and
+/// the other arm's mirror image, legs and trunk likewise). The take-off's share is the tilt of the
+/// flight with every movement made symmetric; each movement's share is its Shapley value, the
+/// tilt it adds averaged over every order of taking the movements away (2^n flights for n
+/// movements), so that the shares add up to the actual flight's tilt exactly, also when the
+/// movements act only together (one arm adducting while the other stays overhead: the asymmetry
+/// lies between the two arms, and each arm's symmetric part removes half of it).
 
 #include <string>
 #include <vector>
@@ -37,10 +39,11 @@ struct TwistSources {
   double total_tilt_deg = 0.0;     ///< of the motion's own free flight at the reference time
   double twists = 0.0;             ///< Yeadon's twists of that free flight (revolutions)
   std::vector<TwistShare> shares;  ///< the take-off first, then each aerial movement
-  /// total − Σ shares: what the movements do together beyond their separate effects.
+  /// total − Σ shares: 0 up to rounding (the shares are Shapley values); written as the check.
   double interaction_deg = 0.0;
-  /// Tilt over time (degrees, at `times`) of the actual flight and of each counterfactual, in
-  /// the order: actual, every movement symmetric (take-off only), then without each movement.
+  /// Tilt over time (degrees, at `times`) of the actual flight and of some counterfactuals, in
+  /// the order: actual, every movement symmetric (take-off only), then without each movement
+  /// alone (the flights without two or three movements enter the shares, not these curves).
   std::vector<double> times;
   std::vector<std::string> flight_names;
   std::vector<std::vector<double>> tilt_deg;

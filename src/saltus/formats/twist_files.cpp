@@ -62,16 +62,16 @@ std::string twist_markdown(const MotionFile& file, const TwistSources& s) {
   for (const TwistShare& share : s.shares)
     out << "| " << share.source << " | " << format_number("%.1f", share.tilt_deg) << " | "
         << format_number("%.0f %%", share.percent) << " |\n";
-  out << "| together beyond their separate effects | " << format_number("%.1f", s.interaction_deg)
-      << " | "
-      << format_number("%.0f %%", std::abs(s.total_tilt_deg) > 1e-9
-                                      ? 100.0 * s.interaction_deg / s.total_tilt_deg
-                                      : 0.0)
-      << " |\n\nEach aerial movement's share is the tilt lost when it is replaced by its "
-         "symmetric part (an arm by the mean of itself and the other arm's mirror image, legs and "
-         "trunk likewise); the take-off's is the tilt of the flight with every movement made "
-         "symmetric, from the same take-off state (Yeadon's counterfactual free flights). The "
-         "tilt over time of every flight is in twist.csv.\n";
+  out << "| total | " << format_number("%.1f", s.total_tilt_deg) << " | 100 % |\n"
+      << "\nA movement is taken away by replacing it with its symmetric part (an arm by the mean "
+         "of itself and the other arm's mirror image, legs and trunk likewise), every flight from "
+         "the same take-off state (Yeadon's counterfactual free flights). The take-off's share is "
+         "the tilt of the flight with every movement made symmetric; each movement's share is the "
+         "tilt it adds, averaged over every order of taking the movements away (its Shapley "
+         "value), so the shares add up to the total. An asymmetry between the two arms (one "
+         "adducting while the other stays up) is shared between them: each arm's symmetric part "
+         "removes half of it. The tilt over time of the actual flight, of the take-off alone and "
+         "of each movement taken away alone is in twist.csv.\n";
   return out.str();
 }
 

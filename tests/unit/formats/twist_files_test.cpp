@@ -18,13 +18,13 @@ TwistSources hand_made() {
   s.reference_time_s = 0.75;
   s.total_tilt_deg = 20.0;
   s.twists = 1.5;
-  s.shares = {{"take-off", 14.0, 70.0}, {"right arm", 5.0, 25.0}, {"left arm", 0.5, 2.5}};
-  s.interaction_deg = 0.5;
+  s.shares = {{"take-off", 14.0, 70.0}, {"right arm", 5.5, 27.5}, {"left arm", 0.5, 2.5}};
+  s.interaction_deg = 0.0;
   s.times = {0.0, 0.75, 1.5};
   s.flight_names = {"actual", "take-off only", "without right arm"};
   s.tilt_deg = {{0.0, 20.0, 22.0}, {0.0, 14.0, 15.0}, {0.0, 15.0, 16.0}};
   s.sentence =
-      "Of the 20° of tilt at mid-flight, 70 % came from the take-off, 25 % from the right arm.";
+      "Of the 20° of tilt at mid-flight, 70 % came from the take-off, 28 % from the right arm.";
   return s;
 }
 
@@ -39,7 +39,8 @@ TEST(TwistFiles, ResultJsonCsvAndMarkdownSayWhatTheSourcesSay) {
   EXPECT_EQ(r["analysis"], "twist");
   EXPECT_EQ(r["shares"].size(), 3u);
   EXPECT_EQ(r["shares"][1]["source"], "right arm");
-  EXPECT_DOUBLE_EQ(r["shares"][1]["tilt_deg"].get<double>(), 5.0);
+  EXPECT_DOUBLE_EQ(r["shares"][1]["tilt_deg"].get<double>(), 5.5);
+  EXPECT_DOUBLE_EQ(r["interaction_deg"].get<double>(), 0.0);
   EXPECT_DOUBLE_EQ(r["total_tilt_deg"].get<double>(), 20.0);
   EXPECT_EQ(r["sentence"], s.sentence);
 
@@ -54,9 +55,11 @@ TEST(TwistFiles, ResultJsonCsvAndMarkdownSayWhatTheSourcesSay) {
 
   const std::string md = twist_markdown(file, s);
   EXPECT_NE(md.find(s.sentence), std::string::npos);
-  EXPECT_NE(md.find("| right arm | 5.0 | 25 % |"), std::string::npos) << md;
-  EXPECT_NE(md.find("| together beyond their separate effects | 0.5 | 2 % |"), std::string::npos)
+  EXPECT_NE(md.find("| right arm | 5.5 | 28 % |"), std::string::npos) << md;
+  // The shares add up to the total, the table's last row.
+  EXPECT_NE(md.find("| left arm | 0.5 | 2 % |\n| total | 20.0 | 100 % |\n"), std::string::npos)
       << md;
+  EXPECT_EQ(md.find("together"), std::string::npos) << md;
 }
 
 }  // namespace
