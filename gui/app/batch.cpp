@@ -37,10 +37,13 @@ constexpr int kOptimizationTimeoutMs = 6 * 60 * 60 * 1000;
 int export_figures(const CommandLine& c) {
   std::vector<ResultFolder> folders;
   std::vector<MassStudyFolder> mass_folders;
+  std::vector<TwistFolder> twist_folders;
   try {
     for (const std::string& dir : c.result_dirs) {
       if (is_mass_study_folder(dir))
         mass_folders.push_back(read_mass_study_folder(dir));
+      else if (is_twist_analysis_folder(dir))
+        twist_folders.push_back(read_twist_analysis_folder(dir));
       else
         folders.push_back(read_optimization_folder(dir));
     }
@@ -60,6 +63,12 @@ int export_figures(const CommandLine& c) {
       const std::string path =
           (std::filesystem::path(c.export_figures) / figure.file_name).string();
       write_chart_grid_png(figure.panels, figure.columns, path, kPanelWidth, kPanelHeight, 14);
+      std::printf("wrote %s\n", path.c_str());
+    }
+    for (const Figure& figure : twist_figures(twist_folders)) {
+      const std::string path =
+          (std::filesystem::path(c.export_figures) / figure.file_name).string();
+      write_chart_png(figure.chart, path, kFigureWidth, kFigureHeight, 15);
       std::printf("wrote %s\n", path.c_str());
     }
   } catch (const std::exception& e) {

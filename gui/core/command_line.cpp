@@ -146,8 +146,9 @@ std::unique_ptr<CLI::App> make_app(CommandLine& c, cli::OptionFlags& flags,
       ->check(kNotAFlag);
   app->add_option("--export-figures", figures,
                   "draw paper-style figures (root force/moment and keyframe times before/after, "
-                  "average root force) from `saltus optimize` folders, and joint loads given vs "
-                  "scaled (Fig. 8) from `saltus study mass` folders")
+                  "average root force) from `saltus optimize` folders, joint loads given vs "
+                  "scaled (Fig. 8) from `saltus study mass` folders, and the tilt over the flight "
+                  "from `saltus analyse twist` folders")
       ->type_name("DIR RESULT_DIR")
       ->check(kNotAFlag)
       ->expected(1, CLI::detail::expected_max_vector_size);

@@ -7,6 +7,7 @@
 
 #include "core/plot_series.h"
 #include "core/run_list.h"
+#include "core/twist_report.h"
 #include "saltus/base/text_format.h"
 #include "saltus/body/segment_names.h"
 #include "saltus/evaluation/evaluate.h"
@@ -247,6 +248,19 @@ std::vector<FigureGrid> mass_study_load_figures(const std::vector<MassStudyFolde
       }
     }
     out.push_back(std::move(grid));
+  }
+  return out;
+}
+
+std::vector<Figure> twist_figures(const std::vector<TwistFolder>& folders) {
+  std::vector<Figure> out;
+  StemSet stems;
+  for (const TwistFolder& f : folders) {
+    const TwistReport report = twist_report(f.sources);
+    ChartSpec chart = report.chart;
+    chart.title = report.sentence;
+    out.push_back({stems.make(f.name) + "_twist.png",
+                   titled_figure(chart, f.motion.empty() ? f.name : f.motion, report.summary)});
   }
   return out;
 }

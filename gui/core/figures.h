@@ -5,8 +5,9 @@
 /// optimize` and `saltus study mass` folders (`saltus-gui --export-figures`): the resultant root
 /// force |F| (with % of body weight) and moment |M| before and after on a log axis, as the
 /// paper's Figs. 4 and 5 plot them but with the "after" curve readable, their components, the
-/// keyframe times, the average root force of every folder, and the mass study's joint loads
-/// (Fig. 8) named as people name the joints.
+/// keyframe times, the average root force of every folder, the mass study's joint loads
+/// (Fig. 8) named as people name the joints, and where a twist comes from (`saltus analyse
+/// twist` folders).
 
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "core/chart_spec.h"
 #include "core/result_folder.h"
 #include "saltus/formats/mass_files.h"
+#include "saltus/formats/twist_files.h"
 
 namespace saltus::gui {
 
@@ -47,5 +49,10 @@ ChartSpec average_root_force_figure(const std::vector<ResultFolder>& folders);
 /// moment right, the given and the scaled model's optimised motions on the same axes, named
 /// "right hip" rather than thigh_r.
 std::vector<FigureGrid> mass_study_load_figures(const std::vector<MassStudyFolder>& folders);
+
+/// <name>_twist.png per `saltus analyse twist` folder: the Twist panel's chart (tilt over time of
+/// the actual free flight and of the same take-off with each movement made symmetric, mid-flight
+/// marked) under the folder's sentence, the motion and its tilt and twists.
+std::vector<Figure> twist_figures(const std::vector<TwistFolder>& folders);
 
 }  // namespace saltus::gui

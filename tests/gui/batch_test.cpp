@@ -199,6 +199,27 @@ TEST(GuiBatch, ExportsTheMassStudyLoadsFigureNextToOptimizeFigures) {
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "figures" / "mass-M1_root_force.png"));
 }
 
+TEST(GuiBatch, ExportsTheTwistFigureOfAnAnalyseTwistFolder) {
+  saltus::test::TempDir dir;
+  const saltus::test::CliRun twist = saltus::test::run_cli(
+      "analyse twist '" + std::string(SALTUS_EXAMPLES_DIR) +
+      "/motions/full-twisting-back-somersault-from-the-arms.motion.json' -q --out '" +
+      (dir / "aerial") + "'");
+  ASSERT_EQ(twist.status, 0) << twist.output;
+  const saltus::test::CliRun run =
+      run_gui("--export-figures '" + (dir / "figures") + "' '" + (dir / "aerial") + "'");
+  ASSERT_EQ(run.status, 0) << run.output;
+  expect_sane_png((dir.path() / "figures" / "aerial_twist.png").string(), 1200, 600);
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "figures" / "aerial_root_force.png"));
+  // A twist folder without its twist.csv: exit 2 naming the file, no figure.
+  std::filesystem::remove(dir.path() / "aerial" / "twist.csv");
+  const saltus::test::CliRun broken =
+      run_gui("--export-figures '" + (dir / "again") + "' '" + (dir / "aerial") + "'");
+  EXPECT_EQ(broken.status, 2) << broken.output;
+  EXPECT_NE(broken.output.find("twist.csv"), std::string::npos) << broken.output;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "again" / "aerial_twist.png"));
+}
+
 TEST(GuiBatch, WithoutADisplayItSaysToUseXvfbRunAndDoesNotAbort) {
   // No DISPLAY at all, and a DISPLAY with no X server behind it (Qt would abort, status 134).
   for (const std::string& env : {std::string("env -u DISPLAY -u WAYLAND_DISPLAY "),

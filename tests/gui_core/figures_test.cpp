@@ -6,6 +6,7 @@
 #include <set>
 
 #include "core/figures.h"
+#include "core/twist_report.h"
 
 namespace saltus::gui {
 namespace {
@@ -132,6 +133,34 @@ TEST(Figures, MassStudyPanelsNameTheSegmentsAsPeopleDo) {
   EXPECT_EQ(grids[0].panels[0].title.find("thigh_r"), std::string::npos);
   EXPECT_EQ(grids[0].panels[1].lines[1].y, (std::vector<double>{7, 8}));
   EXPECT_EQ(grids[0].panels[0].lines[1].label, "model with left and right thighs × 1.5");
+}
+
+TEST(Figures, ATwistFolderGivesThePanelsChartUnderItsSentence) {
+  TwistFolder f;
+  f.name = "twist-M7";
+  f.motion = "M7 double front";
+  f.sources.reference_time_s = 1.0;
+  f.sources.total_tilt_deg = -20.0;
+  f.sources.twists = 1.5;
+  f.sources.shares = {{"take-off", -20.0, 100.0}, {"left arm", 0.0, 0.0}};
+  f.sources.times = {0.0, 1.0, 2.0};
+  f.sources.flight_names = {"actual", "take-off only", "without left arm"};
+  f.sources.tilt_deg = {{0, -20, 0}, {0, -20, 0}, {0, -20, 0}};
+  f.sources.sentence = "Of the 20° of tilt at mid-flight, 100 % came from the take-off.";
+  const std::vector<Figure> figures = twist_figures({f});
+  ASSERT_EQ(figures.size(), 1u);
+  EXPECT_EQ(figures[0].file_name, "twist-M7_twist.png");
+  const ChartSpec& c = figures[0].chart;
+  // The sentence first, then the motion, then its tilt and twists (the panel's summary line).
+  EXPECT_EQ(c.title.rfind(f.sources.sentence + "\nM7 double front", 0), 0u) << c.title;
+  EXPECT_NE(c.title.find("1.50 twists"), std::string::npos) << c.title;
+  const ChartSpec panel = twist_report(f.sources).chart;
+  ASSERT_EQ(c.lines.size(), panel.lines.size());
+  for (std::size_t k = 0; k < c.lines.size(); ++k) {
+    EXPECT_EQ(c.lines[k].label, panel.lines[k].label);
+    EXPECT_EQ(c.lines[k].y, panel.lines[k].y);
+  }
+  EXPECT_EQ(c.lines[1].label, "left arm made symmetric");
 }
 
 }  // namespace

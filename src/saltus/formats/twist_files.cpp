@@ -1,8 +1,13 @@
 #include "saltus/formats/twist_files.h"
 
+#include <filesystem>
 #include <sstream>
 
+#include "saltus/base/input_error.h"
+#include "saltus/base/json_reader.h"
 #include "saltus/base/text_format.h"
+#include "saltus/formats/csv_table.h"
+#include "saltus/formats/result_json.h"
 
 namespace saltus {
 
@@ -73,6 +78,74 @@ std::string twist_markdown(const MotionFile& file, const TwistSources& s) {
          "removes half of it. The tilt over time of the actual flight, of the take-off alone and "
          "of each movement taken away alone is in twist.csv.\n";
   return out.str();
+}
+
+bool is_twist_analysis_folder(const std::string& dir) {
+  const std::filesystem::path result = std::filesystem::path(dir) / "result.json";
+  if (!std::filesystem::is_regular_file(result)) return false;
+  try {
+    const nlohmann::json document = read_json_file(result.string());
+    return document.is_object() && document.value("analysis", std::string()) == "twist";
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+TwistFolder read_twist_analysis_folder(const std::string& dir) {
+  const std::string what = "a `saltus analyse twist` output folder";
+  TwistFolder out;
+  out.path = dir;
+  out.name = folder_name(dir);
+  const std::string result_path = output_file(dir, "result.json", what);
+  const nlohmann::json document = read_json_file(result_path);
+  const JsonNode root(document, result_path);
+  root.require_object();
+  if (root.at("analysis").as_string() != "twist")
+    throw InputError(result_path, "/analysis",
+                     "not \"twist\" (not a `saltus analyse twist` folder)");
+  TwistSources& s = out.sources;
+  out.motion = root.at("motion").as_string();
+  s.reference_time_s = root.at("reference_time_s").as_double();
+  s.total_tilt_deg = root.at("total_tilt_deg").as_double();
+  s.twists = root.at("twists").as_double();
+  s.interaction_deg = root.at("interaction_deg").as_double();
+  s.sentence = root.at("sentence").as_string();
+  const JsonNode shares = root.at("shares");
+  shares.require_array();
+  for (std::size_t i = 0; i < shares.size(); ++i) {
+    const JsonNode share = shares.at(i);
+    s.shares.push_back({share.at("source").as_string(), share.at("tilt_deg").as_double(),
+                        share.at("percent").as_double()});
+  }
+
+  // twist.csv: t, then <flight>_tilt_deg per flight, named back as the library names them.
+  const std::string csv_path = output_file(dir, "twist.csv", what);
+  const CsvTable table = read_csv_table(csv_path);
+  if (table.columns.size() < 2 || table.columns[0] != "t")
+    throw InputError(csv_path, "line 1",
+                     "expected t, then one <flight>_tilt_deg column per flight");
+  std::vector<std::string> known = {"actual", "take-off only"};
+  for (const TwistShare& share : s.shares)
+    known.push_back("without " + share.source);
+  s.times = table.column_values("t", csv_path);
+  const std::string suffix = "_tilt_deg";
+  for (std::size_t c = 1; c < table.columns.size(); ++c) {
+    const std::string& column = table.columns[c];
+    if (column.size() <= suffix.size() ||
+        column.compare(column.size() - suffix.size(), suffix.size(), suffix) != 0)
+      throw InputError(
+          csv_path, "line 1",
+          "column " + std::to_string(c + 1) + " is \"" + column + "\", expected <flight>_tilt_deg");
+    const std::string stem = column.substr(0, column.size() - suffix.size());
+    std::string name = stem;
+    for (char& ch : name)
+      if (ch == '_') ch = ' ';
+    for (const std::string& k : known)
+      if (column_name(k) == stem) name = k;
+    s.flight_names.push_back(name);
+    s.tilt_deg.push_back(table.column_values(column, csv_path));
+  }
+  return out;
 }
 
 }  // namespace saltus

@@ -19,4 +19,20 @@ nlohmann::json twist_result_json(const MotionFile& file, const TwistSources& sou
 std::string twist_csv(const TwistSources& sources);
 std::string twist_markdown(const MotionFile& file, const TwistSources& sources);
 
+/// A `saltus analyse twist` folder read back (for its figure, `saltus-gui --export-figures`).
+struct TwistFolder {
+  std::string path;
+  std::string name;    ///< the folder's own name
+  std::string motion;  ///< the motion's name
+  /// As written: the shares, the sentence, and the tilt over time of the flights twist.csv
+  /// holds, named as twist_sources names them ("take-off only", "without left arm").
+  TwistSources sources;
+};
+
+/// Whether DIR/result.json parses and says "analysis": "twist". Anything else is false, so that
+/// another reader can say what is wrong.
+bool is_twist_analysis_folder(const std::string& dir);
+/// Throws InputError naming the file (and field, or line) that is missing or malformed.
+TwistFolder read_twist_analysis_folder(const std::string& dir);
+
 }  // namespace saltus

@@ -1,6 +1,7 @@
 // The twist analysis's files (formats/twist_files.h) from sources written out by hand: result.json
 // carries every share and the sentence, twist.csv one tilt column per flight with its rows, and
-// twist.md the sentence and the table.
+// twist.md the sentence and the table; a folder read back gives the same sources, flights named
+// as the library names them, and a broken one names its file and field.
 
 #include "saltus/formats/twist_files.h"
 
@@ -8,7 +9,9 @@
 
 #include <sstream>
 
+#include "saltus/base/input_error.h"
 #include "saltus/formats/csv_table.h"
+#include "support/cli_runner.h"
 
 namespace saltus {
 namespace {
@@ -60,6 +63,76 @@ TEST(TwistFiles, ResultJsonCsvAndMarkdownSayWhatTheSourcesSay) {
   EXPECT_NE(md.find("| left arm | 0.5 | 2 % |\n| total | 20.0 | 100 % |\n"), std::string::npos)
       << md;
   EXPECT_EQ(md.find("together"), std::string::npos) << md;
+}
+
+/// The three files of `saltus analyse twist` written into `dir` as the CLI writes them.
+void write_folder(const std::string& dir, const TwistSources& s) {
+  MotionFile file;
+  file.path = "m.motion.json";
+  file.motion.name = "layout full twist";
+  std::filesystem::create_directories(dir);
+  test::write_text(dir + "/result.json", twist_result_json(file, s).dump(2));
+  test::write_text(dir + "/twist.csv", twist_csv(s));
+  test::write_text(dir + "/twist.md", twist_markdown(file, s));
+}
+
+TEST(TwistFiles, AFolderReadBackHoldsTheSourcesAsWritten) {
+  test::TempDir dir;
+  TwistSources s = hand_made();
+  s.shares.push_back({"legs", 0.0, 0.0});
+  s.flight_names = {"actual", "take-off only", "without right arm"};
+  write_folder(dir / "twist", s);
+  ASSERT_TRUE(is_twist_analysis_folder(dir / "twist"));
+  const TwistFolder f = read_twist_analysis_folder(dir / "twist");
+  EXPECT_EQ(f.name, "twist");
+  EXPECT_EQ(f.motion, "layout full twist");
+  const TwistSources& r = f.sources;
+  EXPECT_EQ(r.sentence, s.sentence);
+  EXPECT_DOUBLE_EQ(r.total_tilt_deg, s.total_tilt_deg);
+  EXPECT_DOUBLE_EQ(r.reference_time_s, s.reference_time_s);
+  EXPECT_DOUBLE_EQ(r.twists, s.twists);
+  ASSERT_EQ(r.shares.size(), s.shares.size());
+  for (std::size_t i = 0; i < s.shares.size(); ++i) {
+    EXPECT_EQ(r.shares[i].source, s.shares[i].source);
+    EXPECT_DOUBLE_EQ(r.shares[i].tilt_deg, s.shares[i].tilt_deg);
+    EXPECT_DOUBLE_EQ(r.shares[i].percent, s.shares[i].percent);
+  }
+  // "take-off only" and "without right arm", not "take off only": the chart matches on them.
+  EXPECT_EQ(r.flight_names, s.flight_names);
+  EXPECT_EQ(r.times, s.times);
+  EXPECT_EQ(r.tilt_deg, s.tilt_deg);
+}
+
+TEST(TwistFiles, ABrokenFolderNamesItsFileAndField) {
+  test::TempDir dir;
+  write_folder(dir / "a", hand_made());
+  std::filesystem::remove(dir.path() / "a" / "twist.csv");
+  try {
+    read_twist_analysis_folder(dir / "a");
+    ADD_FAILURE() << "read a folder without twist.csv";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("twist.csv"), std::string::npos) << e.what();
+  }
+  write_folder(dir / "b", hand_made());
+  test::write_text(dir / "b/twist.csv", "t,actual\n0,1\n");
+  try {
+    read_twist_analysis_folder(dir / "b");
+    ADD_FAILURE() << "read a column without _tilt_deg";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("actual"), std::string::npos) << e.what();
+  }
+  write_folder(dir / "c", hand_made());
+  test::write_text(dir / "c/result.json", "{\"analysis\": \"twist\", \"motion\": 3}");
+  try {
+    read_twist_analysis_folder(dir / "c");
+    ADD_FAILURE() << "read a result.json whose motion is a number";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/motion"), std::string::npos) << e.what();
+  }
+  // Not a twist folder at all: false, so another reader can say what it is.
+  test::write_text(dir / "c/result.json", "{\"analysis\": \"what-if\"}");
+  EXPECT_FALSE(is_twist_analysis_folder(dir / "c"));
+  EXPECT_FALSE(is_twist_analysis_folder(dir / "no-such-folder"));
 }
 
 }  // namespace
