@@ -2,6 +2,7 @@
 // construction: a symmetric straight somersault has no tilt to share; the same movements with the
 // angular momentum tilted at take-off owe all their tilt to the take-off; with the momentum about
 // the somersault axis and one arm kept overhead, all of it to the arms and none to the take-off;
+// with one hip swung sideways instead, all of it to the legs;
 // the mirror image of that flight tilts the other way with the arms' shares swapped; the bundled
 // aerial twist (one arm adducting while the other stays up) owes its tilt to the arms. The shares
 // are Shapley values: they add up to the whole on every flight.
@@ -86,6 +87,26 @@ TEST(TwistSources, OneArmKeptUpMakesAllTheTiltAndItsMirrorTheOpposite) {
   EXPECT_NEAR(left.twists, -right.twists, 1e-6);
   EXPECT_NEAR(share(left, "left arm"), -share(right, "right arm"), 1e-6);
   EXPECT_NEAR(share(left, "right arm"), -share(right, "left arm"), 1e-6);
+}
+
+TEST(TwistSources, OneHipSwungSidewaysGivesTheTiltToTheLegs) {
+  // M1 with the left hip abducted 30 deg from the first keyframe on (the right as it was): the
+  // legs' asymmetry, nothing else, tilts the body.
+  const MotionFile f = m1();
+  Motion m = f.motion;
+  m.spline.reset();
+  const int hip = f.model.joint_index("hip_l");
+  for (std::size_t k = 1; k < m.keyframes.size(); ++k)
+    m.keyframes[k].rotations[hip] =
+        m.keyframes[k].rotations[hip] *
+        Eigen::Quaterniond(Eigen::AngleAxisd(30.0 * M_PI / 180.0, Eigen::Vector3d::UnitZ()));
+  const TwistSources s = twist_sources(m, f.model);
+  SCOPED_TRACE(s.sentence);
+  EXPECT_GT(std::abs(s.total_tilt_deg), 1.0);
+  EXPECT_NEAR(share(s, "legs"), s.total_tilt_deg, 0.02 * std::abs(s.total_tilt_deg));
+  for (const char* other : {"take-off", "left arm", "right arm", "trunk"})
+    EXPECT_LT(std::abs(share(s, other)), 0.02 * std::abs(s.total_tilt_deg)) << other;
+  EXPECT_NE(s.sentence.find("from the legs"), std::string::npos);
 }
 
 TEST(TwistSources, TheBundledAerialTwistOwesItsTiltToTheArmsAndTheSharesAddUp) {
