@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <stdexcept>
+#include <thread>
 
 #include "saltus/base/constants.h"
 #include "saltus/base/text_format.h"
@@ -122,15 +124,33 @@ TwistSources twist_sources(const Motion& motion, const BodyModel& model,
     if (!m.joints.empty()) present.push_back(&m);
   const int n = static_cast<int>(present.size());
   const int subsets = 1 << n;
-  std::vector<double> tilt_with_symmetric(subsets, out.total_tilt_deg);  // [mask of movements]
-  for (int mask = 1; mask < subsets; ++mask) {
+  // The 2^n − 1 counterfactual flights are independent: flown on a few threads, each filling
+  // its own masks (the result does not depend on the thread count).
+  std::vector<std::vector<double>> tilt_of_mask(subsets);
+  const auto fly = [&](int mask) {
     std::vector<std::string> joints;
     for (int i = 0; i < n; ++i)
       if (mask & (1 << i))
         joints.insert(joints.end(), present[i]->joints.begin(), present[i]->joints.end());
-    const SimulationResult flight =
-        simulate_motion(with_symmetric_joints(actual, model, joints), model, options);
-    const std::vector<double> tilt = tilt_of(flight);
+    tilt_of_mask[mask] =
+        tilt_of(simulate_motion(with_symmetric_joints(actual, model, joints), model, options));
+  };
+  const int threads = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1,
+                                 std::max(1, subsets - 1));
+  std::vector<std::future<void>> flying;
+  for (int t = 1; t < threads; ++t)
+    flying.push_back(std::async(std::launch::async, [&, t] {
+      for (int mask = 1 + t; mask < subsets; mask += threads)
+        fly(mask);
+    }));
+  for (int mask = 1; mask < subsets; mask += threads)
+    fly(mask);
+  for (std::future<void>& f : flying)
+    f.get();  // rethrows a flight's exception
+
+  std::vector<double> tilt_with_symmetric(subsets, out.total_tilt_deg);  // [mask of movements]
+  for (int mask = 1; mask < subsets; ++mask) {
+    const std::vector<double>& tilt = tilt_of_mask[mask];
     tilt_with_symmetric[mask] = at_time(out.times, tilt, out.reference_time_s);
     // The curves kept: every movement symmetric (the take-off's), then each one alone.
     if (mask == subsets - 1) {

@@ -147,9 +147,11 @@ TEST(TwistSources, OnTheTwistingFamilyTheTiltComesFromWhereTheFlightWasMadeToGet
     if (!has_tilt_to_share(total)) continue;
     // A source that worked against the tilt is named with what it took away (seed 10: "202 %
     // came from the right arm" would otherwise stand alone).
-    for (const TwistShare& x : s.shares)
-      if (x.percent <= -5.0)
+    for (const TwistShare& x : s.shares) {
+      if (x.percent <= -5.0) {
         EXPECT_NE(s.sentence.find("the " + x.source + " ("), std::string::npos) << x.source;
+      }
+    }
     if (f.twist_source == "take-off") {
       ++takeoff_flights;
       EXPECT_GT(share(s, "take-off") / total, 0.8);
