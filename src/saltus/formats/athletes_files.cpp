@@ -6,6 +6,7 @@
 #include "saltus/base/input_error.h"
 #include "saltus/base/json_reader.h"
 #include "saltus/base/text_format.h"
+#include "saltus/evaluation/joint_loads.h"
 #include "saltus/formats/output_folder.h"
 #include "saltus/formats/study_folder.h"
 #include "saltus/optim/option_table.h"
@@ -21,6 +22,13 @@ std::string data(double value) {
 
 std::string turns(double somersaults, double twists) {
   return format_number("%+.2f", somersaults) + " / " + format_number("%+.2f", twists);
+}
+
+/// "1.30x (hip_l)", flagged "not the athlete's" above kJointLoadRiseLimit; "—" when unknown.
+std::string rise_words(const AthleteOutcome& o) {
+  if (o.joint_rise <= 0.0) return "—";
+  return format_number("%.2fx", o.joint_rise) + " (" + o.joint_rise_joint + ")" +
+         (o.joint_rise > kJointLoadRiseLimit ? ", not the athlete's" : "");
 }
 
 }  // namespace
@@ -43,15 +51,15 @@ std::string athletes_markdown(const std::vector<CaseRecord>& records) {
   out << "| athlete | mass (kg) | height (m) | take-off \\|L\\| (kg·m²/s) | avg root force before "
          "(N) | after (N) | optimisation | landing error as given (°) | optimised (°) | "
          "somersaults / twists as given | optimised | largest joint moment (N·m) | largest joint "
-         "force (% body weight) |\n"
-      << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+         "force (% body weight) | largest rise over the athlete's input |\n"
+      << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const CaseRecord& r : records) {
     const AthleteOutcome& o = r.athlete;
     const std::string name = o.athlete + (o.takeoff == "own model" ? " (own model)" : "");
     if (!r.finished()) {
       out << "| " << name << " | " << format_number("%.1f", o.mass_kg) << " | "
           << format_number("%.3f", o.height_m) << " | did not finish: " << r.failure
-          << " |||||||||\n";
+          << " ||||||||||\n";
       continue;
     }
     out << "| " << name << " | " << format_number("%.1f", o.mass_kg) << " | "
@@ -64,7 +72,8 @@ std::string athletes_markdown(const std::vector<CaseRecord>& records) {
         << turns(o.somersaults_before, o.twists_before) << " | "
         << turns(o.somersaults_after, o.twists_after) << " | "
         << format_number("%.0f", o.peak_moment_Nm) << " (" << o.peak_moment_joint << ") | "
-        << format_number("%.0f", o.peak_force_pct_bw) << " (" << o.peak_force_joint << ") |\n";
+        << format_number("%.0f", o.peak_force_pct_bw) << " (" << o.peak_force_joint << ") | "
+        << rise_words(o) << " |\n";
   }
   return out.str();
 }
@@ -75,12 +84,12 @@ std::string athletes_csv(const std::vector<CaseRecord>& records) {
          "iterations,seconds,avg_force_before_N,avg_force_after_N,max_force_after_N,"
          "landing_error_before_deg,landing_error_after_deg,somersaults_before,twists_before,"
          "somersaults_after,twists_after,peak_moment_joint,peak_moment_Nm,peak_force_joint,"
-         "peak_force_N,peak_force_pct_bw\n";
+         "peak_force_N,peak_force_pct_bw,joint_rise_joint,joint_rise\n";
   for (const CaseRecord& r : records) {
     const AthleteOutcome& o = r.athlete;
     out << o.athlete << ',' << o.takeoff << ',' << data(o.mass_kg) << ',' << data(o.height_m);
     if (!r.finished()) {
-      out << ",,,," << o.status << ",0,,,,,,,,,,,,,,,,\n";
+      out << ",,,," << o.status << ",0,,,,,,,,,,,,,,,,,,\n";
       continue;
     }
     const Eigen::Vector3d& l = o.takeoff_angular_momentum;
@@ -91,7 +100,8 @@ std::string athletes_csv(const std::vector<CaseRecord>& records) {
         << data(o.landing_error_after_deg) << ',' << data(o.somersaults_before) << ','
         << data(o.twists_before) << ',' << data(o.somersaults_after) << ',' << data(o.twists_after)
         << ',' << o.peak_moment_joint << ',' << data(o.peak_moment_Nm) << ',' << o.peak_force_joint
-        << ',' << data(o.peak_force_N) << ',' << data(o.peak_force_pct_bw) << '\n';
+        << ',' << data(o.peak_force_N) << ',' << data(o.peak_force_pct_bw) << ','
+        << o.joint_rise_joint << ',' << data(o.joint_rise) << '\n';
   }
   return out.str();
 }
@@ -130,7 +140,9 @@ nlohmann::json write_athletes_files(const std::string& dir, const std::vector<Ca
                  "sqrt(J/6) (dense check). Free flights: the joint movements flown from the "
                  "take-off, whole-body orientation at landing against the last keyframe; "
                  "somersaults (> 0 forward) and twists (> 0 to the left) by Yeadon's angles. Joint "
-                 "loads: the optimised motion's peaks.\n\n" +
+                 "loads: the optimised motion's peaks, and the largest rise of a joint's peak over "
+                 "the same athlete's interpolated input (above 1.5x the optimiser made that joint "
+                 "pay for the root force: not the athlete's load).\n\n" +
                  athletes_markdown(records));
   write_text((folder / "result.json").string(), result.dump(2) + "\n");
   return result;

@@ -170,7 +170,9 @@ nlohmann::json athlete_to_json(const AthleteOutcome& o) {
           {"peak_moment_Nm", number(o.peak_moment_Nm)},
           {"peak_force_joint", o.peak_force_joint},
           {"peak_force_N", number(o.peak_force_N)},
-          {"peak_force_pct_bw", number(o.peak_force_pct_bw)}};
+          {"peak_force_pct_bw", number(o.peak_force_pct_bw)},
+          {"joint_rise_joint", o.joint_rise_joint},
+          {"joint_rise", number(o.joint_rise)}};
 }
 
 AthleteOutcome parse_athlete(const JsonNode& node) {
@@ -201,6 +203,9 @@ AthleteOutcome parse_athlete(const JsonNode& node) {
   o.peak_force_joint = node.at("peak_force_joint").as_string();
   o.peak_force_N = read_number(node, "peak_force_N");
   o.peak_force_pct_bw = read_number(node, "peak_force_pct_bw");
+  // Case files written before the joint rise was recorded read as 0 (unknown).
+  if (const auto joint = node.find("joint_rise_joint")) o.joint_rise_joint = joint->as_string();
+  if (node.has("joint_rise")) o.joint_rise = read_number(node, "joint_rise");
   return o;
 }
 

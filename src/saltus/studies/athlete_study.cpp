@@ -69,6 +69,10 @@ AthleteOutcome run_athlete_case(const MotionFile& file, const OptimizeOptions& o
     }
   }
   o.peak_force_pct_bw = 100.0 * o.peak_force_N / body_weight_N(file.model);
+  const JointLoadRise rise =
+      largest_joint_load_rise(file.model, result.before.check, result.after.check);
+  o.joint_rise_joint = rise.joint;
+  o.joint_rise = rise.ratio();
   return o;
 }
 

@@ -3,8 +3,9 @@
 /// The athletes study (`saltus study athletes`): one motion flown by several athletes, each case
 /// one athlete. Per athlete: the motion's true residual (the dense check) before and after
 /// optimisation, the free flight of the motion as given and of the optimised motion (landing
-/// error, Yeadon's somersaults and twists), the largest joint loads of the optimised motion, and
-/// the athlete's size and take-off angular momentum. The motion on the athlete comes from
+/// error, Yeadon's somersaults and twists), the largest joint loads of the optimised motion and
+/// the largest rise of a joint's load over the athlete's own input, and the athlete's size and
+/// take-off angular momentum. The motion on the athlete comes from
 /// use_cases/athlete_models.h (load_motion_for_athlete); the files from formats/athletes_files.h.
 
 #include <Eigen/Core>
@@ -47,6 +48,12 @@ struct AthleteOutcome {
   std::string peak_force_joint;
   double peak_force_N = 0.0;
   double peak_force_pct_bw = 0.0;
+  /// The optimised motion's largest joint load rise against this athlete's own interpolated
+  /// input (largest_joint_load_rise: peak after over peak before, force or moment, whichever
+  /// rose more) and its joint: above kJointLoadRiseLimit (1.5x) the optimiser made that joint
+  /// pay for the root force on this body. 0 and "" in case files written before it.
+  std::string joint_rise_joint;
+  double joint_rise = 0.0;
 };
 
 /// The study's row for `file` (the motion already on the athlete, `file.model`): optimised with

@@ -46,6 +46,8 @@ CaseRecord athlete_record(int index, const std::string& name, double force_after
   o.peak_force_joint = "shoulder_l";
   o.peak_force_N = 300.0;
   o.peak_force_pct_bw = 80.4;
+  o.joint_rise_joint = index == 1 ? "ankle_l" : "hip_l";
+  o.joint_rise = index == 1 ? 14.375 : 1.25;
   return r;
 }
 
@@ -57,6 +59,15 @@ TEST(AthletesFiles, ARecordRoundTripsThroughItsJson) {
   EXPECT_EQ(case_record_to_json(back), case_record_to_json(r));
   EXPECT_EQ(back.athlete.takeoff_angular_momentum, r.athlete.takeoff_angular_momentum);
   EXPECT_EQ(back.athlete.peak_force_joint, "shoulder_l");
+  EXPECT_EQ(back.athlete.joint_rise_joint, "ankle_l");
+  EXPECT_DOUBLE_EQ(back.athlete.joint_rise, 14.375);
+  // A case file written before the joint rise was recorded reads as unknown (0).
+  nlohmann::json older = case_record_to_json(r);
+  older["athlete"].erase("joint_rise");
+  older["athlete"].erase("joint_rise_joint");
+  const CaseRecord old_back = parse_case_record(older, "cases/0001.json");
+  EXPECT_EQ(old_back.athlete.joint_rise, 0.0);
+  EXPECT_EQ(old_back.athlete.joint_rise_joint, "");
 }
 
 TEST(AthletesFiles, TheTablesHoldEveryRecordAndNameAFailure) {
@@ -90,7 +101,7 @@ TEST(AthletesFiles, TheTablesHoldEveryRecordAndNameAFailure) {
   ASSERT_EQ(lines.size(), 3u);
   EXPECT_EQ(lines[1].rfind("junior,same spin,39,1.55,-62.5,0.5,0.3333333333,solved,1,17,0.75,"
                            "123.456789,0.123,2.5,12.5,0.25,-0.97,0.01,-1,-0.001,hip_r,80,"
-                           "shoulder_l,300,80.4",
+                           "shoulder_l,300,80.4,ankle_l,14.375",
                            0),
             0u)
       << lines[1];
@@ -103,7 +114,9 @@ TEST(AthletesFiles, TheTablesHoldEveryRecordAndNameAFailure) {
   EXPECT_NE(md.find("| zatsiorsky-66kg (own model) |"), std::string::npos) << md;
   EXPECT_NE(md.find("| junior | 39.0 | 1.550 |"), std::string::npos) << md;
   EXPECT_NE(md.find("did not finish: killed by signal 9"), std::string::npos) << md;
-  EXPECT_NE(md.find("| 80 (hip_r) | 80 (shoulder_l) |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 80 (hip_r) | 80 (shoulder_l) | 1.25x (hip_l) |"), std::string::npos) << md;
+  // Above 1.5x the table says the load is not the athlete's.
+  EXPECT_NE(md.find("| 14.38x (ankle_l), not the athlete's |"), std::string::npos) << md;
 
   CaseRecord other = records[0];
   other.kind = CaseKind::kMassStudy;
