@@ -53,7 +53,8 @@ struct TwistSources {
 
 /// Flies the motion (its take-off angular momentum: the motion file's, or the constant that
 /// best fits its own L(t), as simulate_motion) and its counterfactuals, all with the same
-/// take-off state, the counterfactuals on as many threads as the machine has cores. Throws std::invalid_argument when the model lacks a left-right pair.
+/// take-off state, the counterfactuals on as many threads as the machine has cores. Throws
+/// std::invalid_argument when the model lacks a left-right pair.
 TwistSources twist_sources(const Motion& motion, const BodyModel& model,
                            const EvaluateOptions& options = {});
 
