@@ -94,13 +94,11 @@ TwistSources twist_sources(const Motion& motion, const BodyModel& model,
       {"right arm", {"shoulder_r", "elbow_r"}},
       {"legs", {"hip_l", "hip_r", "knee_l", "knee_r", "ankle_l", "ankle_r"}},
       {"trunk", {"lumbar", "thoracic"}}};
-  std::vector<std::string> every_joint;
   for (Movement& m : movements) {
     std::vector<std::string> present;
     for (const std::string& j : m.joints)
       if (model.joint_index(j) > 0) present.push_back(j);
     m.joints = present;
-    every_joint.insert(every_joint.end(), present.begin(), present.end());
   }
 
   TwistSources out;

@@ -100,6 +100,10 @@ TwistFolder read_twist_analysis_folder(const std::string& dir) {
   const nlohmann::json document = read_json_file(result_path);
   const JsonNode root(document, result_path);
   root.require_object();
+  if (root.at("format").as_string() != kAnalysisFormat)
+    throw InputError(
+        result_path, "/format",
+        "not \"" + std::string(kAnalysisFormat) + "\" (a format this reader does not know)");
   if (root.at("analysis").as_string() != "twist")
     throw InputError(result_path, "/analysis",
                      "not \"twist\" (not a `saltus analyse twist` folder)");

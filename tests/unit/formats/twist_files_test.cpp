@@ -129,6 +129,16 @@ TEST(TwistFiles, ABrokenFolderNamesItsFileAndField) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("/motion"), std::string::npos) << e.what();
   }
+  write_folder(dir / "d", hand_made());
+  nlohmann::json later = test::read_json(dir / "d/result.json");
+  later["format"] = "saltus-analysis/2";
+  test::write_text(dir / "d/result.json", later.dump());
+  try {
+    read_twist_analysis_folder(dir / "d");
+    ADD_FAILURE() << "read a format it does not know";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/format"), std::string::npos) << e.what();
+  }
   // Not a twist folder at all: false, so another reader can say what it is.
   test::write_text(dir / "c/result.json", "{\"analysis\": \"what-if\"}");
   EXPECT_FALSE(is_twist_analysis_folder(dir / "c"));
