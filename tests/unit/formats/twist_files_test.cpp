@@ -122,7 +122,8 @@ TEST(TwistFiles, ABrokenFolderNamesItsFileAndField) {
     EXPECT_NE(std::string(e.what()).find("actual"), std::string::npos) << e.what();
   }
   write_folder(dir / "c", hand_made());
-  test::write_text(dir / "c/result.json", "{\"analysis\": \"twist\", \"motion\": 3}");
+  test::write_text(dir / "c/result.json",
+                   "{\"format\": \"saltus-analysis/1\", \"analysis\": \"twist\", \"motion\": 3}");
   try {
     read_twist_analysis_folder(dir / "c");
     ADD_FAILURE() << "read a result.json whose motion is a number";
