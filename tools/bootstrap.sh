@@ -65,6 +65,11 @@ if [ "$mode" = demo ]; then
     echo "== saltus optimize $motion"
     build/release/bin/saltus optimize "$motion" --out "out/$name" 2>/dev/null
   done
+  stage "where the twist comes from: a take-off twist (M7) and an aerial one (the arms)"
+  for name in M7-double-front-one-and-a-half-twists full-twisting-back-somersault-from-the-arms; do
+    echo "== saltus analyse twist examples/motions/$name.motion.json"
+    build/release/bin/saltus analyse twist "examples/motions/$name.motion.json" --out "out/$name-twist"
+  done
   echo "-- $((SECONDS - stage_start)) s (total $SECONDS s)"
   exit 0
 fi
