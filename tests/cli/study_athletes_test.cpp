@@ -64,13 +64,14 @@ std::pair<std::string, double> largest_joint_peak(const nlohmann::json& result,
 /// as the CLI counts it) is largest in an optimize result.json, and that ratio.
 std::pair<std::string, double> largest_joint_rise(const nlohmann::json& result) {
   std::pair<std::string, double> largest{"", -1.0};
-  for (const auto& [joint, loads] : result.at("joint_loads").items()) {
+  for (const auto& item : result.at("joint_loads").items()) {
+    const nlohmann::json& loads = item.value();  // not a structured binding: lambdas capture it
     const auto ratio = [&](const char* key, double floor) {
       return std::max(loads.at("after").at(key).get<double>(), floor) /
              std::max(loads.at("before").at(key).get<double>(), floor);
     };
     const double rise = std::max(ratio("peak_force_N", 10.0), ratio("peak_moment_Nm", 1.0));
-    if (rise > largest.second) largest = {joint, rise};
+    if (rise > largest.second) largest = {item.key(), rise};
   }
   return largest;
 }
