@@ -244,14 +244,7 @@ MassStudyFolder parse_mass_result(const nlohmann::json& document, const std::str
 }  // namespace
 
 bool is_mass_study_folder(const std::string& dir) {
-  const std::filesystem::path result = std::filesystem::path(dir) / "result.json";
-  if (!std::filesystem::is_regular_file(result)) return false;
-  try {
-    const nlohmann::json document = read_json_file(result.string());
-    return document.is_object() && document.value("study", std::string()) == "mass";
-  } catch (const std::exception&) {
-    return false;
-  }
+  return result_json_says(dir, "study", "mass");
 }
 
 MassStudyFolder read_mass_study_folder(const std::string& dir) {

@@ -711,6 +711,17 @@ std::string output_file(const std::string& dir, const std::string& name, const s
   return path;
 }
 
+bool result_json_says(const std::string& dir, const std::string& key, const std::string& value) {
+  const std::filesystem::path result = std::filesystem::path(dir) / "result.json";
+  if (!std::filesystem::is_regular_file(result)) return false;
+  try {
+    const nlohmann::json document = read_json_file(result.string());
+    return document.is_object() && document.value(key, std::string()) == value;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
 ResultFolder read_result_folder(const std::string& dir) {
   const std::string what = "a complete saltus evaluate, simulate or optimize folder";
   ResultFolder out;

@@ -194,5 +194,8 @@ std::string folder_name(const std::string& dir);
 /// DIR/name, which must exist; throws InputError naming the folder or the file as not `what`
 /// ("a `saltus study mass` folder").
 std::string output_file(const std::string& dir, const std::string& name, const std::string& what);
+/// Whether DIR/result.json parses as an object whose string `key` is `value` ("study": "mass",
+/// "analysis": "twist"). Anything else is false, so that another reader can say what is wrong.
+bool result_json_says(const std::string& dir, const std::string& key, const std::string& value);
 
 }  // namespace saltus

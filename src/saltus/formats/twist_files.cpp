@@ -1,6 +1,5 @@
 #include "saltus/formats/twist_files.h"
 
-#include <filesystem>
 #include <sstream>
 
 #include "saltus/base/input_error.h"
@@ -81,14 +80,7 @@ std::string twist_markdown(const MotionFile& file, const TwistSources& s) {
 }
 
 bool is_twist_analysis_folder(const std::string& dir) {
-  const std::filesystem::path result = std::filesystem::path(dir) / "result.json";
-  if (!std::filesystem::is_regular_file(result)) return false;
-  try {
-    const nlohmann::json document = read_json_file(result.string());
-    return document.is_object() && document.value("analysis", std::string()) == "twist";
-  } catch (const std::exception&) {
-    return false;
-  }
+  return result_json_says(dir, "analysis", "twist");
 }
 
 TwistFolder read_twist_analysis_folder(const std::string& dir) {
