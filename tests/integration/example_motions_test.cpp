@@ -74,8 +74,9 @@ TEST(ExampleMotions, TheWholeSetIsBundled) {
 TEST_P(ExampleMotion, HasThePapersKeyframeCountAndTakeoff) {
   const MotionFile file = load_motion_file(GetParam());
   const Motion& m = file.motion;
-  if (expected_keyframes(GetParam()) >= 0)
+  if (expected_keyframes(GetParam()) >= 0) {
     EXPECT_EQ(static_cast<int>(m.keyframes.size()), expected_keyframes(GetParam()));
+  }
   ASSERT_TRUE(m.takeoff.angular_momentum.has_value()) << "the flight's take-off must be stored";
   EXPECT_DOUBLE_EQ(m.tolerances.translation_m, 0.25);
   EXPECT_DOUBLE_EQ(m.tolerances.quaternion, 0.05);

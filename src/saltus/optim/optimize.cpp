@@ -394,9 +394,8 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
         have_best = true;
       }
       const bool force_met = force <= rules.target_force;
-      if (!automatic || !out.best.solve.solved ||
-          (force_met && drift <= rules.max_landing_drift_deg) || level >= rules.max_refinements ||
-          (cancel && cancel->load()))
+      if (!automatic || (force_met && drift <= rules.max_landing_drift_deg) ||
+          level >= rules.max_refinements || (cancel && cancel->load()))
         break;
       if (level > 0 && !(force < (1.0 - rules.min_gain) * previous_force)) break;  // stopped paying
       if (!better) break;
@@ -405,12 +404,21 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       AutomaticResolution aim = rules;
       if (force_met) aim.target_force = 0.5 * force;
       if (!refine(spans, residual_per_interval(check, times), times, aim)) break;
-      // The finer level starts from this optimum, refitted onto the finer knots at its times.
-      at_start = out.best.optimized;
-      at_start.spline.reset();
-      start_trajectory = refit_trajectory(out.best.trajectory,
-                                          clamped_cubic_knots(refine_breakpoints(times, spans)));
-      solver.warm_start = true;
+      if (out.best.solve.solved) {
+        // The finer level starts from this optimum, refitted onto the finer knots at its times.
+        at_start = out.best.optimized;
+        at_start.spline.reset();
+        start_trajectory = refit_trajectory(out.best.trajectory,
+                                            clamped_cubic_knots(refine_breakpoints(times, spans)));
+        solver.warm_start = true;
+      } else {
+        // No level has converged yet (dense keyframes on one span each can leave Ipopt
+        // alternating between two points until its iteration limit): the finer knots start
+        // again from the input, the unconverged level having only said where the residual lives.
+        const std::vector<double> given = keyframe_times_of(start);
+        start_trajectory = refit_trajectory(start_evaluation.trajectory,
+                                            clamped_cubic_knots(refine_breakpoints(given, spans)));
+      }
     }
     if (have_best) {
       out.time_spreads = keyframe_time_spreads(out.best);
