@@ -36,11 +36,6 @@ std::vector<Eigen::Vector3d> unwrapped_angles(const std::vector<Eigen::Quaternio
 /// side the body faces, i.e. it is positive about the body's left axis, the root's x axis.
 double forward_somersault_sign(const Eigen::Quaterniond& world_from_root_at_takeoff);
 
-/// +1 when a positive somersault φ is a forward somersault of an athlete whose root has this
-/// orientation at take-off, −1 when it is a backward one: forward carries the head towards the
-/// side the body faces, i.e. it is positive about the body's left axis, the root's x axis.
-double forward_somersault_sign(const Eigen::Quaterniond& world_from_root_at_takeoff);
-
 /// A flight in a coach's words and its extremes.
 struct YeadonSummary {
   /// ±(φ(T) − φ(0))/2π, revolutions, signed so that > 0 is forward (forward_somersault_sign)
