@@ -5,6 +5,7 @@
 //   build/release/tests/saltus_benchmarks --benchmark_filter='ExactFlights|Bundled'
 //   build/release/tests/saltus_benchmarks --benchmark_filter=AthleteFamily
 //   build/release/tests/saltus_benchmarks --benchmark_filter=OneMotionOnTheFamily/6/   (M7 alone)
+//   build/release/tests/saltus_benchmarks --benchmark_filter=CostAgainstFlightLength
 // The smoke run in ctest leaves these out.
 
 #include <benchmark/benchmark.h>
@@ -20,6 +21,7 @@
 #include "saltus/base/text_format.h"
 #include "saltus/evaluation/joint_loads.h"
 #include "saltus/evaluation/simulate.h"
+#include "saltus/evaluation/yeadon_angles.h"
 #include "saltus/formats/model_file.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/optim/optimize.h"
@@ -133,7 +135,7 @@ BENCHMARK(BM_FamilyOfExactFlights)
     ->Iterations(1)
     ->Unit(benchmark::kSecond);
 
-/// The bundled motions, sorted by file name (M1 ... M7, then the dive).
+/// The bundled motions, sorted by file name (M1 ... M7, then the dive and the aerial full twist).
 std::vector<std::filesystem::path> bundled_motions() {
   std::vector<std::filesystem::path> motions;
   for (const auto& entry :
@@ -156,7 +158,68 @@ void BM_BundledMotion(benchmark::State& bench) {
   bench.counters["iterations"] = r.solve.iterations;
   bench.counters["solved"] = r.solve.solved;
 }
-BENCHMARK(BM_BundledMotion)->DenseRange(0, 7)->Iterations(3)->Unit(benchmark::kSecond);
+BENCHMARK(BM_BundledMotion)->DenseRange(0, 8)->Iterations(3)->Unit(benchmark::kSecond);
+
+/// Issue 24, "cost that grows no faster than the flight": default optimisation of M7 (three
+/// runs, the median kept) and of the flights of both exact families (seeds 1..N of the mixed
+/// one, first argument, and of the twisting one, second) that fly longer than M7 and somersault
+/// at least once. Counters: M7's wall time per second of flight and per somersault (Yeadon's
+/// somersaults of the optimised motion), the long flights' medians of the same, and their ratios
+/// to M7's: a ratio at most 1 means a long flight costs no more per second or per somersault.
+/// Every flight is printed on stderr, so that an expensive one names itself.
+void BM_CostAgainstFlightLength(benchmark::State& bench) {
+  const std::filesystem::path m7_path = bundled_motions().at(6);
+  const MotionFile m7 = load_motion_file(m7_path.string());
+  const BodyModel model =
+      load_body_model(std::string(SALTUS_RESOURCES_DIR) + "/models/zatsiorsky-66kg.json");
+  auto timed = [](const Motion& motion, const BodyModel& body, double& somersaults) {
+    const auto start = std::chrono::steady_clock::now();
+    const OptimizationResult r = optimize_motion(motion, body, {});
+    const double s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    somersaults = std::abs(yeadon_summary(r.after.trajectory).somersaults);
+    return s;
+  };
+  for (auto _ : bench) {
+    std::vector<double> m7_runs;
+    double m7_somersaults = 0.0;
+    for (int run = 0; run < 3; ++run)
+      m7_runs.push_back(timed(m7.motion, m7.model, m7_somersaults));
+    const double m7_s = percentile(m7_runs, 0.5);
+    const double m7_flight = m7.motion.flight_time();
+    std::vector<double> per_second, per_somersault;
+    std::fprintf(stderr, "M7: %.2f s flight, %.2f somersaults, %.2f s\n", m7_flight, m7_somersaults,
+                 m7_s);
+    auto sweep = [&](ExactFlight (*make)(const BodyModel&, std::uint64_t), int count) {
+      for (int seed = 1; seed <= count; ++seed) {
+        const ExactFlight f = make(model, static_cast<std::uint64_t>(seed));
+        const double flight = f.motion.flight_time();
+        if (flight <= m7_flight || std::abs(f.somersaults) < 1.0) continue;
+        double somersaults = 0.0;
+        const double s = timed(f.motion, model, somersaults);
+        per_second.push_back(s / flight);
+        per_somersault.push_back(s / std::max(somersaults, 1.0));
+        std::fprintf(stderr, "%s: %.2f s, %.2f s per s of flight, %.2f per somersault\n",
+                     f.description().c_str(), s, per_second.back(), per_somersault.back());
+      }
+    };
+    sweep(make_exact_flight, static_cast<int>(bench.range(0)));
+    sweep(make_twisting_flight, static_cast<int>(bench.range(1)));
+    bench.counters["m7_s"] = m7_s;
+    bench.counters["m7_s_per_flight_s"] = m7_s / m7_flight;
+    bench.counters["m7_s_per_somersault"] = m7_s / m7_somersaults;
+    bench.counters["long_flights"] = static_cast<double>(per_second.size());
+    if (per_second.empty()) continue;
+    bench.counters["long_median_s_per_flight_s"] = percentile(per_second, 0.5);
+    bench.counters["long_median_s_per_somersault"] = percentile(per_somersault, 0.5);
+    bench.counters["per_flight_s_vs_m7"] = percentile(per_second, 0.5) / (m7_s / m7_flight);
+    bench.counters["per_somersault_vs_m7"] =
+        percentile(per_somersault, 0.5) / (m7_s / m7_somersaults);
+    bench.counters["worst_per_flight_s_vs_m7"] =
+        *std::max_element(per_second.begin(), per_second.end()) / (m7_s / m7_flight);
+  }
+}
+BENCHMARK(BM_CostAgainstFlightLength)->Args({100, 40})->Iterations(1)->Unit(benchmark::kSecond);
 
 /// Issue 25, "any athlete": every bundled motion flown by every athlete of the seeded family
 /// (support/athlete_family.h: 8 of de Leva's people, 4 perturbed measured men), its take-off
