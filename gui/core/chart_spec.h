@@ -51,6 +51,9 @@ struct ChartSpec {
   /// Labels for integer x positions 0, 1, ... (bar charts); empty: numeric axis.
   std::vector<std::string> x_labels;
   bool legend = true;
+  /// The legend in a column right of the plot instead of in its top right corner: for curves
+  /// that may reach any corner (the twist figure's tilts), so that no entry hides one.
+  bool legend_beside = false;
 };
 
 /// Smallest and largest y over the lines on one axis (left: right_axis false), padded by 5 % of

@@ -42,6 +42,9 @@ ChartSpec twist_chart(const TwistSources& s) {
   chart.title = "Tilt over the flight";
   chart.x_title = "time (s)";
   chart.y_title = "tilt θ (°)";
+  // The counterfactual tilts can end in any corner (the aerial full twist's "right arm made
+  // symmetric" rose under the legend's box at 1.9 s).
+  chart.legend_beside = true;
   std::optional<LineSpec> takeoff_only;
   for (std::size_t k = 0; k < s.tilt_deg.size() && k < s.flight_names.size(); ++k) {
     LineSpec line;

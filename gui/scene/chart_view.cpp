@@ -74,7 +74,7 @@ struct ChartView::Impl {
     chart->SetZoomWithMouseWheel(false);
     chart->SetShowLegend(true);
     // Inside the plot, top right, on a pale box: short entries ("before", "after") cost a
-    // corner of the plot, not a column beside it.
+    // corner of the plot, not a column beside it (ChartSpec::legend_beside asks for the column).
     chart->GetLegend()->SetInline(true);
     chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
     chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
@@ -173,6 +173,7 @@ struct ChartView::Impl {
       plot->SetSelectable(false);
     }
     chart->SetShowLegend(spec.legend && any_legend && legend_drawn);
+    chart->GetLegend()->SetInline(!spec.legend_beside);
 
     for (vtkAxis* axis : {bottom, left_axis, right_axis})
       axis->SetBehavior(vtkAxis::FIXED);
