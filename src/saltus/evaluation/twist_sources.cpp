@@ -202,7 +202,7 @@ TwistSources twist_sources(const Motion& motion, const BodyModel& model,
                       std::abs(out.total_tilt_deg));
   } else {
     out.sentence =
-        format_number("Of the %.0f° of tilt at mid-flight, ", std::abs(out.total_tilt_deg));
+        format_number("Of the %.1f° of tilt at mid-flight, ", std::abs(out.total_tilt_deg));
     bool first = true;
     for (const TwistShare& s : ordered) {
       if (s.percent < 5.0) continue;

@@ -47,7 +47,8 @@ struct TwistSources {
   std::vector<double> times;
   std::vector<std::string> flight_names;
   std::vector<std::vector<double>> tilt_deg;
-  /// "Of the 24° of tilt at mid-flight, 70 % came from the right arm, 28 % from the take-off."
+  /// "Of the 24.2° of tilt at mid-flight, 70 % came from the right arm, 28 % from the take-off."
+  /// (the tilt to a tenth of a degree, as the app's panel and the CLI's table give it)
   std::string sentence;
 };
 
