@@ -394,8 +394,13 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
         have_best = true;
       }
       const bool force_met = force <= rules.target_force;
-      if (!automatic || (force_met && drift <= rules.max_landing_drift_deg) ||
-          level >= rules.max_refinements || (cancel && cancel->load()))
+      // An unconverged level is refined only under the default iteration limit or a larger one:
+      // a smaller --max-iter (0: the input evaluated as it is) asks for that many iterations.
+      const bool refine_unconverged =
+          options.solver.max_iterations >= SolverOptions{}.max_iterations;
+      if (!automatic || (!out.best.solve.solved && !refine_unconverged) ||
+          (force_met && drift <= rules.max_landing_drift_deg) || level >= rules.max_refinements ||
+          (cancel && cancel->load()))
         break;
       if (level > 0 && !(force < (1.0 - rules.min_gain) * previous_force)) break;  // stopped paying
       if (!better) break;
