@@ -198,10 +198,11 @@ TEST(AthleteFamily, OnALightAthleteThePolishSkipsBoundedTriesAfterOneLandsFarOff
 }
 
 /// M6 on the 2.0 m, 120 kg man: the polish's bounded tries at the root moment weighed 100 and
-/// 300 times land 3.0-5.2 deg off (the 3 deg bar); the fourth step, 1000 times, lands within it.
-/// What is returned keeps every joint within 1.5x of the peak his own interpolated input needs
-/// there (without that step no try was kept and his left ankle stayed at 14x), lands within
-/// 3 deg by a free flight run here, at most 0.5 N.
+/// 300 times landed 3.0-5.2 deg off (the 3 deg bar), and the fourth step, 1000 times, was the
+/// first within it; since the end spans have six nodes the third step (300 times) is. What is
+/// returned keeps every joint within 1.5x of the peak his own interpolated input needs there
+/// (without those steps no try was kept and his left ankle stayed at 14x), lands within 3 deg
+/// by a free flight run here, at most 0.5 N.
 TEST(AthleteFamily, ATwistOnTheHeaviestManKeepsHisJointsNearWhatHisInputNeeds) {
   const FamilyMember& man = family()[1];
   ASSERT_EQ(man.model.name, "family-1");
@@ -215,7 +216,7 @@ TEST(AthleteFamily, ATwistOnTheHeaviestManKeepsHisJointsNearWhatHisInputNeeds) {
   ASSERT_GE(polish.attempts, 1);
   ASSERT_LE(polish.attempts, kPolishAttempts);
   EXPECT_EQ(polish.root_moment_weight, kPolishTries[polish.attempts - 1].root_moment_weight);
-  EXPECT_GT(polish.root_moment_weight, 3.0 * kPolishRootMomentWeight) << "the ladder's 4th step";
+  EXPECT_GE(polish.root_moment_weight, 3.0 * kPolishRootMomentWeight) << "a later bounded step";
   EXPECT_LE(largest_joint_load_rise(file.model, result.before.check, result.after.check).ratio(),
             1.5);
   expect_lands_near_zero(result, file.model);

@@ -23,6 +23,10 @@ class JointBoundBlock : public ConstraintBlock {
  public:
   /// Where on each knot span (ξ) the loads are bounded.
   static constexpr std::array<double, 2> kNodeFractions = {0.0, 0.5};
+  /// ... and on the first and last spans, where the clamped spline's ends let a joint's load
+  /// rise between two nodes: on the exact flights the loads that passed the bound peaked
+  /// 0.01-0.11 s after take-off, between the first span's nodes (docs/optimizer.md).
+  static constexpr int kEndSpanNodes = 6;
 
   /// @param moment_bounds  b_j for each non-root joint in model order, N·m (each > 0)
   /// @param force_bounds   c_j likewise, N; empty: the forces are free

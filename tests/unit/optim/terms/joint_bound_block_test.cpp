@@ -46,14 +46,23 @@ TEST(JointBoundBlock, RowsAreEachJointsLoadAgainstItsBoundOnTheTrajectory) {
   std::vector<double> g(block.rows());
   block.values(at, g.data());
 
-  // The nodes written out: the block's fractions of every span of the current knots, then the
-  // end.
+  // The nodes written out: the block's fractions of every span of the current knots (its end
+  // spans' finer ones on the first and the last), then the end.
   const Trajectory<double> trajectory = trajectory_from(layout, p.nlp->reference(), p.x.data());
   const std::vector<double>& knots = trajectory.knots;
   std::vector<double> times;
-  for (int span = 3; span < layout.control_count(); ++span)
-    for (const double xi : JointBoundBlock::kNodeFractions)
+  const int last_span = layout.control_count() - 1;
+  for (int span = 3; span <= last_span; ++span) {
+    std::vector<double> fractions(JointBoundBlock::kNodeFractions.begin(),
+                                  JointBoundBlock::kNodeFractions.end());
+    if (span == 3 || span == last_span) {
+      fractions.clear();
+      for (int k = 0; k < JointBoundBlock::kEndSpanNodes; ++k)
+        fractions.push_back(static_cast<double>(k) / JointBoundBlock::kEndSpanNodes);
+    }
+    for (const double xi : fractions)
       times.push_back(knots[span] + xi * (knots[span + 1] - knots[span]));
+  }
   times.push_back(knots[layout.control_count()]);
   ASSERT_EQ(static_cast<int>(times.size()) * 2 * joints, block.rows());
   const std::vector<SampleRecord> samples = evaluate_trajectory(p.model, trajectory, times);
