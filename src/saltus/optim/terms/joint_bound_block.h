@@ -9,7 +9,8 @@
 /// still rose to 2-3 times the input's (docs/optimizer.md, "Joint bounds").
 ///
 /// A row is |n_j|²/b_j² <= 1 (smooth, unlike |n_j|), then |f_j|²/c_j² <= 1; nodes at
-/// kNodeFractions of every span and the last span's end, moving with the knots. Their Gauss–Newton
+/// kNodeFractions of every span (kEndSpanNodes evenly on the first and the last) and the last
+/// span's end, moving with the knots. Their Gauss–Newton
 /// curvature joins the Hessian, as the keyframe rows' does.
 
 #include <array>
