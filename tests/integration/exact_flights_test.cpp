@@ -93,6 +93,18 @@ TEST(ExactFlightFamily, DisturbedKeyframeTimesComeBack) {
   EXPECT_GE(cut_sum / flights, 0.7) << "mean cut of the total timing error";
 }
 
+/// Default optimisation of an exact flight, held to the bars every flight of these tests meets:
+/// solved, at most 0.5 N, every joint within 1.5x of its input's peak. The result, for each
+/// test's own checks.
+OptimizationResult optimised_to_issue_24s_bars(const ExactFlight& f, const BodyModel& model) {
+  const OptimizationResult r = optimize_motion(f.motion, model, {});
+  EXPECT_TRUE(r.solve.solved) << r.solve.status;
+  EXPECT_LE(r.after.metrics.avg_root_force, 0.5);
+  const JointLoadRise rise = largest_joint_load_rise(model, r.before.check, r.after.check);
+  EXPECT_LE(rise.ratio(), 1.5) << joint_load_rise_words(rise, body_weight_N(model));
+  return r;
+}
+
 // The polish bounds the joints' loads at nodes of each knot span; on these three flights the
 // loads rose between the first span's nodes (1.65x, 1.88x, 2.89x at 0.01-0.03 s after take-off)
 // or, with nodes added on the first span alone, at the landing; the end spans now have six each.
@@ -101,11 +113,7 @@ TEST(ExactFlightFamily, JointLoadsStayWithinTheBarAtTheEndsOfTheFlight) {
   for (std::uint64_t seed : {23, 58, 71}) {
     const ExactFlight f = make_exact_flight(model, seed);
     SCOPED_TRACE(f.description());
-    const OptimizationResult r = optimize_motion(f.motion, model, {});
-    EXPECT_TRUE(r.solve.solved) << r.solve.status;
-    EXPECT_LE(r.after.metrics.avg_root_force, 0.5);
-    const JointLoadRise rise = largest_joint_load_rise(model, r.before.check, r.after.check);
-    EXPECT_LE(rise.ratio(), 1.5) << joint_load_rise_words(rise, body_weight_N(model));
+    optimised_to_issue_24s_bars(f, model);
   }
 }
 
@@ -119,20 +127,16 @@ TEST(TwistingExactFlights, EachIsFoundNearZeroAtItsOwnTimesWithHumanJoints) {
   for (std::uint64_t seed : {4, 8, 32}) {
     const ExactFlight f = make_twisting_flight(model, seed);
     SCOPED_TRACE(f.description());
-    const OptimizationResult r = optimize_motion(f.motion, model, {});
-    const double force = r.after.metrics.avg_root_force;
+    const OptimizationResult r = optimised_to_issue_24s_bars(f, model);
     std::printf("%s: %s, %zu levels (first: %s), %.2f -> %.3f N\n", f.description().c_str(),
                 r.solve.status.c_str(), r.levels.size(), r.levels.front().status.c_str(),
-                r.before.metrics.avg_root_force, force);
-    EXPECT_TRUE(r.solve.solved) << r.solve.status;
-    EXPECT_LE(force, 0.5);
+                r.before.metrics.avg_root_force, r.after.metrics.avg_root_force);
     EXPECT_TRUE(optimizer_agrees_with_check(r));
     EXPECT_LE(simulate_motion(r.optimized_motion, model).landing_vs_motion_deg, 3.0);
     for (std::size_t i = 1; i + 1 < f.motion.keyframes.size(); ++i)
       EXPECT_LE(std::abs(r.after.keyframe_times[i] - f.motion.keyframes[i].time),
                 r.keyframe_time_spreads[i] + 0.01)
           << "keyframe " << i;
-    EXPECT_LE(largest_joint_load_rise(model, r.before.check, r.after.check).ratio(), 1.5);
     if (seed == 32) {
       EXPECT_GE(r.levels.size(), 2u);
     }

@@ -322,6 +322,9 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
     std::optional<JointLoadPolish> polish;  // least joint effort's, when it ran
   };
   const std::vector<int> first_level = subdivisions;
+  // An unconverged level is refined only under the default iteration limit or a larger one: a
+  // smaller --max-iter (0: the input evaluated as it is) asks for that many iterations.
+  const bool refine_unconverged = options.solver.max_iterations >= SolverOptions{}.max_iterations;
   auto run_levels = [&](double root_moment_weight) {
     MotionNlpOptions level_options = nlp_options;
     level_options.root_moment_weight = root_moment_weight;
@@ -394,10 +397,6 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
         have_best = true;
       }
       const bool force_met = force <= rules.target_force;
-      // An unconverged level is refined only under the default iteration limit or a larger one:
-      // a smaller --max-iter (0: the input evaluated as it is) asks for that many iterations.
-      const bool refine_unconverged =
-          options.solver.max_iterations >= SolverOptions{}.max_iterations;
       if (!automatic || (!out.best.solve.solved && !refine_unconverged) ||
           (force_met && drift <= rules.max_landing_drift_deg) || level >= rules.max_refinements ||
           (cancel && cancel->load()))

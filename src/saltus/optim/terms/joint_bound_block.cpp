@@ -22,15 +22,9 @@ JointBoundBlock::JointBoundBlock(const TrajectoryLayout& layout, std::vector<dou
     if (!(limit.bound > 0)) throw std::invalid_argument("joint bounds must be positive");
 
   const int last_span = layout.control_count() - 1;
-  for (int span = 3; span <= last_span; ++span) {
-    if (span == 3 || span == last_span) {
-      for (int k = 0; k < kEndSpanNodes; ++k)
-        nodes_.push_back({span, static_cast<double>(k) / kEndSpanNodes});
-    } else {
-      for (const double xi : kNodeFractions)
-        nodes_.push_back({span, xi});
-    }
-  }
+  for (int span = 3; span <= last_span; ++span)
+    for (const double xi : node_fractions(span == 3 || span == last_span))
+      nodes_.push_back({span, xi});
   nodes_.push_back({last_span, 1.0});
   std::vector<int> time_variables;
   for (int i = 0; i < layout.keyframe_count; ++i)
@@ -46,6 +40,14 @@ JointBoundBlock::JointBoundBlock(const TrajectoryLayout& layout, std::vector<dou
   }
   loads_.resize(nodes_.size());
   jacobians_.resize(nodes_.size());
+}
+
+std::vector<double> JointBoundBlock::node_fractions(bool end_span) {
+  if (!end_span) return {kNodeFractions.begin(), kNodeFractions.end()};
+  std::vector<double> fractions;
+  for (int k = 0; k < kEndSpanNodes; ++k)
+    fractions.push_back(static_cast<double>(k) / kEndSpanNodes);
+  return fractions;
 }
 
 void JointBoundBlock::bounds(double* lower, double* upper) const {

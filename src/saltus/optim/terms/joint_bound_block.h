@@ -28,6 +28,8 @@ class JointBoundBlock : public ConstraintBlock {
   /// rise between two nodes: on the exact flights the loads that passed the bound peaked
   /// 0.01-0.11 s after take-off, between the first span's nodes (docs/optimizer.md).
   static constexpr int kEndSpanNodes = 6;
+  /// The nodes' ξ on one span: kNodeFractions, or kEndSpanNodes evenly from 0 on an end span.
+  static std::vector<double> node_fractions(bool end_span);
 
   /// @param moment_bounds  b_j for each non-root joint in model order, N·m (each > 0)
   /// @param force_bounds   c_j likewise, N; empty: the forces are free

@@ -52,17 +52,9 @@ TEST(JointBoundBlock, RowsAreEachJointsLoadAgainstItsBoundOnTheTrajectory) {
   const std::vector<double>& knots = trajectory.knots;
   std::vector<double> times;
   const int last_span = layout.control_count() - 1;
-  for (int span = 3; span <= last_span; ++span) {
-    std::vector<double> fractions(JointBoundBlock::kNodeFractions.begin(),
-                                  JointBoundBlock::kNodeFractions.end());
-    if (span == 3 || span == last_span) {
-      fractions.clear();
-      for (int k = 0; k < JointBoundBlock::kEndSpanNodes; ++k)
-        fractions.push_back(static_cast<double>(k) / JointBoundBlock::kEndSpanNodes);
-    }
-    for (const double xi : fractions)
+  for (int span = 3; span <= last_span; ++span)
+    for (const double xi : JointBoundBlock::node_fractions(span == 3 || span == last_span))
       times.push_back(knots[span] + xi * (knots[span + 1] - knots[span]));
-  }
   times.push_back(knots[layout.control_count()]);
   ASSERT_EQ(static_cast<int>(times.size()) * 2 * joints, block.rows());
   const std::vector<SampleRecord> samples = evaluate_trajectory(p.model, trajectory, times);
