@@ -19,6 +19,14 @@ JointWrenchStateJacobian::JointWrenchStateJacobian(const BodyModel& model)
       velocity_change(model.size()),
       acceleration_change(model.size()) {}
 
+bool joint_wrench_depends_on(const BodyModel& model, int joint, int segment) {
+  for (int k = segment; k >= 0; k = model.segments[k].parent)
+    if (k == joint) return true;
+  for (int a = model.segments[joint].parent; a >= 0; a = model.segments[a].parent)
+    if (a == segment) return true;
+  return false;
+}
+
 void joint_wrench_state_jacobian(const BodyModel& model, const DynamicsData<double>& data,
                                  const BodyState<double>& state,
                                  const RootWrenchStateJacobian& sweep,

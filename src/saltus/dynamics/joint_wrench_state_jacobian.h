@@ -42,6 +42,11 @@ struct JointWrenchStateJacobian {
   std::vector<Eigen::Matrix<double, 6, 15>> velocity_change, acceleration_change;
 };
 
+/// Whether segment k's state can move joint j's wrench: k is j, below j (in its subtree) or above
+/// it (an ancestor, the root among them). `touches` is set nowhere else; the joint bounds declare
+/// only these columns (optim/terms/joint_bound_block.h).
+bool joint_wrench_depends_on(const BodyModel& model, int joint, int segment);
+
 /// Fills `out` for the state whose inverse dynamics is in `data` and whose root-wrench sweep is
 /// in `sweep` (root_wrench_state_jacobian on the same state).
 void joint_wrench_state_jacobian(const BodyModel& model, const DynamicsData<double>& data,

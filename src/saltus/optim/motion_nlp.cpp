@@ -117,8 +117,8 @@ MotionNlp::MotionNlp(const Motion& motion, const BodyModel& model,
   if (layout_.optimize_timing)
     owned_blocks_.push_back(std::make_unique<TimeOrderBlock>(layout_, time_gap_));
   if (!options.joint_moment_bounds.empty())
-    owned_blocks_.push_back(std::make_unique<JointBoundBlock>(layout_, options.joint_moment_bounds,
-                                                              options.joint_force_bounds));
+    owned_blocks_.push_back(std::make_unique<JointBoundBlock>(
+        model, layout_, options.joint_moment_bounds, options.joint_force_bounds));
   if (!relaxed) {
     // A sample's span can change when the times move: its row covers every span it can reach
     // within the time bounds (exactly one span when timing is fixed).

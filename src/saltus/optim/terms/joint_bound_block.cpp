@@ -3,11 +3,13 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "saltus/dynamics/joint_wrench_state_jacobian.h"
 #include "saltus/optim/nlp.h"
 
 namespace saltus {
 
-JointBoundBlock::JointBoundBlock(const TrajectoryLayout& layout, std::vector<double> moment_bounds,
+JointBoundBlock::JointBoundBlock(const BodyModel& model, const TrajectoryLayout& layout,
+                                 std::vector<double> moment_bounds,
                                  std::vector<double> force_bounds) {
   const std::size_t joints = static_cast<std::size_t>(layout.segment_count - 1);
   if (moment_bounds.size() != joints || (!force_bounds.empty() && force_bounds.size() != joints))
@@ -29,15 +31,24 @@ JointBoundBlock::JointBoundBlock(const TrajectoryLayout& layout, std::vector<dou
   std::vector<int> time_variables;
   for (int i = 0; i < layout.keyframe_count; ++i)
     if (layout.time_variable(i) >= 0) time_variables.push_back(layout.time_variable(i));
-  for (const Node& node : nodes_) {
-    std::vector<int> columns;
-    for (int v = layout.control_variable(0, node.span - 3, 0);
-         v < layout.control_variable(0, node.span + 1, 0); ++v)
-      columns.push_back(v);
-    columns.insert(columns.end(), time_variables.begin(), time_variables.end());
-    for (std::size_t l = 0; l < limits_.size(); ++l)
-      sparsity_.push_back(columns);
+  // Joint j's columns on four controls: the root translation (curve 0) and segment k's curve
+  // (k + 1) where k moves j's load.
+  std::vector<std::vector<int>> curves(joints);
+  for (std::size_t j = 0; j < joints; ++j) {
+    curves[j].push_back(0);
+    for (int k = 0; k < layout.segment_count; ++k)
+      if (joint_wrench_depends_on(model, static_cast<int>(j) + 1, k)) curves[j].push_back(k + 1);
   }
+  for (const Node& node : nodes_)
+    for (const Limit& limit : limits_) {
+      std::vector<int> columns;
+      for (int control = node.span - 3; control <= node.span; ++control)
+        for (const int curve : curves[limit.first_row / rows_per_joint_])
+          for (int dim = 0; dim < 3; ++dim)
+            columns.push_back(layout.control_variable(curve, control, dim));
+      columns.insert(columns.end(), time_variables.begin(), time_variables.end());
+      sparsity_.push_back(columns);
+    }
   loads_.resize(nodes_.size());
   jacobians_.resize(nodes_.size());
 }

@@ -10,12 +10,16 @@
 ///
 /// A row is |n_j|²/b_j² <= 1 (smooth, unlike |n_j|), then |f_j|²/c_j² <= 1; nodes at
 /// kNodeFractions of every span (kEndSpanNodes evenly on the first and the last) and the last
-/// span's end, moving with the knots. Their Gauss–Newton
-/// curvature joins the Hessian, as the keyframe rows' does.
+/// span's end, moving with the knots. A row's columns are the root translation's and those of the
+/// segments that move that joint's load (joint_wrench_depends_on: the joint's ancestors and its
+/// subtree), not the whole body's: a wrist's row leaves the legs out, which keeps the KKT system
+/// the solver factors sparse. Their Gauss–Newton curvature joins the Hessian, as the keyframe
+/// rows' does.
 
 #include <array>
 #include <vector>
 
+#include "saltus/body/body_model.h"
 #include "saltus/optim/terms/constraint_block.h"
 
 namespace saltus {
@@ -33,8 +37,8 @@ class JointBoundBlock : public ConstraintBlock {
 
   /// @param moment_bounds  b_j for each non-root joint in model order, N·m (each > 0)
   /// @param force_bounds   c_j likewise, N; empty: the forces are free
-  JointBoundBlock(const TrajectoryLayout& layout, std::vector<double> moment_bounds,
-                  std::vector<double> force_bounds = {});
+  JointBoundBlock(const BodyModel& model, const TrajectoryLayout& layout,
+                  std::vector<double> moment_bounds, std::vector<double> force_bounds = {});
 
   std::string name() const override { return "joint bounds"; }
   int rows() const override { return static_cast<int>(nodes_.size() * limits_.size()); }

@@ -27,9 +27,9 @@ std::vector<double> bounds_from(int joints, double first, double step) {
 TEST(JointBoundBlock, JacobianMatchesFiniteDifferencesAndItsSparsity) {
   test::RandomPoint p(Formulation::kRelaxed);
   const int joints = p.model.size() - 1;
-  JointBoundBlock moments(p.nlp->layout(), bounds_from(joints, 2.0, 0.5));
+  JointBoundBlock moments(p.model, p.nlp->layout(), bounds_from(joints, 2.0, 0.5));
   test::check_block(p, moments, p.x);
-  JointBoundBlock both(p.nlp->layout(), bounds_from(joints, 2.0, 0.5),
+  JointBoundBlock both(p.model, p.nlp->layout(), bounds_from(joints, 2.0, 0.5),
                        bounds_from(joints, 30.0, 7.0));
   test::check_block(p, both, p.x);
 }
@@ -40,7 +40,7 @@ TEST(JointBoundBlock, RowsAreEachJointsLoadAgainstItsBoundOnTheTrajectory) {
   const int joints = p.model.size() - 1;
   const std::vector<double> moment_bounds = bounds_from(joints, 2.0, 0.5);
   const std::vector<double> force_bounds = bounds_from(joints, 30.0, 7.0);
-  JointBoundBlock block(layout, moment_bounds, force_bounds);
+  JointBoundBlock block(p.model, layout, moment_bounds, force_bounds);
   NlpEvaluations& at = p.nlp->evaluations();
   at.load(p.x.data());
   std::vector<double> g(block.rows());
@@ -77,13 +77,13 @@ TEST(JointBoundBlock, RowsAreEachJointsLoadAgainstItsBoundOnTheTrajectory) {
 TEST(JointBoundBlock, RefusesABoundPerJointMissingOrNotPositive) {
   test::RandomPoint p(Formulation::kRelaxed);
   const int joints = p.model.size() - 1;
-  EXPECT_THROW(JointBoundBlock(p.nlp->layout(), bounds_from(joints - 1, 2.0, 0.5)),
+  EXPECT_THROW(JointBoundBlock(p.model, p.nlp->layout(), bounds_from(joints - 1, 2.0, 0.5)),
                std::invalid_argument);
-  EXPECT_THROW(JointBoundBlock(p.nlp->layout(), bounds_from(joints, 0.0, 0.5)),
+  EXPECT_THROW(JointBoundBlock(p.model, p.nlp->layout(), bounds_from(joints, 0.0, 0.5)),
                std::invalid_argument);
-  EXPECT_THROW(
-      JointBoundBlock(p.nlp->layout(), bounds_from(joints, 2.0, 0.5), bounds_from(2, 30.0, 7.0)),
-      std::invalid_argument);
+  EXPECT_THROW(JointBoundBlock(p.model, p.nlp->layout(), bounds_from(joints, 2.0, 0.5),
+                               bounds_from(2, 30.0, 7.0)),
+               std::invalid_argument);
 }
 
 }  // namespace
