@@ -84,6 +84,22 @@ TEST(JointWrenchStateJacobian, MatchesCentralDifferencesForEveryJointAndState) {
   }
 }
 
+// What the joint bounds declare as a row's columns (joint_wrench_depends_on) is what the sweep
+// fills; the test above shows every other column is zero. A knee's load leaves the arms out.
+TEST(JointWrenchStateJacobian, TouchesTheJointsAncestorsAndSubtreeOnly) {
+  const BodyModel model = test::bundled_model();
+  const int n = model.size();
+  const Sweeps sweeps(model, test::random_body_state(n, 4));
+  int left_out = 0;
+  for (int j = 0; j < n; ++j)
+    for (int k = 0; k < n; ++k) {
+      EXPECT_EQ(sweeps.joints.touches[j * n + k] != 0, joint_wrench_depends_on(model, j, k))
+          << "joint " << model.segments[j].joint << ", segment " << model.segments[k].name;
+      left_out += !joint_wrench_depends_on(model, j, k);
+    }
+  EXPECT_GT(left_out, n * n / 3) << "most joints depend on a part of the body only";
+}
+
 TEST(JointWrenchStateJacobian, RootRowIsTheRootWrench) {
   const BodyModel model = test::bundled_model();
   const Sweeps sweeps(model, test::random_body_state(model.size(), 5));

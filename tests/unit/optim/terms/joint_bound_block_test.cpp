@@ -1,5 +1,6 @@
 // Human joints as constraints (optim/terms/joint_bound_block.h): the Jacobian against central
-// finite differences with its sparsity (support/term_checks.h), with and without the forces, and
+// finite differences with its sparsity (support/term_checks.h), with and without the forces, the
+// columns a row declares (only the segments that move its joint), and
 // the rows (each load's square against its bound's) against the joints' moments and forces of
 // inverse dynamics evaluated on the trajectory directly (no derivative code).
 
@@ -7,9 +8,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
+#include "saltus/dynamics/joint_wrench_state_jacobian.h"
 #include "saltus/evaluation/sampling.h"
 #include "support/term_checks.h"
 
@@ -32,6 +35,36 @@ TEST(JointBoundBlock, JacobianMatchesFiniteDifferencesAndItsSparsity) {
   JointBoundBlock both(p.model, p.nlp->layout(), bounds_from(joints, 2.0, 0.5),
                        bounds_from(joints, 30.0, 7.0));
   test::check_block(p, both, p.x);
+}
+
+// A row declares the root translation's columns and those of the segments that move its joint
+// (the test above shows the Jacobian is zero outside them); a knee's row leaves the arms out.
+TEST(JointBoundBlock, ARowListsOnlyTheSegmentsThatMoveItsJoint) {
+  test::RandomPoint p(Formulation::kRelaxed);
+  const TrajectoryLayout& layout = p.nlp->layout();
+  const int joints = p.model.size() - 1;
+  JointBoundBlock block(p.model, layout, bounds_from(joints, 2.0, 0.5),
+                        bounds_from(joints, 30.0, 7.0));
+  const std::vector<std::vector<int>> sparsity = block.sparsity();
+  int narrower = 0;
+  for (std::size_t row = 0; row < sparsity.size(); ++row) {
+    const int joint = static_cast<int>(row % (2 * joints)) / 2 + 1;
+    std::vector<int> curves;
+    for (const int column : sparsity[row]) {
+      if (column >= layout.control_variable_count()) continue;  // a keyframe time
+      const int curve = column % layout.curve_block() / 3;
+      EXPECT_TRUE(curve == 0 || joint_wrench_depends_on(p.model, joint, curve - 1))
+          << "row " << row << " (joint " << p.model.segments[joint].joint << ") lists segment "
+          << p.model.segments[curve - 1].name;
+      if (std::find(curves.begin(), curves.end(), curve) == curves.end()) curves.push_back(curve);
+    }
+    int expected = 1;
+    for (int k = 0; k < p.model.size(); ++k)
+      expected += joint_wrench_depends_on(p.model, joint, k);
+    EXPECT_EQ(static_cast<int>(curves.size()), expected) << "row " << row;
+    narrower += expected < layout.curve_count();
+  }
+  EXPECT_GT(narrower, static_cast<int>(sparsity.size()) / 2);
 }
 
 TEST(JointBoundBlock, RowsAreEachJointsLoadAgainstItsBoundOnTheTrajectory) {
