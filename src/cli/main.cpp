@@ -314,7 +314,15 @@ int run_optimize(const CommonArgs& args) {
                                : "",
           polish->avg_root_force_before, polish->avg_root_force_after,
           polish->landing_drift_before_deg, polish->landing_drift_after_deg,
-          polish->kept ? "kept" : ("not kept (" + polish->status + ")").c_str());
+          !polish->kept ? ("not kept (" + polish->status + ")").c_str()
+          : polish->avg_root_force_after > saltus::kPolishMaxRootForce &&
+                  polish->avg_root_force_after > polish->avg_root_force_before
+              ? saltus::format_number(
+                    "kept (a joint before it carried %.3gx its input peak: a bounded polish may "
+                    "then keep more root force)",
+                    polish->joint_rise_before)
+                    .c_str()
+              : "kept");
     }
     if (result.landing_drift_deg)
       std::printf(

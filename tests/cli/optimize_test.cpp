@@ -171,17 +171,6 @@ TEST(CliOptimize, ReportedResidualIsTheMotionsOnAFarFinerGrid) {
 // Peaks are the dense check's, read from result.json; ratios floored as joint_loads.h does.
 TEST(CliOptimize, JointLoadsStayNearTheInputsWithLeastJointEffort) {
   test::TempDir dir;
-  auto largest_rise = [](const nlohmann::json& result) {
-    double worst = 0.0;
-    for (const auto& [joint, loads] : result["joint_loads"].items()) {
-      const double floors[2] = {kJointForceFloorN, kJointMomentFloorNm};
-      const char* keys[2] = {"peak_force_N", "peak_moment_Nm"};
-      for (int k = 0; k < 2; ++k)
-        worst = std::max(worst, std::max(loads["after"][keys[k]].get<double>(), floors[k]) /
-                                    std::max(loads["before"][keys[k]].get<double>(), floors[k]));
-    }
-    return worst;
-  };
   const std::string motions = std::string(SALTUS_EXAMPLES_DIR) + "/motions/";
   // The bar, 1.5x at every joint, moment and force, on the dense check's points: the
   // polish bounds them at 1.3x on its nodes.
@@ -205,7 +194,7 @@ TEST(CliOptimize, JointLoadsStayNearTheInputsWithLeastJointEffort) {
     EXPECT_TRUE(last.joints_bounded);
     EXPECT_EQ(polish["root_moment_weight"].get<double>(), last.root_moment_weight);
     EXPECT_LE(result["after"]["avg_root_force"].get<double>(), 0.5);
-    EXPECT_LE(largest_rise(result), 1.5);
+    EXPECT_LE(test::largest_joint_rise(result), 1.5);
   }
   const auto without =
       test::run_cli("optimize " + motions + "M2-tucked-back-somersault.motion.json --out " +
@@ -213,7 +202,7 @@ TEST(CliOptimize, JointLoadsStayNearTheInputsWithLeastJointEffort) {
   ASSERT_EQ(without.status, 0) << without.output;
   const auto bare = read_json(dir / "without/result.json");
   EXPECT_FALSE(bare["resolution"].contains("joint_load_polish"));
-  EXPECT_GE(largest_rise(bare), 5.0);
+  EXPECT_GE(test::largest_joint_rise(bare), 5.0);
   // The CLI names the joint and says what such a rise means.
   EXPECT_NE(without.output.find("(more than 1.5x): the optimiser made it pay for the root force"),
             std::string::npos)

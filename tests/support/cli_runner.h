@@ -3,6 +3,7 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -12,6 +13,8 @@
 #include <random>
 #include <set>
 #include <string>
+
+#include "saltus/evaluation/joint_loads.h"
 
 namespace saltus::test {
 
@@ -74,6 +77,21 @@ inline void write_text(const std::string& path, const std::string& text) {
 inline nlohmann::json read_json(const std::string& path) {
   std::ifstream in(path);
   return nlohmann::json::parse(in);
+}
+
+/// The largest rise of a joint's peak moment or force over its peak before, read from an
+/// `optimize` result.json's joint_loads, each peak at least its floor (evaluation/joint_loads.h's
+/// rule): issue 24's bar is 1.5.
+inline double largest_joint_rise(const nlohmann::json& result) {
+  double worst = 0.0;
+  for (const auto& [joint, loads] : result["joint_loads"].items()) {
+    const double floors[2] = {kJointForceFloorN, kJointMomentFloorNm};
+    const char* keys[2] = {"peak_force_N", "peak_moment_Nm"};
+    for (int k = 0; k < 2; ++k)
+      worst = std::max(worst, std::max(loads["after"][keys[k]].get<double>(), floors[k]) /
+                                  std::max(loads["before"][keys[k]].get<double>(), floors[k]));
+  }
+  return worst;
 }
 
 /// The names of the entries of `folder`, hidden ones included.

@@ -141,6 +141,7 @@ nlohmann::json resolution_json(const ResultJson::Optimization::Resolution& resol
                               {"avg_root_force_after", p->avg_root_force_after},
                               {"landing_drift_before_deg", p->landing_drift_before_deg},
                               {"landing_drift_after_deg", p->landing_drift_after_deg},
+                              {"joint_rise_before", p->joint_rise_before},
                               {"iterations", p->iterations},
                               {"status", p->status},
                               {"kept", p->kept}};
@@ -326,6 +327,7 @@ ResultJson::Optimization::Resolution read_resolution(const JsonNode& node) {
       p.landing_drift_before_deg = d->as_double();
     if (const auto d = polish->find("landing_drift_after_deg"))
       p.landing_drift_after_deg = d->as_double();
+    if (const auto r = polish->find("joint_rise_before")) p.joint_rise_before = r->as_double();
     p.iterations = polish->at("iterations").as_int();
     p.status = polish->at("status").as_string();
     p.kept = read_bool(polish->at("kept"));

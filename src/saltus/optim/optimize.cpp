@@ -452,6 +452,9 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
     JointLoadPolish& p = pass.polish.emplace();
     p.avg_root_force_before = pass.force;
     p.landing_drift_before_deg = pass.flown->drift_deg;
+    p.joint_rise_before =
+        largest_joint_load_rise(model, result.before.check, pass.flown->evaluation.check).ratio();
+    const bool joints_pay = p.joint_rise_before > kJointLoadRiseLimit;
     bool bounded_tries_hopeless = false;
     for (int step = 0; step < kPolishAttempts; ++step) {
       const PolishTry& attempt = kPolishTries[step];
@@ -479,7 +482,9 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       p.iterations += polished.solve.iterations;
       p.status = polished.solve.status;
       p.kept = polished.solve.solved &&
-               root_force_within_limit(p.avg_root_force_after, p.avg_root_force_before) &&
+               (root_force_within_limit(p.avg_root_force_after, p.avg_root_force_before) ||
+                (attempt.joints_bounded && joints_pay &&
+                 p.avg_root_force_after <= kPolishMaxRootForceOverPayingJoints)) &&
                (p.landing_drift_after_deg <= rules.max_landing_drift_deg ||
                 p.landing_drift_after_deg <= p.landing_drift_before_deg);
       if (attempt.joints_bounded && !p.kept &&
