@@ -317,10 +317,11 @@ int run_optimize(const CommonArgs& args) {
           !polish->kept ? ("not kept (" + polish->status + ")").c_str()
           : polish->avg_root_force_after > saltus::kPolishMaxRootForce &&
                   polish->avg_root_force_after > polish->avg_root_force_before
-              ? saltus::format_number(
-                    "kept (a joint before it carried %.3gx its input peak: a bounded polish may "
-                    "then keep more root force)",
-                    polish->joint_rise_before)
+              ? (saltus::format_number(
+                     "kept (no try held the root force; the motion before it loaded a joint at "
+                     "%.3gx its input peak, so a bounded try is kept up to ",
+                     polish->joint_rise_before) +
+                 saltus::format_number("%.3g N)", saltus::kPolishMaxRootForceOverPayingJoints))
                     .c_str()
               : "kept");
     }

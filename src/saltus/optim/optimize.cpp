@@ -455,6 +455,25 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
     p.joint_rise_before =
         largest_joint_load_rise(model, result.before.check, pass.flown->evaluation.check).ratio();
     const bool joints_pay = p.joint_rise_before > kJointLoadRiseLimit;
+    // What a try reports in `p`: its step, settings, root force, landing and status.
+    auto record = [&](int step, const Solved& solved, const Flown& flown) {
+      const PolishTry& attempt = kPolishTries[step];
+      p.weight = attempt.weight_factor * joint_load_weight;
+      p.root_moment_weight = attempt.root_moment_weight;
+      p.joint_bound = attempt.joints_bounded ? kPolishJointBound : 0.0;
+      p.attempts = step + 1;
+      p.avg_root_force_after = flown.evaluation.metrics.avg_root_force;
+      p.landing_drift_after_deg = flown.drift_deg;
+      p.status = solved.solve.status;
+    };
+    // The bounded try kept when no try meets the limits and the motion before makes a joint pay
+    // (kPolishMaxRootForceOverPayingJoints): the one with the least root force.
+    struct Fallback {
+      int step = 0;
+      Solved solved;
+      Flown flown;
+    };
+    std::optional<Fallback> fallback;
     bool bounded_tries_hopeless = false;
     for (int step = 0; step < kPolishAttempts; ++step) {
       const PolishTry& attempt = kPolishTries[step];
@@ -473,20 +492,12 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
                                     polish_options, polish_solver, counted, cancel);
       count(polished.solve);
       Flown polished_flown = fly(polished.optimized, model, options.nlp.samples);
-      p.weight = polish_options.joint_load_weight;
-      p.root_moment_weight = attempt.root_moment_weight;
-      p.joint_bound = attempt.joints_bounded ? kPolishJointBound : 0.0;
-      p.attempts = step + 1;
-      p.avg_root_force_after = polished_flown.evaluation.metrics.avg_root_force;
-      p.landing_drift_after_deg = polished_flown.drift_deg;
+      record(step, polished, polished_flown);
       p.iterations += polished.solve.iterations;
-      p.status = polished.solve.status;
+      const bool lands = p.landing_drift_after_deg <= rules.max_landing_drift_deg ||
+                         p.landing_drift_after_deg <= p.landing_drift_before_deg;
       p.kept = polished.solve.solved &&
-               (root_force_within_limit(p.avg_root_force_after, p.avg_root_force_before) ||
-                (attempt.joints_bounded && joints_pay &&
-                 p.avg_root_force_after <= kPolishMaxRootForceOverPayingJoints)) &&
-               (p.landing_drift_after_deg <= rules.max_landing_drift_deg ||
-                p.landing_drift_after_deg <= p.landing_drift_before_deg);
+               root_force_within_limit(p.avg_root_force_after, p.avg_root_force_before) && lands;
       if (attempt.joints_bounded && !p.kept &&
           p.landing_drift_after_deg >
               std::max(kPolishHopelessDriftFactor * rules.max_landing_drift_deg,
@@ -495,7 +506,18 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       if (p.kept) {
         pass.best = std::move(polished);
         pass.flown = std::move(polished_flown);
+      } else if (attempt.joints_bounded && joints_pay && polished.solve.solved && lands &&
+                 p.avg_root_force_after <= kPolishMaxRootForceOverPayingJoints &&
+                 (!fallback ||
+                  p.avg_root_force_after < fallback->flown.evaluation.metrics.avg_root_force)) {
+        fallback = Fallback{step, std::move(polished), std::move(polished_flown)};
       }
+    }
+    if (!p.kept && fallback) {
+      record(fallback->step, fallback->solved, fallback->flown);
+      p.kept = true;
+      pass.best = std::move(fallback->solved);
+      pass.flown = std::move(fallback->flown);
     }
   };
 

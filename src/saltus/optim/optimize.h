@@ -107,12 +107,13 @@ double largest_control_turn(const Trajectory<double>& trajectory, int first_segm
 /// N: the least-joint-effort polish may trade root force for joint loads up to this average
 /// root force (a flight's true residual is held to it: docs/optimizer.md, "Joint loads").
 inline constexpr double kPolishMaxRootForce = 0.5;
-/// N: the limit for a bounded try when the motion it would replace makes a joint pay for the
-/// root force (its largest joint rise against the input past kJointLoadRiseLimit). 0.34 N bought
-/// with an elbow at 190 times its input (the imported MASS backflip's levels) is not a motion a
-/// biomechanist can use; its bounded try's 0.53 N with every joint within its bound is. The
-/// unbounded try holds no joint, so it keeps kPolishMaxRootForce (docs/optimizer.md, "Joint
-/// loads").
+/// N: when no polish try meets kPolishMaxRootForce (or the levels' force) and the motion the
+/// polish started from makes a joint pay for the root force (its largest joint rise against the
+/// input past kJointLoadRiseLimit), the bounded try with the least root force up to this one is
+/// kept, if it solved and lands as a kept try must. 0.34 N bought with an elbow at 190 times its
+/// input (the imported MASS backflip's levels) is not a motion a biomechanist can use; its
+/// bounded try's 0.53 N with every joint within its bound is. Only then: a flight whose
+/// unbounded try holds 0.5 N keeps it (docs/optimizer.md, "Joint loads bought by the levels").
 inline constexpr double kPolishMaxRootForceOverPayingJoints = 1.0;
 /// Iterations a polish try may take: kept tries take 20-80; one that has not converged by then
 /// is not going to be kept, and each iteration costs several of a level's (the joint bounds).
@@ -165,10 +166,11 @@ inline constexpr double kPolishJointBound = 1.3;
 
 /// Least joint effort (MotionNlpOptions::joint_load_weight > 0): a last solve at the keyframe
 /// times the levels found, with the joint loads in the objective; kept when it solved with an
-/// average root force within kPolishMaxRootForce, or no larger than before (a bounded try over a
-/// motion whose joints pay: within kPolishMaxRootForceOverPayingJoints), and its free flight
+/// average root force within kPolishMaxRootForce, or no larger than before, and its free flight
 /// lands within AutomaticResolution::max_landing_drift_deg of it, or no farther than before;
-/// otherwise tried again as kPolishTries say. The figures are the last try's.
+/// otherwise tried again as kPolishTries say, and when none is kept, a bounded try over a motion
+/// whose joints pay may be (kPolishMaxRootForceOverPayingJoints). The figures are the kept
+/// try's, or the last try's.
 struct JointLoadPolish {
   double weight = 0.0;  ///< the last try's joint-load weight, N²/(N·m)²
   /// The last try's MotionNlpOptions::root_moment_weight.
@@ -185,8 +187,8 @@ struct JointLoadPolish {
   double landing_drift_before_deg = 0.0;  ///< see OptimizationResult::landing_drift_deg
   double landing_drift_after_deg = 0.0;
   /// The largest joint rise of the motion the polish started from against the input's peaks
-  /// (evaluation/joint_loads.h); past kJointLoadRiseLimit a bounded try may keep up to
-  /// kPolishMaxRootForceOverPayingJoints of root force.
+  /// (evaluation/joint_loads.h); past kJointLoadRiseLimit, when no try is kept, a bounded one
+  /// within kPolishMaxRootForceOverPayingJoints may be.
   double joint_rise_before = 1.0;
   int iterations = 0;  ///< over every try
   std::string status;
