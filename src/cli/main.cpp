@@ -315,8 +315,8 @@ int run_optimize(const CommonArgs& args) {
           polish->avg_root_force_before, polish->avg_root_force_after,
           polish->landing_drift_before_deg, polish->landing_drift_after_deg,
           !polish->kept ? ("not kept (" + polish->status + ")").c_str()
-          : polish->avg_root_force_after > saltus::kPolishMaxRootForce &&
-                  polish->avg_root_force_after > polish->avg_root_force_before
+          : !saltus::root_force_within_limit(polish->avg_root_force_after,
+                                             polish->avg_root_force_before)
               ? (saltus::format_number(
                      "kept (no try held the root force; the motion before it loaded a joint at "
                      "%.3gx its input peak, so a bounded try is kept up to ",

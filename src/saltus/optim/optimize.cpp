@@ -210,13 +210,6 @@ std::vector<double> joint_load_scales(const DenseCheck& input) {
   return peaks;
 }
 
-/// Whether a solve that trades root force for something else (the polish for joint loads, the
-/// second pass for the landing) may keep its motion: its average root force `after` (N) is
-/// within kPolishMaxRootForce or no larger than the motion it replaces (`before`).
-bool root_force_within_limit(double after, double before) {
-  return after <= kPolishMaxRootForce || after <= before;
-}
-
 /// The polish's bounds on each joint's moment and force: kPolishJointBound times the smaller of
 /// two interpolations' peaks there, the paper's (`input`, knots at the keyframes) and the
 /// optimiser's starting point (`start`, its finer knots, which often needs less: M2's right hip

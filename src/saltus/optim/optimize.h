@@ -115,6 +115,14 @@ inline constexpr double kPolishMaxRootForce = 0.5;
 /// bounded try's 0.53 N with every joint within its bound is. Only then: a flight whose
 /// unbounded try holds 0.5 N keeps it (docs/optimizer.md, "Joint loads bought by the levels").
 inline constexpr double kPolishMaxRootForceOverPayingJoints = 1.0;
+
+/// Whether a solve that trades root force for something else (the polish for joint loads, the
+/// second pass for the landing) may keep its motion: its average root force `after` (N) is
+/// within kPolishMaxRootForce or no larger than the motion it replaces (`before`). A kept polish
+/// that fails it was kept over paying joints (kPolishMaxRootForceOverPayingJoints).
+inline bool root_force_within_limit(double after, double before) {
+  return after <= kPolishMaxRootForce || after <= before;
+}
 /// Iterations a polish try may take: kept tries take 20-80; one that has not converged by then
 /// is not going to be kept, and each iteration costs several of a level's (the joint bounds).
 inline constexpr int kPolishMaxIterations = 150;
