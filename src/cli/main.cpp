@@ -294,16 +294,17 @@ int run_optimize(const CommonArgs& args) {
           result.knots_per_interval, options.nlp.knots_per_interval);
     }
     if (const auto& polish = result.joint_load_polish) {
-      char bound[96] = "joints not bounded";
+      std::string bound = "joints not bounded";
       if (polish->joint_bound > 0)
-        std::snprintf(bound, sizeof bound,
-                      "each joint's moment and force within %.2gx its peak before",
-                      polish->joint_bound);
+        bound = saltus::format_number("each joint's moment and force within %.2gx its peak before",
+                                      polish->joint_bound);
+      if (polish->bounds_tightened) bound += ", then lower where a load rose past it between nodes";
+      if (polish->knots_refined) bound += ", on finer knots";
       std::printf(
           "  least joint effort at these times (weight %.3g, root moment weighed %.3gx, %s%s): "
           "%.3g N -> %.3g N average root force, free flight landing %.1f -> %.1f deg from the "
           "motion, %s\n",
-          polish->weight, polish->root_moment_weight, bound,
+          polish->weight, polish->root_moment_weight, bound.c_str(),
           polish->attempts > 1 ? (", try " + std::to_string(polish->attempts) + " of " +
                                   std::to_string(saltus::kPolishAttempts) +
                                   (polish->bounded_tries_skipped > 0

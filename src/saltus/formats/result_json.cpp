@@ -142,6 +142,8 @@ nlohmann::json resolution_json(const ResultJson::Optimization::Resolution& resol
                               {"landing_drift_before_deg", p->landing_drift_before_deg},
                               {"landing_drift_after_deg", p->landing_drift_after_deg},
                               {"joint_rise_before", p->joint_rise_before},
+                              {"bounds_tightened", p->bounds_tightened},
+                              {"knots_refined", p->knots_refined},
                               {"iterations", p->iterations},
                               {"status", p->status},
                               {"kept", p->kept}};
@@ -328,6 +330,8 @@ ResultJson::Optimization::Resolution read_resolution(const JsonNode& node) {
     if (const auto d = polish->find("landing_drift_after_deg"))
       p.landing_drift_after_deg = d->as_double();
     if (const auto r = polish->find("joint_rise_before")) p.joint_rise_before = r->as_double();
+    if (const auto t = polish->find("bounds_tightened")) p.bounds_tightened = read_bool(*t);
+    if (const auto k = polish->find("knots_refined")) p.knots_refined = read_bool(*k);
     p.iterations = polish->at("iterations").as_int();
     p.status = polish->at("status").as_string();
     p.kept = read_bool(polish->at("kept"));

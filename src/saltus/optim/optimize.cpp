@@ -226,6 +226,20 @@ void set_joint_bounds(const DenseCheck& input, const DenseCheck& start, MotionNl
   }
 }
 
+/// A bounded try's bounds lowered where its dense check found a joint's load past them (a load
+/// rises between the nodes that bound it): each such bound divided by that overshoot, so that the
+/// dense peak of a solve again sits near the bound rather than the nodes' peak.
+void tighten_joint_bounds(const DenseCheck& solved, MotionNlpOptions& options) {
+  for (std::size_t j = 1; j < solved.joint_peaks.size() && j <= options.joint_moment_bounds.size();
+       ++j) {
+    double& moment = options.joint_moment_bounds[j - 1];
+    moment *= std::min(1.0, moment / std::max(solved.joint_peaks[j].moment_Nm, 1e-12));
+    if (j > options.joint_force_bounds.size()) continue;
+    double& force = options.joint_force_bounds[j - 1];
+    force *= std::min(1.0, force / std::max(solved.joint_peaks[j].force_N, 1e-12));
+  }
+}
+
 }  // namespace
 
 OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
@@ -459,6 +473,14 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       p.landing_drift_after_deg = flown.drift_deg;
       p.status = solved.solve.status;
     };
+    // Whether a try lands as a kept one must, and its largest joint rise over the input's peaks.
+    auto lands = [&](const Flown& flown) {
+      return flown.drift_deg <= rules.max_landing_drift_deg ||
+             flown.drift_deg <= p.landing_drift_before_deg;
+    };
+    auto joint_rise = [&](const Flown& flown) {
+      return largest_joint_load_rise(model, result.before.check, flown.evaluation.check).ratio();
+    };
     // The bounded try kept when no try meets the limits and the motion before makes a joint pay
     // (kPolishMaxRootForceOverPayingJoints): the one with the least root force.
     struct Fallback {
@@ -467,10 +489,57 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       Flown flown;
     };
     std::optional<Fallback> fallback;
+    // The bounded try that solved and landed with the least root force past the limit: its
+    // knots may be too coarse for a motion whose joints keep to the input's loads.
+    struct OverLimit {
+      int step = 0;
+      Motion optimized;
+      Trajectory<double> trajectory;
+      DenseCheck check;
+      double force = 0.0;
+    };
+    std::optional<OverLimit> over_limit;
     bool bounded_tries_hopeless = false;
     for (int step = 0; step < kPolishAttempts; ++step) {
       const PolishTry& attempt = kPolishTries[step];
       if (p.kept || (cancel && cancel->load())) break;
+      if (!attempt.joints_bounded && joints_pay && over_limit) {
+        // Before the joints go unbounded over a motion that made them pay: that bounded try
+        // again on finer knots (refined where its residual lives, as a level is), kept as any.
+        const std::vector<double> times = keyframe_times_of(over_limit->optimized);
+        std::vector<int> spans = pass.subdivisions;
+        if (refine(spans, residual_per_interval(over_limit->check, times), times, rules)) {
+          const PolishTry& bounded = kPolishTries[over_limit->step];
+          MotionNlpOptions refined_options = polish_options;
+          refined_options.subdivisions = spans;
+          refined_options.joint_load_weight = bounded.weight_factor * joint_load_weight;
+          refined_options.root_moment_weight = bounded.root_moment_weight;
+          refined_options.joint_moment_bounds.clear();
+          refined_options.joint_force_bounds.clear();
+          set_joint_bounds(result.before.check, start_evaluation.check, refined_options);
+          Motion at_start = over_limit->optimized;
+          at_start.spline.reset();
+          Solved refined =
+              solve_level(motion, at_start, model,
+                          refit_trajectory(over_limit->trajectory,
+                                           clamped_cubic_knots(refine_breakpoints(times, spans))),
+                          refined_options, polish_solver, counted, cancel);
+          count(refined.solve);
+          p.iterations += refined.solve.iterations;
+          Flown refined_flown = fly(refined.optimized, model, options.nlp.samples);
+          record(over_limit->step, refined, refined_flown);
+          p.kept = refined.solve.solved &&
+                   root_force_within_limit(p.avg_root_force_after, p.avg_root_force_before) &&
+                   lands(refined_flown);
+          if (p.kept) {
+            p.knots_refined = true;
+            pass.subdivisions = spans;
+            pass.best = std::move(refined);
+            pass.flown = std::move(refined_flown);
+            break;
+          }
+        }
+      }
       if (attempt.joints_bounded && bounded_tries_hopeless) {
         ++p.bounded_tries_skipped;
         continue;
@@ -487,19 +556,44 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       Flown polished_flown = fly(polished.optimized, model, options.nlp.samples);
       record(step, polished, polished_flown);
       p.iterations += polished.solve.iterations;
-      const bool lands = p.landing_drift_after_deg <= rules.max_landing_drift_deg ||
-                         p.landing_drift_after_deg <= p.landing_drift_before_deg;
+      const bool landed = lands(polished_flown);
       p.kept = polished.solve.solved &&
-               root_force_within_limit(p.avg_root_force_after, p.avg_root_force_before) && lands;
+               root_force_within_limit(p.avg_root_force_after, p.avg_root_force_before) && landed;
       if (attempt.joints_bounded && !p.kept &&
           p.landing_drift_after_deg >
               std::max(kPolishHopelessDriftFactor * rules.max_landing_drift_deg,
                        p.landing_drift_before_deg))
         bounded_tries_hopeless = true;
+      const double rise = p.kept && attempt.joints_bounded ? joint_rise(polished_flown) : 0.0;
+      if (rise > kJointLoadRiseLimit && !(cancel && cancel->load())) {
+        // Kept, but a joint's load rose past the bar between the nodes that bound it: solved
+        // once more from it with those bounds lowered, and that kept if it holds as this did
+        // with a smaller rise.
+        MotionNlpOptions tightened = polish_options;
+        tighten_joint_bounds(polished_flown.evaluation.check, tightened);
+        Solved again = solve_level(motion, polished.optimized, model, polished.trajectory,
+                                   tightened, polish_solver, counted, cancel);
+        count(again.solve);
+        p.iterations += again.solve.iterations;
+        Flown again_flown = fly(again.optimized, model, options.nlp.samples);
+        if (again.solve.solved &&
+            root_force_within_limit(again_flown.evaluation.metrics.avg_root_force,
+                                    p.avg_root_force_before) &&
+            lands(again_flown) && joint_rise(again_flown) < rise) {
+          record(step, again, again_flown);
+          p.bounds_tightened = true;
+          polished = std::move(again);
+          polished_flown = std::move(again_flown);
+        }
+      }
+      if (attempt.joints_bounded && !p.kept && polished.solve.solved && landed &&
+          (!over_limit || p.avg_root_force_after < over_limit->force))
+        over_limit = OverLimit{step, polished.optimized, polished.trajectory,
+                               polished_flown.evaluation.check, p.avg_root_force_after};
       if (p.kept) {
         pass.best = std::move(polished);
         pass.flown = std::move(polished_flown);
-      } else if (attempt.joints_bounded && joints_pay && polished.solve.solved && lands &&
+      } else if (attempt.joints_bounded && joints_pay && polished.solve.solved && landed &&
                  p.avg_root_force_after <= kPolishMaxRootForceOverPayingJoints &&
                  (!fallback ||
                   p.avg_root_force_after < fallback->flown.evaluation.metrics.avg_root_force)) {

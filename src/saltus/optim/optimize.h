@@ -198,6 +198,12 @@ struct JointLoadPolish {
   /// (evaluation/joint_loads.h); past kJointLoadRiseLimit, when no try is kept, a bounded one
   /// within kPolishMaxRootForceOverPayingJoints may be.
   double joint_rise_before = 1.0;
+  /// The kept bounded try was solved once more with the bounds of the joints its dense check
+  /// found past them (a load rises between nodes) lowered by that overshoot, and that solve kept.
+  bool bounds_tightened = false;
+  /// No bounded try held the root force over a motion whose joints paid: the best that solved
+  /// and landed was solved again on finer knots (refined where its residual lives), and kept.
+  bool knots_refined = false;
   int iterations = 0;  ///< over every try
   std::string status;
   bool kept = false;

@@ -67,13 +67,14 @@ auto fields(const ResultJson::Optimization::Resolution& r) {
   for (const OptimizationResult::Level& l : r.levels)
     levels.push_back(fields(l));
   std::optional<std::tuple<double, double, double, int, int, double, double, double, double, double,
-                           int, std::string, bool>>
+                           bool, bool, int, std::string, bool>>
       polish;
   if (const auto& p = r.joint_load_polish)
-    polish = std::make_tuple(
-        p->weight, p->root_moment_weight, p->joint_bound, p->attempts, p->bounded_tries_skipped,
-        p->avg_root_force_before, p->avg_root_force_after, p->landing_drift_before_deg,
-        p->landing_drift_after_deg, p->joint_rise_before, p->iterations, p->status, p->kept);
+    polish = std::make_tuple(p->weight, p->root_moment_weight, p->joint_bound, p->attempts,
+                             p->bounded_tries_skipped, p->avg_root_force_before,
+                             p->avg_root_force_after, p->landing_drift_before_deg,
+                             p->landing_drift_after_deg, p->joint_rise_before, p->bounds_tightened,
+                             p->knots_refined, p->iterations, p->status, p->kept);
   return std::make_tuple(r.automatic, r.subdivisions, r.knots, levels, polish, r.landing_drift_deg);
 }
 auto fields(const ResultJson::Optimization& o) {
@@ -252,10 +253,10 @@ ResultJson random_result(ResultJson::Kind kind, std::mt19937& rng) {
       resolution.levels.push_back({resolution.subdivisions, positive(rng), positive(rng),
                                    count(rng), rng() % 2 ? "solved" : "acceptable", positive(rng)});
     if (rng() % 2)
-      resolution.joint_load_polish =
-          JointLoadPolish{positive(rng), positive(rng), positive(rng), count(rng),    count(rng),
-                          positive(rng), positive(rng), positive(rng), positive(rng), positive(rng),
-                          count(rng),    "solved",      rng() % 2 == 0};
+      resolution.joint_load_polish = JointLoadPolish{
+          positive(rng),  positive(rng),  positive(rng), count(rng),    count(rng),
+          positive(rng),  positive(rng),  positive(rng), positive(rng), positive(rng),
+          rng() % 2 == 0, rng() % 2 == 0, count(rng),    "solved",      rng() % 2 == 0};
     if (rng() % 2) resolution.landing_drift_deg = positive(rng);
     o.resolution = resolution;
     r.optimization = o;
