@@ -119,7 +119,7 @@ TEST(ExactFlightFamily, JointLoadsStayWithinTheBarAtTheEndsOfTheFlight) {
 }
 
 // Two ways the polish's bounded try fell short of the joint bar, each on the flight that showed
-// it. Seed 72 (a pike without a somersault, whose times the levels moved by up to 0.16 s at one
+// it. Seed 72 (a pike without a somersault, whose times the levels moved by up to 0.19 s at one
 // or two knot spans an interval) had no bounded try hold 0.5 N (0.78 N) and kept the unbounded
 // one with its right knee at 3.46x: the best bounded try is solved again on finer knots. Seed
 // 38's kept bounded try had its left elbow at 1.51x between two bounded nodes: it is solved
