@@ -177,8 +177,9 @@ inline constexpr double kPolishJointBound = 1.3;
 /// average root force within kPolishMaxRootForce, or no larger than before, and its free flight
 /// lands within AutomaticResolution::max_landing_drift_deg of it, or no farther than before;
 /// otherwise tried again as kPolishTries say, and when none is kept, a bounded try over a motion
-/// whose joints pay may be (kPolishMaxRootForceOverPayingJoints). The figures are the kept
-/// try's, or the last try's.
+/// whose joints pay may be (kPolishMaxRootForceOverPayingJoints). A bounded try that falls short
+/// of the joint bar is solved once more (bounds_tightened, knots_refined). The figures are the
+/// kept try's, or the last try's.
 struct JointLoadPolish {
   double weight = 0.0;  ///< the last try's joint-load weight, N²/(N·m)²
   /// The last try's MotionNlpOptions::root_moment_weight.
