@@ -182,7 +182,8 @@ TEST(AthleteFamily, ATwistThatFliesOffIsMadeAgainWeighingTheRootMoment) {
 /// M6 on the same girl with least joint effort: the polish's first bounded try lands 120-143 deg
 /// off, farther than the motion it would replace, so its other bounded steps are skipped and it
 /// goes on to the unbounded one (kPolishHopelessDriftFactor). What is returned still lands
-/// within 3 deg.
+/// within 3 deg, and says what human joints would have cost: a bounded try that holds the root
+/// force and every joint within 1.5x, whose free flight lands far from it.
 TEST(AthleteFamily, OnALightAthleteThePolishSkipsBoundedTriesAfterOneLandsFarOff) {
   const FamilyMember& girl = family()[2];
   ASSERT_EQ(girl.model.name, "family-2");
@@ -195,6 +196,10 @@ TEST(AthleteFamily, OnALightAthleteThePolishSkipsBoundedTriesAfterOneLandsFarOff
   EXPECT_EQ(polish.attempts, kPolishAttempts);
   EXPECT_EQ(polish.joint_bound, 0.0) << "the last step is the unbounded one";
   expect_lands_near_zero(result, file.model);
+  ASSERT_TRUE(polish.bounded_alternative);
+  EXPECT_GT(polish.bounded_alternative->landing_drift_deg, 15.0);
+  EXPECT_LE(polish.bounded_alternative->avg_root_force, 0.5);
+  EXPECT_LE(polish.bounded_alternative->joint_rise, 1.5);
 }
 
 /// M6 on the 2.0 m, 120 kg man: the polish's bounded tries at the root moment weighed 100 and

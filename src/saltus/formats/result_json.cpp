@@ -131,7 +131,7 @@ nlohmann::json resolution_json(const ResultJson::Optimization::Resolution& resol
                       {"knots", resolution.knots},
                       {"levels", levels}};
   if (resolution.landing_drift_deg) j["landing_drift_deg"] = *resolution.landing_drift_deg;
-  if (const auto& p = resolution.joint_load_polish)
+  if (const auto& p = resolution.joint_load_polish) {
     j["joint_load_polish"] = {{"weight", p->weight},
                               {"root_moment_weight", p->root_moment_weight},
                               {"joint_bound", p->joint_bound},
@@ -147,6 +147,11 @@ nlohmann::json resolution_json(const ResultJson::Optimization::Resolution& resol
                               {"iterations", p->iterations},
                               {"status", p->status},
                               {"kept", p->kept}};
+    if (const auto& b = p->bounded_alternative)
+      j["joint_load_polish"]["bounded_alternative"] = {{"landing_drift_deg", b->landing_drift_deg},
+                                                       {"avg_root_force", b->avg_root_force},
+                                                       {"joint_rise", b->joint_rise}};
+  }
   return j;
 }
 
@@ -332,6 +337,12 @@ ResultJson::Optimization::Resolution read_resolution(const JsonNode& node) {
     if (const auto r = polish->find("joint_rise_before")) p.joint_rise_before = r->as_double();
     if (const auto t = polish->find("bounds_tightened")) p.bounds_tightened = read_bool(*t);
     if (const auto k = polish->find("knots_refined")) p.knots_refined = read_bool(*k);
+    if (const auto b = polish->find("bounded_alternative")) {
+      b->require_object();
+      p.bounded_alternative = JointLoadPolish::BoundedAlternative{
+          b->at("landing_drift_deg").as_double(), b->at("avg_root_force").as_double(),
+          b->at("joint_rise").as_double()};
+    }
     p.iterations = polish->at("iterations").as_int();
     p.status = polish->at("status").as_string();
     p.kept = read_bool(polish->at("kept"));

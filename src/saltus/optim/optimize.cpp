@@ -499,6 +499,8 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       double force = 0.0;
     };
     std::optional<OverLimit> over_limit;
+    // JointLoadPolish::bounded_alternative, among the bounded tries that solved.
+    std::optional<JointLoadPolish::BoundedAlternative> closest_bounded;
     bool bounded_tries_hopeless = false;
     for (int step = 0; step < kPolishAttempts; ++step) {
       const PolishTry& attempt = kPolishTries[step];
@@ -557,6 +559,10 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       record(step, polished, polished_flown);
       p.iterations += polished.solve.iterations;
       const bool landed = lands(polished_flown);
+      if (attempt.joints_bounded && polished.solve.solved &&
+          (!closest_bounded || polished_flown.drift_deg < closest_bounded->landing_drift_deg))
+        closest_bounded = JointLoadPolish::BoundedAlternative{
+            polished_flown.drift_deg, p.avg_root_force_after, joint_rise(polished_flown)};
       p.kept = polished.solve.solved &&
                root_force_within_limit(p.avg_root_force_after, p.avg_root_force_before) && landed;
       if (attempt.joints_bounded && !p.kept &&
@@ -606,6 +612,7 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       pass.best = std::move(fallback->solved);
       pass.flown = std::move(fallback->flown);
     }
+    if (!(p.kept && p.joint_bound > 0)) p.bounded_alternative = closest_bounded;
   };
 
   Levels levels = run_levels(nlp_options.root_moment_weight);

@@ -205,6 +205,15 @@ struct JointLoadPolish {
   /// No bounded try held the root force over a motion whose joints paid: the best that solved
   /// and landed was solved again on finer knots (refined where its residual lives), and kept.
   bool knots_refined = false;
+  /// When the motion returned is not a bounded try's: the bounded try that solved and whose free
+  /// flight landed closest to it. On an athlete the keyframes were not made for, it says what
+  /// human joints cost: such a motion holds the root force but flies far from its keyframes.
+  struct BoundedAlternative {
+    double landing_drift_deg = 0.0;  ///< its free flight against it at landing
+    double avg_root_force = 0.0;     ///< N, dense check
+    double joint_rise = 1.0;         ///< its largest joint rise over the input's peaks
+  };
+  std::optional<BoundedAlternative> bounded_alternative;
   int iterations = 0;  ///< over every try
   std::string status;
   bool kept = false;

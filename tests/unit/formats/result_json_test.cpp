@@ -66,15 +66,21 @@ auto fields(const ResultJson::Optimization::Resolution& r) {
   std::vector<decltype(fields(r.levels.front()))> levels;
   for (const OptimizationResult::Level& l : r.levels)
     levels.push_back(fields(l));
-  std::optional<std::tuple<double, double, double, int, int, double, double, double, double, double,
-                           bool, bool, int, std::string, bool>>
+  std::optional<
+      std::tuple<double, double, double, int, int, double, double, double, double, double, bool,
+                 bool, int, std::string, bool, std::optional<std::tuple<double, double, double>>>>
       polish;
   if (const auto& p = r.joint_load_polish)
-    polish = std::make_tuple(p->weight, p->root_moment_weight, p->joint_bound, p->attempts,
-                             p->bounded_tries_skipped, p->avg_root_force_before,
-                             p->avg_root_force_after, p->landing_drift_before_deg,
-                             p->landing_drift_after_deg, p->joint_rise_before, p->bounds_tightened,
-                             p->knots_refined, p->iterations, p->status, p->kept);
+    polish = std::make_tuple(
+        p->weight, p->root_moment_weight, p->joint_bound, p->attempts, p->bounded_tries_skipped,
+        p->avg_root_force_before, p->avg_root_force_after, p->landing_drift_before_deg,
+        p->landing_drift_after_deg, p->joint_rise_before, p->bounds_tightened, p->knots_refined,
+        p->iterations, p->status, p->kept,
+        p->bounded_alternative
+            ? std::optional(std::make_tuple(p->bounded_alternative->landing_drift_deg,
+                                            p->bounded_alternative->avg_root_force,
+                                            p->bounded_alternative->joint_rise))
+            : std::nullopt);
   return std::make_tuple(r.automatic, r.subdivisions, r.knots, levels, polish, r.landing_drift_deg);
 }
 auto fields(const ResultJson::Optimization& o) {
@@ -253,10 +259,14 @@ ResultJson random_result(ResultJson::Kind kind, std::mt19937& rng) {
       resolution.levels.push_back({resolution.subdivisions, positive(rng), positive(rng),
                                    count(rng), rng() % 2 ? "solved" : "acceptable", positive(rng)});
     if (rng() % 2)
-      resolution.joint_load_polish = JointLoadPolish{
-          positive(rng),  positive(rng),  positive(rng), count(rng),    count(rng),
-          positive(rng),  positive(rng),  positive(rng), positive(rng), positive(rng),
-          rng() % 2 == 0, rng() % 2 == 0, count(rng),    "solved",      rng() % 2 == 0};
+      resolution.joint_load_polish =
+          JointLoadPolish{positive(rng), positive(rng), positive(rng),  count(rng),
+                          count(rng),    positive(rng), positive(rng),  positive(rng),
+                          positive(rng), positive(rng), rng() % 2 == 0, rng() % 2 == 0,
+                          std::nullopt,  count(rng),    "solved",       rng() % 2 == 0};
+    if (resolution.joint_load_polish && rng() % 2)
+      resolution.joint_load_polish->bounded_alternative =
+          JointLoadPolish::BoundedAlternative{positive(rng), positive(rng), positive(rng)};
     if (rng() % 2) resolution.landing_drift_deg = positive(rng);
     o.resolution = resolution;
     r.optimization = o;
