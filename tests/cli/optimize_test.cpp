@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "saltus/base/constants.h"
+#include "saltus/base/text_format.h"
 #include "saltus/evaluation/joint_loads.h"
 #include "saltus/formats/trajectory_csv.h"
 #include "saltus/optim/optimize.h"
@@ -279,22 +280,25 @@ TEST(CliOptimize, TheOptimisedMotionFliesAsShown) {
   }
 }
 
+/// `optimize` of M6 on a 1.29 m, 37 kg girl made by `model new` in `dir`, with `options`.
+test::CliRun optimise_m6_on_a_light_girl(const test::TempDir& dir, const std::string& options) {
+  const std::string model = dir / "girl.model.json";
+  const test::CliRun made =
+      test::run_cli("model new --height 1.29 --mass 37 --sex female --name girl --out " + model);
+  if (made.status != 0) return made;
+  return test::run_cli("optimize " + std::string(SALTUS_EXAMPLES_DIR) +
+                       "/motions/M6-half-twist-into-one-and-a-half-front.motion.json --model " +
+                       model + " " + options);
+}
+
 /// A twist that flies off on a light athlete (M6 on a 1.29 m, 37 kg girl: the levels land
 /// 84-106° from their motion) is made again with the root moment weighed: the printed levels say
 /// so, result.json records each level's weight, and the motion written lands within 3° when
 /// `simulate` flies it. Least joint effort is left out (only the levels are under test).
 TEST(CliOptimize, ATwistThatFliesOffOnALightAthleteIsMadeAgainWeighingTheRootMoment) {
   test::TempDir dir;
-  const std::string model = dir / "girl.model.json";
-  ASSERT_EQ(
-      test::run_cli("model new --height 1.29 --mass 37 --sex female --name girl --out " + model)
-          .status,
-      0);
   const std::string out = dir / "opt";
-  const auto run = test::run_cli("optimize " + std::string(SALTUS_EXAMPLES_DIR) +
-                                 "/motions/M6-half-twist-into-one-and-a-half-front.motion.json "
-                                 "--model " +
-                                 model + " --joint-load-weight 0 --out " + out);
+  const test::CliRun run = optimise_m6_on_a_light_girl(dir, "--joint-load-weight 0 --out " + out);
   ASSERT_EQ(run.status, 0) << run.output;
   EXPECT_NE(run.output.find("(root moment weighed 100x)"), std::string::npos) << run.output;
   const auto result = read_json(out + "/result.json");
@@ -319,6 +323,28 @@ TEST(CliOptimize, ATwistThatFliesOffOnALightAthleteIsMadeAgainWeighingTheRootMom
   EXPECT_NEAR(simulated, drift, 0.05);
   EXPECT_LE(simulated, 3.0);
   EXPECT_LE(result["after"]["avg_root_force"].get<double>(), 0.5);
+}
+
+/// The same girl with the defaults: the joints pay (the polish keeps no bounded try, every one
+/// landing far from its own free flight), and the CLI says what human joints would have cost,
+/// with the figures result.json records.
+TEST(CliOptimize, SaysWhatHumanJointsWouldHaveCostOnALightAthlete) {
+  test::TempDir dir;
+  const std::string out = dir / "opt";
+  const test::CliRun run = optimise_m6_on_a_light_girl(dir, "--out " + out);
+  ASSERT_EQ(run.status, 0) << run.output;
+  const auto result = read_json(out + "/result.json");
+  EXPECT_GT(test::largest_joint_rise(result), 1.5);
+  const auto& alternative = result["resolution"]["joint_load_polish"]["bounded_alternative"];
+  ASSERT_TRUE(alternative.is_object()) << result["resolution"].dump(2);
+  const double drift = alternative["landing_drift_deg"].get<double>();
+  EXPECT_GT(drift, 3.0);
+  EXPECT_LE(alternative["joint_rise"].get<double>(), 1.5);
+  const std::string line = "with human joints instead";
+  ASSERT_NE(run.output.find(line), std::string::npos) << run.output;
+  const std::string said = run.output.substr(run.output.find(line));
+  EXPECT_NE(said.find(saltus::format_number("lands %.0f deg from it", drift)), std::string::npos)
+      << said;
 }
 
 TEST(CliOptimize, BadOptionsExitWithTwo) {
