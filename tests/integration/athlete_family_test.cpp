@@ -227,5 +227,31 @@ TEST(AthleteFamily, ATwistOnTheHeaviestManKeepsHisJointsNearWhatHisInputNeeds) {
   expect_lands_near_zero(result, file.model);
 }
 
+/// The 5 m dive on the same man: the levels buy their root force with a joint at 7x his input,
+/// and no bounded try holds 0.5 N, on the levels' knots or finer. The bounded try with the least
+/// root force, at most kPolishMaxRootForceOverPayingJoints, is kept over the unbounded one: every
+/// joint within 1.5x, landing within 3 deg by a free flight run here.
+TEST(AthleteFamily, ADiveWhoseJointsPaidKeepsABoundedTryUpToOneNewton) {
+  const FamilyMember& man = family()[1];
+  ASSERT_EQ(man.model.name, "family-1");
+  const MotionFile file =
+      load_motion_for_athlete(motion_path("dive-5m-front-one-and-a-half-twists.motion.json"),
+                              man.path, TakeoffRule::kSameSpin);
+  const OptimizationResult result = optimize_motion(file.motion, file.model, OptimizeOptions{});
+  ASSERT_TRUE(result.solve.solved) << result.solve.status;
+  ASSERT_TRUE(result.joint_load_polish);
+  const JointLoadPolish& polish = *result.joint_load_polish;
+  EXPECT_TRUE(polish.kept);
+  EXPECT_GT(polish.joint_bound, 0.0) << "a bounded try";
+  EXPECT_FALSE(polish.knots_refined);
+  EXPECT_GT(polish.joint_rise_before, kJointLoadRiseLimit);
+  const double force = result.after.check.metrics.avg_root_force;
+  EXPECT_GT(force, kPolishMaxRootForce) << "kept past the ordinary limit";
+  EXPECT_LE(force, kPolishMaxRootForceOverPayingJoints);
+  EXPECT_LE(largest_joint_load_rise(file.model, result.before.check, result.after.check).ratio(),
+            kJointLoadRiseLimit);
+  EXPECT_LE(simulate_motion(result.optimized_motion, file.model).landing_vs_motion_deg, 3.0);
+}
+
 }  // namespace
 }  // namespace saltus

@@ -505,9 +505,10 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
     for (int step = 0; step < kPolishAttempts; ++step) {
       const PolishTry& attempt = kPolishTries[step];
       if (p.kept || (cancel && cancel->load())) break;
-      if (!attempt.joints_bounded && joints_pay && over_limit) {
+      if (automatic && !attempt.joints_bounded && joints_pay && over_limit) {
         // Before the joints go unbounded over a motion that made them pay: that bounded try
         // again on finer knots (refined where its residual lives, as a level is), kept as any.
+        // Only where the resolution is the optimiser's to choose.
         const std::vector<double> times = keyframe_times_of(over_limit->optimized);
         std::vector<int> spans = pass.subdivisions;
         if (refine(spans, residual_per_interval(over_limit->check, times), times, rules)) {
