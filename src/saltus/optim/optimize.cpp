@@ -459,8 +459,11 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
     JointLoadPolish& p = pass.polish.emplace();
     p.avg_root_force_before = pass.force;
     p.landing_drift_before_deg = pass.flown->drift_deg;
-    p.joint_rise_before =
-        largest_joint_load_rise(model, result.before.check, pass.flown->evaluation.check).ratio();
+    // A motion's largest joint rise over the input's peaks.
+    auto joint_rise = [&](const Flown& flown) {
+      return largest_joint_load_rise(model, result.before.check, flown.evaluation.check).ratio();
+    };
+    p.joint_rise_before = joint_rise(*pass.flown);
     const bool joints_pay = p.joint_rise_before > kJointLoadRiseLimit;
     // What a try reports in `p`: its step, settings, root force, landing and status.
     auto record = [&](int step, const Solved& solved, const Flown& flown) {
@@ -473,13 +476,29 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       p.landing_drift_after_deg = flown.drift_deg;
       p.status = solved.solve.status;
     };
-    // Whether a try lands as a kept one must, and its largest joint rise over the input's peaks.
+    // Whether a try lands as a kept one must, and whether it may be kept: solved, its root force
+    // within the limit, landing so.
     auto lands = [&](const Flown& flown) {
       return flown.drift_deg <= rules.max_landing_drift_deg ||
              flown.drift_deg <= p.landing_drift_before_deg;
     };
-    auto joint_rise = [&](const Flown& flown) {
-      return largest_joint_load_rise(model, result.before.check, flown.evaluation.check).ratio();
+    auto holds = [&](const Solved& solved, const Flown& flown) {
+      return solved.solve.solved &&
+             root_force_within_limit(flown.evaluation.metrics.avg_root_force,
+                                     p.avg_root_force_before) &&
+             lands(flown);
+    };
+    // The polish's options for a try of the ladder on `spans`.
+    auto try_options = [&](const PolishTry& attempt, const std::vector<int>& spans) {
+      MotionNlpOptions out = polish_options;
+      out.subdivisions = spans;
+      out.joint_load_weight = attempt.weight_factor * joint_load_weight;
+      out.root_moment_weight = attempt.root_moment_weight;
+      out.joint_moment_bounds.clear();
+      out.joint_force_bounds.clear();
+      if (attempt.joints_bounded)
+        set_joint_bounds(result.before.check, start_evaluation.check, out);
+      return out;
     };
     // The bounded try kept when no try meets the limits and the motion before makes a joint pay
     // (kPolishMaxRootForceOverPayingJoints): the one with the least root force.
@@ -496,7 +515,6 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       Motion optimized;
       Trajectory<double> trajectory;
       DenseCheck check;
-      double force = 0.0;
     };
     std::optional<OverLimit> over_limit;
     // JointLoadPolish::bounded_alternative, among the bounded tries that solved.
@@ -512,28 +530,18 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
         const std::vector<double> times = keyframe_times_of(over_limit->optimized);
         std::vector<int> spans = pass.subdivisions;
         if (refine(spans, residual_per_interval(over_limit->check, times), times, rules)) {
-          const PolishTry& bounded = kPolishTries[over_limit->step];
-          MotionNlpOptions refined_options = polish_options;
-          refined_options.subdivisions = spans;
-          refined_options.joint_load_weight = bounded.weight_factor * joint_load_weight;
-          refined_options.root_moment_weight = bounded.root_moment_weight;
-          refined_options.joint_moment_bounds.clear();
-          refined_options.joint_force_bounds.clear();
-          set_joint_bounds(result.before.check, start_evaluation.check, refined_options);
           Motion at_start = over_limit->optimized;
           at_start.spline.reset();
-          Solved refined =
-              solve_level(motion, at_start, model,
-                          refit_trajectory(over_limit->trajectory,
-                                           clamped_cubic_knots(refine_breakpoints(times, spans))),
-                          refined_options, polish_solver, counted, cancel);
+          Solved refined = solve_level(
+              motion, at_start, model,
+              refit_trajectory(over_limit->trajectory,
+                               clamped_cubic_knots(refine_breakpoints(times, spans))),
+              try_options(kPolishTries[over_limit->step], spans), polish_solver, counted, cancel);
           count(refined.solve);
           p.iterations += refined.solve.iterations;
           Flown refined_flown = fly(refined.optimized, model, options.nlp.samples);
           record(over_limit->step, refined, refined_flown);
-          p.kept = refined.solve.solved &&
-                   root_force_within_limit(p.avg_root_force_after, p.avg_root_force_before) &&
-                   lands(refined_flown);
+          p.kept = holds(refined, refined_flown);
           if (p.kept) {
             p.knots_refined = true;
             pass.subdivisions = spans;
@@ -547,56 +555,48 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
         ++p.bounded_tries_skipped;
         continue;
       }
-      polish_options.joint_load_weight = attempt.weight_factor * joint_load_weight;
-      polish_options.root_moment_weight = attempt.root_moment_weight;
-      polish_options.joint_moment_bounds.clear();
-      polish_options.joint_force_bounds.clear();
-      if (attempt.joints_bounded)
-        set_joint_bounds(result.before.check, start_evaluation.check, polish_options);
+      const MotionNlpOptions step_options = try_options(attempt, pass.subdivisions);
       Solved polished = solve_level(motion, pass.best.optimized, model, pass.best.trajectory,
-                                    polish_options, polish_solver, counted, cancel);
+                                    step_options, polish_solver, counted, cancel);
       count(polished.solve);
       Flown polished_flown = fly(polished.optimized, model, options.nlp.samples);
       record(step, polished, polished_flown);
       p.iterations += polished.solve.iterations;
       const bool landed = lands(polished_flown);
-      if (attempt.joints_bounded && polished.solve.solved &&
+      const bool bounded_solved = attempt.joints_bounded && polished.solve.solved;
+      const double rise = bounded_solved ? joint_rise(polished_flown) : 0.0;
+      if (bounded_solved &&
           (!closest_bounded || polished_flown.drift_deg < closest_bounded->landing_drift_deg))
-        closest_bounded = JointLoadPolish::BoundedAlternative{
-            polished_flown.drift_deg, p.avg_root_force_after, joint_rise(polished_flown)};
-      p.kept = polished.solve.solved &&
-               root_force_within_limit(p.avg_root_force_after, p.avg_root_force_before) && landed;
+        closest_bounded = JointLoadPolish::BoundedAlternative{polished_flown.drift_deg,
+                                                              p.avg_root_force_after, rise};
+      p.kept = holds(polished, polished_flown);
       if (attempt.joints_bounded && !p.kept &&
           p.landing_drift_after_deg >
               std::max(kPolishHopelessDriftFactor * rules.max_landing_drift_deg,
                        p.landing_drift_before_deg))
         bounded_tries_hopeless = true;
-      const double rise = p.kept && attempt.joints_bounded ? joint_rise(polished_flown) : 0.0;
-      if (rise > kJointLoadRiseLimit && !(cancel && cancel->load())) {
+      if (p.kept && rise > kJointLoadRiseLimit && !(cancel && cancel->load())) {
         // Kept, but a joint's load rose past the bar between the nodes that bound it: solved
         // once more from it with those bounds lowered, and that kept if it holds as this did
         // with a smaller rise.
-        MotionNlpOptions tightened = polish_options;
+        MotionNlpOptions tightened = step_options;
         tighten_joint_bounds(polished_flown.evaluation.check, tightened);
         Solved again = solve_level(motion, polished.optimized, model, polished.trajectory,
                                    tightened, polish_solver, counted, cancel);
         count(again.solve);
         p.iterations += again.solve.iterations;
         Flown again_flown = fly(again.optimized, model, options.nlp.samples);
-        if (again.solve.solved &&
-            root_force_within_limit(again_flown.evaluation.metrics.avg_root_force,
-                                    p.avg_root_force_before) &&
-            lands(again_flown) && joint_rise(again_flown) < rise) {
+        if (holds(again, again_flown) && joint_rise(again_flown) < rise) {
           record(step, again, again_flown);
           p.bounds_tightened = true;
           polished = std::move(again);
           polished_flown = std::move(again_flown);
         }
       }
-      if (attempt.joints_bounded && !p.kept && polished.solve.solved && landed &&
-          (!over_limit || p.avg_root_force_after < over_limit->force))
+      if (bounded_solved && !p.kept && landed &&
+          (!over_limit || p.avg_root_force_after < over_limit->check.metrics.avg_root_force))
         over_limit = OverLimit{step, polished.optimized, polished.trajectory,
-                               polished_flown.evaluation.check, p.avg_root_force_after};
+                               polished_flown.evaluation.check};
       if (p.kept) {
         pass.best = std::move(polished);
         pass.flown = std::move(polished_flown);
