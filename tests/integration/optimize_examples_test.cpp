@@ -15,6 +15,9 @@
 #include <string>
 #include <vector>
 
+#include "saltus/evaluation/evaluate.h"
+#include "saltus/evaluation/joint_loads.h"
+#include "saltus/evaluation/simulate.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/formats/paper_report_files.h"
 #include "saltus/motion/motion.h"
@@ -79,6 +82,34 @@ std::string optimize_test_name(const ::testing::TestParamInfo<std::string>& para
 
 INSTANTIATE_TEST_SUITE_P(Examples, BundledMotion, ::testing::ValuesIn(bundled_motions()),
                          optimize_test_name);
+
+/// The bundled dive needs a later step of the polish's ladder: its first two bounded tries land
+/// 3-6 deg off. Each bounded step after one that solved starts from that try, within the same
+/// bounds, rather than from the levels' optimum, whose joints pay: the third step then ends at
+/// 0.391 N (0.452 N when it started from the levels; 13.3 -> 7.2 s). What is returned is a later
+/// bounded step, holds at most 0.42 N on a dense grid of its own, keeps every joint within 1.5x
+/// and lands within 3 deg by a free flight run here.
+TEST(BundledDive, ALaterBoundedStepStartsFromTheTryBeforeIt) {
+  const MotionFile file =
+      load_motion_file(std::string(SALTUS_EXAMPLES_DIR) +
+                       "/motions/dive-5m-front-one-and-a-half-twists.motion.json");
+  const OptimizationResult r = optimize_motion(file.motion, file.model, OptimizeOptions{});
+  ASSERT_TRUE(r.solve.solved) << r.solve.status;
+  ASSERT_TRUE(r.joint_load_polish);
+  const JointLoadPolish& polish = *r.joint_load_polish;
+  EXPECT_TRUE(polish.kept);
+  EXPECT_EQ(polish.joint_bound, kPolishJointBound);
+  EXPECT_GE(polish.attempts, 2) << "a later step of the ladder";
+  EXPECT_LE(r.after.check.metrics.avg_root_force, 0.42);
+  EvaluateOptions dense;
+  dense.samples = 4001;
+  const double again =
+      evaluate_motion(r.optimized_motion, file.model, dense).check.metrics.avg_root_force;
+  EXPECT_NEAR(again, r.after.check.metrics.avg_root_force,
+              1e-3 * r.after.check.metrics.avg_root_force);
+  EXPECT_LE(largest_joint_load_rise(file.model, r.before.check, r.after.check).ratio(), 1.5);
+  EXPECT_LE(simulate_motion(r.optimized_motion, file.model).landing_vs_motion_deg, 3.0);
+}
 
 }  // namespace
 }  // namespace saltus

@@ -334,7 +334,7 @@ ResultJson::Optimization::Resolution read_resolution(const JsonNode& node) {
       p.landing_drift_before_deg = d->as_double();
     if (const auto d = polish->find("landing_drift_after_deg"))
       p.landing_drift_after_deg = d->as_double();
-    if (const auto r = polish->find("joint_rise_before")) p.joint_rise_before = r->as_double();
+    if (const auto j = polish->find("joint_rise_before")) p.joint_rise_before = j->as_double();
     if (const auto t = polish->find("bounds_tightened")) p.bounds_tightened = read_bool(*t);
     if (const auto k = polish->find("knots_refined")) p.knots_refined = read_bool(*k);
     if (const auto b = polish->find("bounded_alternative")) {

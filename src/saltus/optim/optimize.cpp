@@ -520,6 +520,12 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
     // JointLoadPolish::bounded_alternative, among the bounded tries that solved.
     std::optional<JointLoadPolish::BoundedAlternative> closest_bounded;
     bool bounded_tries_hopeless = false;
+    // The last bounded try that solved, where a step not PolishTry::from_levels starts.
+    struct BoundedStart {
+      Motion optimized;
+      Trajectory<double> trajectory;
+    };
+    std::optional<BoundedStart> bounded_start;
     for (int step = 0; step < kPolishAttempts; ++step) {
       const PolishTry& attempt = kPolishTries[step];
       if (p.kept || (cancel && cancel->load())) break;
@@ -556,8 +562,11 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
         continue;
       }
       const MotionNlpOptions step_options = try_options(attempt, pass.subdivisions);
-      Solved polished = solve_level(motion, pass.best.optimized, model, pass.best.trajectory,
-                                    step_options, polish_solver, counted, cancel);
+      const bool from_bounded = !attempt.from_levels && bounded_start;
+      Solved polished =
+          solve_level(motion, from_bounded ? bounded_start->optimized : pass.best.optimized, model,
+                      from_bounded ? bounded_start->trajectory : pass.best.trajectory, step_options,
+                      polish_solver, counted, cancel);
       count(polished.solve);
       Flown polished_flown = fly(polished.optimized, model, options.nlp.samples);
       record(step, polished, polished_flown);
@@ -565,6 +574,7 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       const bool landed = lands(polished_flown);
       const bool bounded_solved = attempt.joints_bounded && polished.solve.solved;
       const double rise = bounded_solved ? joint_rise(polished_flown) : 0.0;
+      if (bounded_solved) bounded_start = BoundedStart{polished.optimized, polished.trajectory};
       if (bounded_solved &&
           (!closest_bounded || polished_flown.drift_deg < closest_bounded->landing_drift_deg))
         closest_bounded = JointLoadPolish::BoundedAlternative{polished_flown.drift_deg,
