@@ -440,10 +440,10 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
   };
 
   // The polish: least joint effort at the keyframe times found, from the best level's optimum
-  // on its knots. Kept when it solves and its root force stays within the target a motion is
-  // held to (kPolishMaxRootForce) or below the levels' (it trades a little root force for
-  // joints that do not kick; result.joint_load_polish records both figures). `pass` then holds
-  // the polished motion and the polish's record.
+  // on its knots (or a bounded try before it, PolishTry::from_levels). Kept when it solves and its
+  // root force stays within the target a motion is held to (kPolishMaxRootForce) or below the
+  // levels' (it trades a little root force for joints that do not kick; result.joint_load_polish
+  // records both figures). `pass` then holds the polished motion and the polish's record.
   auto polish = [&](Levels& pass) {
     if (!(joint_load_weight > 0 && nlp_options.formulation == Formulation::kRelaxed &&
           pass.best.solve.solved && !(cancel && cancel->load())))
