@@ -449,7 +449,6 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
           pass.best.solve.solved && !(cancel && cancel->load())))
       return;
     MotionNlpOptions polish_options = nlp_options;
-    polish_options.subdivisions = pass.subdivisions;
     polish_options.joint_load_scales = joint_load_scales(result.before.check);
     polish_options.optimize_timing = false;
     SolverOptions polish_solver = options.solver;
@@ -508,12 +507,16 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       Flown flown;
     };
     std::optional<Fallback> fallback;
+    // A try's motion, where another solve may start.
+    struct TryMotion {
+      Motion optimized;
+      Trajectory<double> trajectory;
+    };
     // The bounded try that solved and landed with the least root force past the limit: its
     // knots may be too coarse for a motion whose joints keep to the input's loads.
     struct OverLimit {
       int step = 0;
-      Motion optimized;
-      Trajectory<double> trajectory;
+      TryMotion motion;
       DenseCheck check;
     };
     std::optional<OverLimit> over_limit;
@@ -521,11 +524,7 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
     std::optional<JointLoadPolish::BoundedAlternative> closest_bounded;
     bool bounded_tries_hopeless = false;
     // The last bounded try that solved, where a step not PolishTry::from_levels starts.
-    struct BoundedStart {
-      Motion optimized;
-      Trajectory<double> trajectory;
-    };
-    std::optional<BoundedStart> bounded_start;
+    std::optional<TryMotion> bounded_start;
     for (int step = 0; step < kPolishAttempts; ++step) {
       const PolishTry& attempt = kPolishTries[step];
       if (p.kept || (cancel && cancel->load())) break;
@@ -533,14 +532,14 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
         // Before the joints go unbounded over a motion that made them pay: that bounded try
         // again on finer knots (refined where its residual lives, as a level is), kept as any.
         // Only where the resolution is the optimiser's to choose.
-        const std::vector<double> times = keyframe_times_of(over_limit->optimized);
+        const std::vector<double> times = keyframe_times_of(over_limit->motion.optimized);
         std::vector<int> spans = pass.subdivisions;
         if (refine(spans, residual_per_interval(over_limit->check, times), times, rules)) {
-          Motion at_start = over_limit->optimized;
+          Motion at_start = over_limit->motion.optimized;
           at_start.spline.reset();
           Solved refined = solve_level(
               motion, at_start, model,
-              refit_trajectory(over_limit->trajectory,
+              refit_trajectory(over_limit->motion.trajectory,
                                clamped_cubic_knots(refine_breakpoints(times, spans))),
               try_options(kPolishTries[over_limit->step], spans), polish_solver, counted, cancel);
           count(refined.solve);
@@ -574,7 +573,7 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       const bool landed = lands(polished_flown);
       const bool bounded_solved = attempt.joints_bounded && polished.solve.solved;
       const double rise = bounded_solved ? joint_rise(polished_flown) : 0.0;
-      if (bounded_solved) bounded_start = BoundedStart{polished.optimized, polished.trajectory};
+      if (bounded_solved) bounded_start = TryMotion{polished.optimized, polished.trajectory};
       if (bounded_solved &&
           (!closest_bounded || polished_flown.drift_deg < closest_bounded->landing_drift_deg))
         closest_bounded = JointLoadPolish::BoundedAlternative{polished_flown.drift_deg,
@@ -605,7 +604,7 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       }
       if (bounded_solved && !p.kept && landed &&
           (!over_limit || p.avg_root_force_after < over_limit->check.metrics.avg_root_force))
-        over_limit = OverLimit{step, polished.optimized, polished.trajectory,
+        over_limit = OverLimit{step, TryMotion{polished.optimized, polished.trajectory},
                                polished_flown.evaluation.check};
       if (p.kept) {
         pass.best = std::move(polished);
