@@ -15,7 +15,10 @@ cd "$root"
 packages=(build-essential cmake ninja-build pkg-config clang-format
           libeigen3-dev coinor-libipopt-dev libopenblas0-serial nlohmann-json3-dev libcli11-dev
           libgtest-dev libbenchmark-dev
-          libvtk9-qt-dev libvtk9-dev qtbase5-dev xvfb xauth libgl1-mesa-dri ffmpeg libjs-three)
+          libvtk9-qt-dev libvtk9-dev qtbase5-dev xvfb xauth libgl1-mesa-dri ffmpeg libjs-three
+          python3-dev pybind11-dev python3-numpy python3-matplotlib)
+# The Python module (python/) is built in both forms; its tests and the notebook's run, and the
+# MuJoCo export's check by MuJoCo itself, are the test form's.
 # The test form also builds under AddressSanitizer and UndefinedBehaviorSanitizer with clang and
 # runs the libFuzzer targets of the readers, import and export (llvm-symbolizer, from llvm, makes
 # the reports readable).
@@ -23,7 +26,8 @@ packages=(build-essential cmake ninja-build pkg-config clang-format
 # The flight page's tests open it in headless Chromium and in Firefox ESR (on Xvfb, driven over
 # WebDriver BiDi by a Python script with Debian's websocket client).
 [ "$mode" = test ] && packages+=(clang libclang-rt-14-dev llvm slurm-wlm munge parallel chromium
-                                 firefox-esr python3-websocket)
+                                 firefox-esr python3-websocket python3-pytest python3-nbclient
+                                 python3-ipykernel jupyter-notebook libmujoco-dev)
 
 # Each stage's wall time, so CI logs show where the time goes (CI's limit is 60 minutes).
 stage_start=$SECONDS
