@@ -34,6 +34,7 @@
 #include "saltus/formats/readable_formats.h"
 #include "saltus/use_cases/captures.h"
 #include "saltus/use_cases/flight_page.h"
+#include "saltus/use_cases/motion_exports.h"
 #include "scene/lecture_figure_picture.h"
 
 namespace saltus::gui {
@@ -162,6 +163,21 @@ void FileController::fill_menu(QMenu* file, QAction* new_model,
     if (!path.isEmpty()) export_web_page(path);
   });
   need_motion_.insert(need_motion_.end(), {view_png, lecture, plots_png, window_png, web_page});
+  // The motion for other tools: one entry per format the library exports (motion_exports.h).
+  QMenu* motion_for = file->addMenu(tr("Export motion as"));
+  for (const ExportFormat& format : export_formats()) {
+    if (!format.sampled) continue;
+    QAction* a = motion_for->addAction(qstr(format.title) + "…", this, [this, format] {
+      const bool folder = format.extension.empty();
+      const QString path = QFileDialog::getSaveFileName(
+          context_.window(), tr("Export motion as %1").arg(qstr(format.title)),
+          QDir(context_.last_dir())
+              .filePath(qstr("flight" + (folder ? "-" + format.name : format.extension))),
+          folder ? tr("Folder (*)") : qstr("*" + format.extension));
+      if (!path.isEmpty()) export_motion_as(format.name, path);
+    });
+    need_motion_.push_back(a);
+  }
   for (QAction* a : more_exports) {
     file->addAction(a);
     need_motion_.push_back(a);
@@ -445,6 +461,26 @@ bool FileController::export_web_page(const QString& path, QString* error) {
     return context_.fail(tr("Cannot export web page"), qstr(e.what()), error);
   } catch (const std::exception& e) {
     return context_.fail(tr("Cannot export web page"), path + ": " + qstr(e.what()), error);
+  }
+  context_.set_last_dir_from(path);
+  context_.status(tr("Wrote %1").arg(path));
+  return true;
+}
+
+bool FileController::export_motion_as(const std::string& format, const QString& path,
+                                      QString* error) {
+  Workspace& ws = context_.workspace();
+  if (!ws.loaded())
+    return context_.fail(tr("Nothing to export"), tr("Open a motion first."), error);
+  try {
+    const Document& d = ws.document();
+    MotionFile motion = d.file();
+    if (d.has_optimization()) motion.motion = d.optimization().optimized_motion;
+    export_motion(motion, format, path.toStdString());
+  } catch (const InputError& e) {
+    return context_.fail(tr("Cannot export"), qstr(e.what()), error);
+  } catch (const std::exception& e) {
+    return context_.fail(tr("Cannot export"), path + ": " + qstr(e.what()), error);
   }
   context_.set_last_dir_from(path);
   context_.status(tr("Wrote %1").arg(path));

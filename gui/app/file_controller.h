@@ -1,14 +1,15 @@
 #pragma once
 /// @file
 /// Files: the File menu (open a motion or a model, recent files, drag and drop, save the result
-/// folder, the edited motion or model, export pictures, plots and animations), the window title
-/// and the status line. Nothing unsaved is dropped silently: opening another motion or model and
-/// closing the window ask first (Save / Discard / Cancel) when the motion or the masses were
-/// edited or a run was not saved.
+/// folder, the edited motion or model, export pictures, plots, animations and the motion for
+/// other tools), the window title and the status line. Nothing unsaved is dropped silently:
+/// opening another motion or model and closing the window ask first (Save / Discard / Cancel)
+/// when the motion or the masses were edited or a run was not saved.
 
 #include <QObject>
 #include <QStringList>
 #include <functional>
+#include <string>
 
 #include "app/app_context.h"
 
@@ -58,6 +59,10 @@ class FileController : public QObject, public RemembersSettings {
   /// given) as one self-contained HTML page, made by the library (use_cases/flight_page.h)
   /// from the files `saltus export --format html` reads, written here to a temporary folder.
   bool export_web_page(const QString& path, QString* error = nullptr);
+  /// File > Export motion as: the motion shown (the optimised one when there is a run) in one
+  /// of the library's formats (use_cases/motion_exports.h, `format` its --format name) at its
+  /// default rate, to `path` (a file, or a folder for MuJoCo and OpenSim).
+  bool export_motion_as(const std::string& format, const QString& path, QString* error = nullptr);
   bool export_window_png(const QString& path, QString* error = nullptr);
   /// File > Export lecture figure… and `--lecture-figure`: the stroboscopic side view of the
   /// stage shown (core/lecture_figure.h), `poses` poses, as a PNG (scene/lecture_figure_picture.h).

@@ -4,11 +4,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "saltus/base/input_error.h"
 #include "saltus/base/text_format.h"
 #include "saltus/use_cases/captures.h"
-#include "saltus/use_cases/flight_page.h"
+#include "saltus/use_cases/motion_exports.h"
 
 namespace saltus_cli {
 
@@ -116,36 +118,15 @@ int run_import(const ImportArgs& args) {
   return 0;
 }
 
-int run_export_html(const ExportArgs& args) {
-  if (args.fps > 0) throw saltus::InputError("--fps", "", "applies to --format bvh only");
-  const saltus::FlightPageSummary page =
-      saltus::export_flight_page(args.source, args.out_path, args.capture);
-  if (!args.quiet)
-    std::printf(
-        "saltus export: %s\n  a web page of %s (model %s), %s, %d frames, %.2f MB\n%s  wrote "
-        "%s\n",
-        args.source.c_str(), page.motion.c_str(), page.model.c_str(),
-        page.optimised ? "before and after optimisation" : "as given", page.frames,
-        static_cast<double>(page.bytes) / 1e6,
-        page.capture.empty() ? ""
-                             : ("  the motion capture beside it: " + page.capture + "\n").c_str(),
-        absolute(args.out_path).c_str());
-  return 0;
-}
-
 int run_export(const ExportArgs& args) {
-  if (args.format == "html") return run_export_html(args);
-  if (!args.capture.empty())
-    throw saltus::InputError("--capture", "", "applies to --format html only");
-  const saltus::MotionFile source = saltus::load_export_source(args.source);
-  const double fps = args.fps > 0 ? args.fps : saltus::default_export_fps(source.motion);
-  const saltus::MocapClip clip = saltus::export_motion_bvh(source, args.out_path, fps);
+  saltus::ExportOptions options;
+  options.fps = args.fps;
+  options.capture = args.capture;
+  const saltus::ExportSummary summary =
+      saltus::export_source(args.source, args.format, args.out_path, options);
   if (!args.quiet)
-    std::printf(
-        "saltus export: %s\n  %d joints (model %s), %d frames at %.6g s (%.4g fps), cm, y up, "
-        "ZXY channels\n  wrote %s\n",
-        source.path.c_str(), clip.joint_count(), source.model.name.c_str(), clip.frame_count(),
-        clip.frame_time, 1.0 / clip.frame_time, absolute(args.out_path).c_str());
+    std::printf("saltus export: %s\n  %s\n  wrote %s\n", args.source.c_str(),
+                summary.description.c_str(), absolute(args.out_path).c_str());
   return 0;
 }
 
@@ -180,25 +161,31 @@ void add_capture_verbs(CLI::App& app, CaptureVerbs& verbs) {
   verbs.import_command = import;
 
   ExportArgs& ex = verbs.export_args;
+  std::string formats_help = "output format:";
+  std::vector<std::string> format_names;
+  for (const saltus::ExportFormat& f : saltus::export_formats()) {
+    formats_help += (format_names.empty() ? " " : "; ") + f.name + ": " + f.title;
+    format_names.push_back(f.name);
+  }
   CLI::App* exp = app.add_subcommand(
       "export",
-      "Write a motion as a BVH file on the body model's skeleton (cm, y up, ZXY channels) for "
-      "Blender and other animation tools, or a flight as one self-contained web page (the "
-      "athlete in 3D, the root force before and after) that opens offline in any browser");
+      "Write a motion in the formats other tools read: BVH for animation tools, a web page that "
+      "opens offline in any browser, MuJoCo's MJCF with qpos/qvel/qacc, glTF 2.0 for Blender and "
+      "three.js, an OpenSim model with its coordinates");
   exp->add_option("SOURCE", ex.source,
                   "motion file, capture, or result folder of optimize (optimized.motion.json) or "
                   "import (capture.motion.json)")
       ->required();
-  exp->add_option("--format", ex.format, "output format: bvh, or html (a web page)")
+  exp->add_option("--format", ex.format, formats_help)
       ->required()
-      ->check(CLI::IsMember({"bvh", "html"}));
+      ->check(CLI::IsMember(format_names));
   exp->add_option("--out", ex.out_path,
-                  "output file (*.bvh, *.html); an existing page is replaced only if Saltus "
-                  "wrote it")
+                  "output file (*.bvh, *.html, *.glb) or folder (mujoco, opensim); an existing "
+                  "one is replaced only if Saltus wrote it (a BVH file never)")
       ->required();
   exp->add_option("--fps", ex.fps,
-                  "bvh: frames per second; default: the keyframes' rate when they are evenly "
-                  "spaced (a captured flight), else 60")
+                  "frames per second (all but html); default: the keyframes' rate when they are "
+                  "evenly spaced (a captured flight), else 60")
       ->check(CLI::PositiveNumber);
   exp->add_option("--capture", ex.capture,
                   "html: the motion capture drawn beside the athlete (an import folder or a BVH "

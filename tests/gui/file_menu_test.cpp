@@ -1,7 +1,8 @@
 // The File menu's entries, each triggered from the menu bar: its file dialog (answered by the
 // test with a path in a temporary folder) picks what to open or where to write, and the effect
 // is read back: the motion, capture or body model open, the files written and readable (PNG
-// pictures, a web page, a result folder), the window closed by Quit.
+// pictures, a web page, a result folder, the motion in each export format), the window closed by
+// Quit.
 
 #include <gtest/gtest.h>
 
@@ -25,6 +26,7 @@
 #include "saltus/formats/model_file.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/use_cases/captures.h"
+#include "saltus/use_cases/motion_exports.h"
 #include "support/temp_path.h"
 
 namespace saltus::gui {
@@ -169,6 +171,27 @@ TEST_F(FileMenuTest, ExportEntriesWriteTheirFiles) {
     ++pictures;
   }
   EXPECT_EQ(pictures, 4);
+}
+
+TEST_F(FileMenuTest, ExportMotionAsWritesEveryFormatOfTheLibrary) {
+  int formats = 0;
+  for (const ExportFormat& format : export_formats()) {
+    if (!format.sampled) continue;
+    const QString title = QString::fromStdString(format.title);
+    QAction* a = test::menu_action(window_.get(), {"File", "Export motion as", title + "…"});
+    ASSERT_NE(a, nullptr) << format.title;
+    EXPECT_TRUE(a->isEnabled());
+    const std::filesystem::path out =
+        saltus::test::temp_path("menu-flight-" + format.name + format.extension);
+    EXPECT_EQ(test::trigger_and_answer_file_dialog(a, QString::fromStdString(out.string())),
+              "Export motion as " + title);
+    QApplication::processEvents();
+    EXPECT_TRUE(format.extension.empty() ? std::filesystem::is_directory(out)
+                                         : std::filesystem::is_regular_file(out))
+        << out;
+    ++formats;
+  }
+  EXPECT_GE(formats, 2);
 }
 
 TEST_F(FileMenuTest, ExportAnimationWritesTheVideoWithTheChosenSize) {

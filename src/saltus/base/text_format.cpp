@@ -1,5 +1,6 @@
 #include "saltus/base/text_format.h"
 
+#include <charconv>
 #include <cstdio>
 #include <sstream>
 
@@ -85,6 +86,39 @@ std::string message_number(double value) {
   std::ostringstream out;
   out << value;
   return out.str();
+}
+
+std::string exact_number(double value) {
+  char buffer[32];
+  if (value == 0.0) value = 0.0;  // no "-0"
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+  return std::string(buffer, end);
+}
+
+std::string xml_text(const std::string& text) {
+  std::string out;
+  for (char c : printable(text)) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        out.push_back(c);
+    }
+  }
+  return out;
 }
 
 std::string message_text(const std::string& text, std::size_t max_bytes) {

@@ -16,6 +16,10 @@ std::string format_number(const char* pattern, double value);
 /// error message.
 std::string message_number(double value);
 
+/// The shortest text that reads back to the same double (std::to_chars), "0" for −0: the exact
+/// numbers of data files (the exports write every number so).
+std::string exact_number(double value);
+
 /// True when `text` is well-formed UTF-8 (no overlong forms, surrogates or code points past
 /// U+10FFFF).
 bool is_valid_utf8(const std::string& text);
@@ -23,6 +27,10 @@ bool is_valid_utf8(const std::string& text);
 /// `text` with every byte that is not part of well-formed UTF-8, and every control character,
 /// written as \xNN: safe to print and to store in a JSON string.
 std::string printable(const std::string& text);
+
+/// `text` fit for an XML attribute or element (the MuJoCo and OpenSim exports): printable(), then
+/// & < > " ' as entities.
+std::string xml_text(const std::string& text);
 
 /// The most bytes of a user string message_text keeps: a joint name or a token is a few dozen.
 inline constexpr std::size_t kMaxMessageTextBytes = 80;

@@ -66,4 +66,21 @@ void require_finite(const std::vector<SampleRecord>& samples, const std::string&
   }
 }
 
+void require_finite(const std::vector<BodyState<double>>& states, const std::vector<double>& times,
+                    const std::string& input, const std::string& what) {
+  for (std::size_t k = 0; k < states.size(); ++k) {
+    const BodyState<double>& s = states[k];
+    const auto at = [&](const std::string& quantity) {
+      fail(input, what + " " + quantity +
+                      " at t = " + message_number(k < times.size() ? times[k] : 0.0) + " s");
+    };
+    if (!finite(s.root_position) || !finite(s.root_velocity) || !finite(s.root_acceleration))
+      at("root translation");
+    for (std::size_t j = 0; j < s.joints.size(); ++j)
+      if (!finite(s.joints[j].q.coeffs()) || !finite(s.joints[j].omega) ||
+          !finite(s.joints[j].alpha))
+        at("joint " + std::to_string(j));
+  }
+}
+
 }  // namespace saltus

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "saltus/dynamics/body_state.h"
 #include "saltus/evaluation/sampling.h"
 
 namespace saltus {
@@ -20,5 +21,9 @@ void require_finite(const nlohmann::json& result, const std::string& input,
 /// The same for the samples of a trajectory CSV: names the column and the time.
 void require_finite(const std::vector<SampleRecord>& samples, const std::string& input,
                     const std::string& csv_name);
+
+/// The same for sampled states (an export's): names `what`, the quantity and the time.
+void require_finite(const std::vector<BodyState<double>>& states, const std::vector<double>& times,
+                    const std::string& input, const std::string& what);
 
 }  // namespace saltus

@@ -104,6 +104,15 @@ const std::vector<ResultKind>& result_kinds() {
        {},
        {"cases"},
        true},
+      // saltus export --format mujoco (use_cases/motion_exports).
+      {"export mujoco",
+       "saltus-export/1",
+       "export",
+       {"mujoco"},
+       {"result.json", "model.xml", "trajectory.csv"},
+       {},
+       {},
+       false},
       // saltus import (use_cases/captures).
       {"import",
        "saltus-result/1",

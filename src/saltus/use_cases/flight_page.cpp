@@ -13,7 +13,7 @@
 #include "saltus/base/constants.h"
 #include "saltus/base/input_error.h"
 #include "saltus/base/resources.h"
-#include "saltus/body/drawing_colours.h"
+#include "saltus/body/drawn_parts.h"
 #include "saltus/evaluation/apparatus.h"
 #include "saltus/evaluation/evaluate.h"
 #include "saltus/formats/finite_check.h"
@@ -79,19 +79,12 @@ nlohmann::json model_json(const BodyModel& model) {
   nlohmann::json segments = nlohmann::json::array();
   for (const Segment& s : model.segments) {
     nlohmann::json parts = nlohmann::json::array();
-    if (s.shape.parts.empty()) {
-      parts.push_back({{"name", s.name},
-                       {"type", "capsule"},
-                       {"center", page_vector(Eigen::Vector3d(0, 0.5 * s.shape.length, 0))},
-                       {"length", std::abs(s.shape.length)},
-                       {"radius", std::max(s.shape.radius, 0.01)},
-                       {"colour", hex_colour(segment_colour(s))}});
-    }
-    for (const ShapePart& part : s.shape.parts) {
+    for (const DrawnPart& drawn : drawn_parts(s)) {
+      const ShapePart& part = drawn.shape;
       nlohmann::json p = {{"name", part.name},
                           {"type", part.type},
                           {"center", page_vector(part.center)},
-                          {"colour", hex_colour(part_colour(s, part))}};
+                          {"colour", hex_colour(drawn.colour)}};
       if (part.type == "capsule") {
         p["length"] = std::abs(part.length);
         p["radius"] = part.radius;

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 namespace saltus {
@@ -21,6 +22,22 @@ TEST(FormatNumber, AppliesThePrintfPattern) {
   const std::string text(200, 'x');
   EXPECT_EQ(format_number((text + " %.1f").c_str(), 1.0), text + " 1.0");
   EXPECT_EQ(format_number("%.0f", 1e300).size(), 301u);
+}
+
+TEST(ExactNumber, ReadsBackToTheSameDoubleInTheShortestForm) {
+  for (double v : {1.0 / 3.0, 0.1 + 0.2, -1e-300, 6.02214076e23, 4.9e-324, 1.7976931348623157e308})
+    EXPECT_EQ(std::strtod(exact_number(v).c_str(), nullptr), v) << exact_number(v);
+  EXPECT_EQ(exact_number(0.1), "0.1");
+  EXPECT_EQ(exact_number(-2.5), "-2.5");
+  EXPECT_EQ(exact_number(-0.0), "0") << "no negative zero in a data file";
+  EXPECT_EQ(exact_number(12.0), "12");
+}
+
+TEST(XmlText, EscapesMarkupAndControlCharacters) {
+  EXPECT_EQ(xml_text("thigh_l"), "thigh_l");
+  EXPECT_EQ(xml_text("a<b & \"c\" 'd'>"), "a&lt;b &amp; &quot;c&quot; &apos;d&apos;&gt;");
+  EXPECT_EQ(xml_text("line\nbreak"), "line\\x0Abreak");
+  EXPECT_EQ(xml_text("h\u00e9"), "h\u00e9") << "UTF-8 stays";
 }
 
 TEST(MessageNumber, GivesSixSignificantDigitsLikePercentG) {

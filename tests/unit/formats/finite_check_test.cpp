@@ -48,5 +48,22 @@ TEST(FiniteCheck, NamesTheColumnAndTimeOfATrajectory) {
             std::string::npos);
 }
 
+TEST(FiniteCheck, NamesTheQuantityAndTimeOfSampledStates) {
+  const std::vector<double> times = {0.0, 0.25};
+  std::vector<BodyState<double>> states(2, BodyState<double>(2));
+  EXPECT_EQ(input_error([&] { require_finite(states, times, "m", "export"); }), "");
+  states[1].joints[1].alpha.y() = std::nan("");
+  EXPECT_NE(input_error([&] {
+              require_finite(states, times, "m", "export");
+            }).find("m: the computed result is not finite (export joint 1 at t = 0.25 s)"),
+            std::string::npos);
+  states[1].joints[1].alpha.y() = 0.0;
+  states[0].root_velocity.x() = std::numeric_limits<double>::infinity();
+  EXPECT_NE(input_error([&] {
+              require_finite(states, times, "m", "export");
+            }).find("export root translation at t = 0 s"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace saltus
