@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <functional>
+#include <initializer_list>
 #include <map>
 #include <stdexcept>
 
@@ -77,6 +78,23 @@ std::string mj_inertial(const Segment& s, const std::string& indent) {
          "\" fullinertia=\"" + mj_numbers(full) + "\"/>\n";
 }
 
+/// "<joint>.<name>" for every joint in MuJoCo's order: the root's `translation` names, then
+/// every joint's (the root's included) `rotation` names.
+std::vector<std::string> mj_coordinate_names(const BodyModel& model,
+                                             std::initializer_list<const char*> translation,
+                                             std::initializer_list<const char*> rotation) {
+  std::vector<std::string> names;
+  for (int segment : mujoco_body_order(model)) {
+    const std::string& joint = model.segments[segment].joint;
+    if (segment == 0)
+      for (const char* c : translation)
+        names.push_back(joint + "." + c);
+    for (const char* c : rotation)
+      names.push_back(joint + "." + c);
+  }
+  return names;
+}
+
 }  // namespace
 
 Eigen::Quaterniond mujoco_from_saltus() {
@@ -131,29 +149,11 @@ MujocoState mujoco_state(const BodyModel& model, const BodyState<double>& state)
 }
 
 std::vector<std::string> mujoco_qpos_names(const BodyModel& model) {
-  std::vector<std::string> names;
-  for (int segment : mujoco_body_order(model)) {
-    const std::string joint = model.segments[segment].joint;
-    if (segment == 0)
-      for (const char* c : {"x", "y", "z"})
-        names.push_back(joint + "." + c);
-    for (const char* c : {"qw", "qx", "qy", "qz"})
-      names.push_back(joint + "." + c);
-  }
-  return names;
+  return mj_coordinate_names(model, {"x", "y", "z"}, {"qw", "qx", "qy", "qz"});
 }
 
 std::vector<std::string> mujoco_qvel_names(const BodyModel& model) {
-  std::vector<std::string> names;
-  for (int segment : mujoco_body_order(model)) {
-    const std::string joint = model.segments[segment].joint;
-    if (segment == 0)
-      for (const char* c : {"vx", "vy", "vz"})
-        names.push_back(joint + "." + c);
-    for (const char* c : {"wx", "wy", "wz"})
-      names.push_back(joint + "." + c);
-  }
-  return names;
+  return mj_coordinate_names(model, {"vx", "vy", "vz"}, {"wx", "wy", "wz"});
 }
 
 std::string mujoco_model_xml(const BodyModel& model, const std::string& title,
