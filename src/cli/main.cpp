@@ -23,8 +23,8 @@
 #include "saltus/evaluation/evaluate.h"
 #include "saltus/evaluation/force_metrics.h"
 #include "saltus/evaluation/joint_loads.h"
-#include "saltus/evaluation/joint_strength.h"
 #include "saltus/evaluation/simulate.h"
+#include "saltus/evaluation/strength_demand.h"
 #include "saltus/evaluation/twist_sources.h"
 #include "saltus/evaluation/what_if.h"
 #include "saltus/formats/motion_file.h"
@@ -188,6 +188,14 @@ void print_outputs(const std::string& out_dir, double seconds) {
               absolute(out_dir).c_str(), seconds);
 }
 
+/// The motion against the athlete's strength: the verdict, then one line per joint beyond it.
+void print_strength(const saltus::BodyModel& model, const saltus::DenseCheck& check) {
+  std::printf("  strength: %s\n",
+              saltus::strength_verdict_words(model, check.strength_peaks).c_str());
+  for (const std::string& line : saltus::over_strength_lines(model, check.strength_peaks))
+    std::printf("    %s\n", line.c_str());
+}
+
 int run_evaluate(const CommonArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   saltus::check_output_folder(args.out_dir);
@@ -206,6 +214,7 @@ int run_evaluate(const CommonArgs& args) {
                 e.keyframe_errors.max_rotation_error_deg);
     std::printf("  Yeadon's angles: %s\n",
                 rotation_words(written.at("rotation").at("before")).c_str());
+    print_strength(file.model, e.check);
     print_apparatus(written);
     print_outputs(args.out_dir, seconds);
   }
@@ -394,10 +403,7 @@ int run_optimize(const CommonArgs& args) {
           "keyframes\n",
           polish->bounded_alternative->joint_rise, polish->bounded_alternative->avg_root_force,
           polish->bounded_alternative->landing_drift_deg);
-    std::printf("  joint moments: %s\n",
-                saltus::joint_moment_share_words(
-                    saltus::joint_moment_shares(file.model, result.after.check))
-                    .c_str());
+    print_strength(file.model, result.after.check);
     std::printf(
         "  wrote %s/{result.json, trajectory_before.csv, trajectory_after.csv, model.json, "
         "optimized.motion.json} in %.3f s\n",

@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "saltus/body/joint_strength.h"
+#include "saltus/body/segment_names.h"
 #include "saltus/formats/model_file.h"
 #include "saltus/use_cases/athlete_models.h"
 
@@ -37,6 +39,16 @@ void print_summary(const saltus::ModelSummary& s) {
                 r.principal_moments.x(), r.principal_moments.y(), r.principal_moments.z());
 }
 
+/// The athlete's strength: whose, then each covered joint direction's isometric peak.
+void print_strength(const saltus::BodyModel& model) {
+  std::printf("  strength: %s\n", saltus::strength_reference_words(model.strength).c_str());
+  std::printf("  %-34s %10s  %s\n", "joint direction", "peak N·m", "source (curve)");
+  for (const saltus::StrengthRow& row : saltus::strength_rows(model))
+    std::printf("  %-34s %10.1f  %s%s\n",
+                (saltus::joint_label(row.joint) + " " + row.direction).c_str(), row.curve.peak_Nm,
+                row.curve.source.c_str(), row.curve.measured ? ", measured" : "");
+}
+
 void print_written(const char* verb, const saltus::BodyModel& model, const std::string& path) {
   std::printf("saltus model %s: %s\n", verb, model.name.c_str());
   print_summary(saltus::summarize_model(model));
@@ -49,7 +61,8 @@ int run_new(const ModelArgs& args) {
   size.mass_kg = args.mass;
   size.sex = saltus::parse_sex(args.sex, "--sex");
   size.name = args.name;
-  const saltus::BodyModel model = saltus::new_athlete_model(size);
+  saltus::BodyModel model = saltus::new_athlete_model(size);
+  model.strength = saltus::strength_from_flags(args.strength, args.sex, args.age);
   saltus::write_athlete_model(args.out_path, model);
   if (!args.quiet) print_written("new", model, args.out_path);
   return 0;
@@ -64,6 +77,7 @@ int run_info(const ModelArgs& args) {
   }
   std::printf("saltus model info: %s (%s)\n", model.name.c_str(), args.model.c_str());
   print_summary(summary);
+  print_strength(model);
   return 0;
 }
 
@@ -77,8 +91,9 @@ int run_scale(const ModelArgs& args) {
 }
 
 int run_yeadon(const ModelArgs& args) {
-  const saltus::YeadonModel made =
+  saltus::YeadonModel made =
       saltus::yeadon_athlete_model(args.model, args.densities, args.mass, args.name);
+  made.model.strength = saltus::strength_from_flags(args.strength, args.sex, args.age);
   saltus::write_athlete_model(args.out_path, made.model);
   if (!args.quiet) {
     print_written("yeadon", made.model, args.out_path);
@@ -98,6 +113,15 @@ int run_yeadon(const ModelArgs& args) {
 void add_size(CLI::App* cmd, ModelArgs& a) {
   cmd->add_option("--height", a.height, "standing height (stature), m")->required();
   cmd->add_option("--mass", a.mass, "body mass, kg")->required();
+}
+
+void add_strength(CLI::App* cmd, ModelArgs& a) {
+  cmd->add_option("--age", a.age, "age, years (Anderson 2007's age groups for the legs' strength)")
+      ->capture_default_str();
+  cmd->add_option("--strength", a.strength,
+                  "whose strength: population (Anderson 2007's by sex and age, the upper body "
+                  "scaled alike) or elite-gymnast")
+      ->capture_default_str();
 }
 
 void add_out(CLI::App* cmd, ModelArgs& a) {
@@ -127,6 +151,7 @@ void add_model_verbs(CLI::App& app, ModelVerbs& verbs) {
   create->add_option("--sex", n.sex, "female or male (de Leva's table for that sex)")
       ->required()
       ->check(CLI::IsMember({"female", "male"}));
+  add_strength(create, n);
   add_out(create, n);
   verbs.new_command = create;
 
@@ -162,6 +187,10 @@ void add_model_verbs(CLI::App& app, ModelVerbs& verbs) {
   yeadon->add_option("--mass", y.mass,
                      "body mass, kg: scales every density to it (default: the file's totalmass, "
                      "else the densities' own mass)");
+  y.sex = "male";
+  yeadon->add_option("--sex", y.sex, "female or male, for the strength tables")
+      ->capture_default_str();
+  add_strength(yeadon, y);
   add_out(yeadon, y);
   verbs.yeadon_command = yeadon;
 }

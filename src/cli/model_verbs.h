@@ -14,7 +14,9 @@ struct ModelArgs {
   double height = 0.0;
   double mass = 0.0;
   std::string sex;
-  std::string densities = "dempster";  ///< yeadon
+  double age = 21.0;                    ///< new, yeadon: years, for the strength tables
+  std::string strength = "population";  ///< new, yeadon: whose strength
+  std::string densities = "dempster";   ///< yeadon
   std::string name;
   std::string out_path;
   bool json = false;

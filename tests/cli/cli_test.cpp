@@ -96,6 +96,45 @@ TEST(Cli, EvaluateWritesTheDocumentedOutputs) {
   EXPECT_EQ(read_json(dir / "out/model.json")["name"], "zatsiorsky-66kg");
 }
 
+// The strength the CLI prints is result.json's: the verdict line, then one line per joint beyond
+// the athlete's strength, largest first, each the share of result.json's entry for that joint;
+// and every share is its moment over its capacity. M5's interpolated input needs more than the
+// bundled athlete has at its elbow and shoulder; a junior made with `model new` has less still.
+TEST(Cli, EvaluatePrintsTheJointsBeyondTheAthletesStrength) {
+  TempDir dir;
+  const std::string m5 = std::string(SALTUS_EXAMPLES_DIR) +
+                         "/motions/M5-front-somersault-one-and-a-half-twists.motion.json";
+  ASSERT_EQ(run_cli("model new --height 1.45 --mass 38 --sex female --age 13 --out " +
+                    (dir / "junior.model.json") + " -q")
+                .status,
+            0);
+  for (const std::string model : {std::string(), " --model " + (dir / "junior.model.json")}) {
+    SCOPED_TRACE(model);
+    const auto run = run_cli("evaluate " + m5 + model + " --out " + (dir / "out"));
+    ASSERT_EQ(run.status, 0) << run.output;
+    const auto strength = read_json(dir / "out/result.json")["joint_strength"];
+    const auto& before = strength["before"];
+    EXPECT_NE(run.output.find("  strength: " + before["verdict"].get<std::string>() + "\n"),
+              std::string::npos)
+        << run.output;
+    int over = 0;
+    for (const auto& [joint, e] : before["joints"].items()) {
+      SCOPED_TRACE(joint);
+      EXPECT_NEAR(e["share"].get<double>(),
+                  e["moment_Nm"].get<double>() / e["capacity_Nm"].get<double>(), 1e-12);
+      if (e["share"].get<double>() <= 1.0) continue;
+      ++over;
+      const std::string line = "    " + e["words"].get<std::string>() + " would need " +
+                               std::to_string(std::lround(100 * e["share"].get<double>())) + " %";
+      EXPECT_NE(run.output.find(line), std::string::npos) << line << "\n" << run.output;
+    }
+    EXPECT_GE(over, 1);
+    EXPECT_NE(before["verdict"].get<std::string>().find(std::to_string(over) + " joint"),
+              std::string::npos);
+    std::filesystem::remove_all(dir / "out");
+  }
+}
+
 TEST(Cli, SimulateReportsTheLanding) {
   TempDir dir;
   const auto run = run_cli("simulate " + test::m1_path() + " --out " + (dir / "sim"));

@@ -33,6 +33,26 @@ struct SegmentShape {
   std::vector<ShapePart> parts;
 };
 
+/// Whose strength a model has (body/joint_strength.h builds its curves; docs/method.md,
+/// "Strength"): a population's by sex and age, or the elite gymnast's, scaled to the model's
+/// mass and standing height; any joint and direction may be given as measured.
+struct StrengthSpec {
+  /// "population": Anderson et al. 2007's hip, knee and ankle for `sex` and `age_years`, the
+  /// gymnast's upper body and trunk scaled to that population; "elite-gymnast": every joint the
+  /// gymnast's.
+  std::string reference = "population";
+  bool female = false;
+  double age_years = 21.0;  ///< the age groups' rule: joint_strength.h
+  /// A measured peak isometric moment: `joint` is a kind ("hip", both sides) or a joint
+  /// ("hip_l"); `direction` one of its coordinates' directions ("extension").
+  struct Measured {
+    std::string joint;
+    std::string direction;
+    double peak_moment_Nm = 0.0;
+  };
+  std::vector<Measured> measured;
+};
+
 struct Segment {
   std::string name;   ///< e.g. "thigh_l"
   int parent = -1;    ///< index into BodyModel::segments, -1 for the root
@@ -53,6 +73,7 @@ struct BodyModel {
   std::string name;
   std::string source;  ///< where the numbers come from (citation), free text
   std::vector<Segment> segments;
+  StrengthSpec strength;  ///< whose strength the athlete has
 
   int size() const { return static_cast<int>(segments.size()); }
   double total_mass() const;

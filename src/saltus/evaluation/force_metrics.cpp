@@ -64,6 +64,8 @@ DenseCheck dense_check(const BodyModel& model, const Trajectory<double>& traject
   DynamicsData<double> data(model);
   BodyState<double> state(model.size());
   check.joint_peaks.assign(model.size(), JointLoadPeak{});
+  check.strength_peaks.assign(model.size(), JointStrengthPeak{});
+  const AthleteStrength strength = athlete_strength(model);
   // The root wrench's squares at t on span s (its right end as the left limit, whatever rounding
   // says), and every peak over the points seen.
   auto evaluate_at = [&](const SpanGrid& grid, double t, double& force2, double& moment2) {
@@ -80,6 +82,11 @@ DenseCheck dense_check(const BodyModel& model, const Trajectory<double>& traject
       const double force = w.head<3>().norm(), moment = w.tail<3>().norm();
       if (force > peak.force_N) peak.force_N = force, peak.force_time_s = t;
       if (moment > peak.moment_Nm) peak.moment_Nm = moment, peak.moment_time_s = t;
+      if (k == 0) continue;
+      const StrengthDemand demand = strength_demand(strength, k, state.joints[k], w.tail<3>());
+      JointStrengthPeak& strongest = check.strength_peaks[k];
+      if (demand.coordinate >= 0 && (strongest.coordinate < 0 || demand.share > strongest.share))
+        static_cast<StrengthDemand&>(strongest) = demand, strongest.time_s = t;
     }
     ++check.points;
   };

@@ -7,6 +7,7 @@
 
 #include "saltus/body/body_model.h"
 #include "saltus/evaluation/sampling.h"
+#include "saltus/evaluation/strength_demand.h"
 #include "saltus/motion/trajectory.h"
 
 namespace saltus {
@@ -46,6 +47,9 @@ struct DenseCheck {
   ForceMetrics metrics;
   /// Per segment, the load at its joint (segment 0's is the root wrench itself).
   std::vector<JointLoadPeak> joint_peaks;
+  /// Per segment, its joint's largest share of the athlete's strength and when
+  /// (strength_demand.h); the root's empty.
+  std::vector<JointStrengthPeak> strength_peaks;
   int points = 0;                    ///< wrench evaluations used
   int halvings = 0;                  ///< times every spacing was halved
   double last_halving_change = 0.0;  ///< |ΔJ| at the last halving (N²)

@@ -4,6 +4,7 @@
 
 #include "saltus/dynamics/inverse_dynamics.h"
 #include "saltus/dynamics/momentum.h"
+#include "saltus/evaluation/strength_demand.h"
 
 namespace saltus {
 
@@ -17,7 +18,9 @@ std::vector<double> uniform_times(double duration, int count) {
 }
 
 namespace {
-SampleRecord record_from(const BodyModel& model, const DynamicsData<double>& data, double t) {
+SampleRecord record_from(const BodyModel& model, const AthleteStrength& strength,
+                         const DynamicsData<double>& data, const BodyState<double>& state,
+                         double t) {
   SampleRecord r;
   r.time = t;
   r.segment_position = data.world_position;
@@ -33,6 +36,10 @@ SampleRecord record_from(const BodyModel& model, const DynamicsData<double>& dat
   r.joint_wrench.reserve(model.size());
   for (int i = 0; i < model.size(); ++i)
     r.joint_wrench.push_back(joint_wrench_force_first(data, i));
+  r.strength_share.assign(model.size(), 0.0);
+  for (int i = 1; i < model.size(); ++i)
+    r.strength_share[i] =
+        strength_demand(strength, i, state.joints[i], r.joint_wrench[i].tail<3>()).share;
   return r;
 }
 }  // namespace
@@ -41,11 +48,12 @@ std::vector<SampleRecord> evaluate_states(const BodyModel& model, const std::vec
                                           const std::vector<BodyState<double>>& states) {
   if (times.size() != states.size()) throw std::invalid_argument("times and states differ in size");
   DynamicsData<double> data(model);
+  const AthleteStrength strength = athlete_strength(model);
   std::vector<SampleRecord> out;
   out.reserve(times.size());
   for (std::size_t k = 0; k < times.size(); ++k) {
     inverse_dynamics(model, data, states[k]);
-    out.push_back(record_from(model, data, times[k]));
+    out.push_back(record_from(model, strength, data, states[k], times[k]));
   }
   return out;
 }
@@ -54,13 +62,14 @@ std::vector<SampleRecord> evaluate_trajectory(const BodyModel& model,
                                               const Trajectory<double>& trajectory,
                                               const std::vector<double>& times) {
   DynamicsData<double> data(model);
+  const AthleteStrength strength = athlete_strength(model);
   BodyState<double> state(model.size());
   std::vector<SampleRecord> out;
   out.reserve(times.size());
   for (double t : times) {
     trajectory.sample(t, state);
     inverse_dynamics(model, data, state);
-    out.push_back(record_from(model, data, t));
+    out.push_back(record_from(model, strength, data, state, t));
   }
   return out;
 }

@@ -24,6 +24,9 @@ struct SampleRecord {
   Vector6d root_wrench = Vector6d::Zero();  ///< F1..F6: force, moment; root frame, root origin
   Vector6d residual = Vector6d::Zero();     ///< force, moment; world, about the CoM
   std::vector<Vector6d> joint_wrench;       ///< per segment, force first, child frame
+  /// Per segment, the largest share of the athlete's strength its joint needs now
+  /// (strength_demand.h); 0 for the root and where no direction has a strength curve.
+  std::vector<double> strength_share;
 };
 
 /// Default time grid of every verb: 101 samples, 20.4 ms apart over the paper's 2.04 s flight,

@@ -55,13 +55,6 @@ std::string non_finite_at(const nlohmann::json& value, const std::string& pointe
 
 }  // namespace
 
-std::string embedded_text(const char* const chunks[]) {
-  std::string out;
-  for (int i = 0; chunks[i] != nullptr; ++i)
-    out += chunks[i];
-  return out;
-}
-
 std::string flight_page_html(const nlohmann::json& data) {
   const std::string bad = non_finite_at(data, "");
   if (!bad.empty()) throw std::invalid_argument("flight page data: " + bad + " is not finite");

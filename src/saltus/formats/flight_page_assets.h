@@ -7,14 +7,13 @@
 
 #include <string>
 
+#include "saltus/base/embedded_text.h"
+
 namespace saltus {
 
 extern const char* const kSaltusVersion;  ///< the project's version, "0.1.0"
 extern const char* const kFlightPageTemplate[];
 extern const char* const kThreeJs[];
 extern const char* const kOrbitControlsJs[];
-
-/// The chunks of one embedded file joined into its text.
-std::string embedded_text(const char* const chunks[]);
 
 }  // namespace saltus

@@ -10,6 +10,7 @@
 #include "saltus/base/input_error.h"
 #include "saltus/base/json_reader.h"
 #include "saltus/base/text_format.h"
+#include "saltus/body/joint_strength.h"
 #include "saltus/formats/output_folder.h"
 #include "saltus/formats/plausible_ranges.h"
 
@@ -197,6 +198,65 @@ int parse_parent(const JsonNode& node, std::size_t index, const std::string& nam
   node.fail("unknown parent " + in_quotes(parent) + ": no segment has this name");
 }
 
+/// The model's "strength" (docs/formats.md, "Body model"): whose strength and what was measured,
+/// checked against the model's joints by building it (athlete_strength).
+StrengthSpec parse_strength(const JsonNode& node, const BodyModel& model) {
+  node.require_object();
+  node.require_keys_within({"reference", "sex", "age_years", "measured"});
+  StrengthSpec spec;
+  if (const auto reference = node.find("reference")) {
+    spec.reference = reference->as_string();
+    if (spec.reference != "population" && spec.reference != "elite-gymnast")
+      reference->fail("unknown strength reference " + in_quotes(spec.reference) +
+                      " (population, elite-gymnast)");
+  }
+  if (const auto sex = node.find("sex")) {
+    const std::string text = sex->as_string();
+    if (text != "male" && text != "female")
+      sex->fail("sex must be \"male\" or \"female\", found " + in_quotes(text));
+    spec.female = text == "female";
+  }
+  if (const auto age = node.find("age_years"))
+    spec.age_years =
+        age->as_double_within(plausible::kMinAgeYears, plausible::kMaxAgeYears, "years");
+  if (const auto measured = node.find("measured")) {
+    measured->require_array();
+    for (std::size_t i = 0; i < measured->size(); ++i) {
+      const JsonNode entry = measured->at(i);
+      entry.require_keys_within({"joint", "direction", "peak_moment_Nm"});
+      StrengthSpec::Measured m;
+      m.joint = entry.at("joint").as_string();
+      m.direction = entry.at("direction").as_string();
+      m.peak_moment_Nm =
+          entry.at("peak_moment_Nm")
+              .as_double_within(plausible::kMinJointMomentNm, plausible::kMaxJointMomentNm, "N·m");
+      spec.measured.push_back(m);
+      BodyModel with = model;
+      with.strength = spec;
+      try {
+        athlete_strength(with);
+      } catch (const std::invalid_argument& e) {
+        entry.fail(e.what());
+      }
+    }
+  }
+  return spec;
+}
+
+nlohmann::json strength_to_json(const StrengthSpec& spec) {
+  nlohmann::json out = {{"reference", spec.reference},
+                        {"sex", spec.female ? "female" : "male"},
+                        {"age_years", spec.age_years}};
+  if (!spec.measured.empty()) {
+    nlohmann::json measured = nlohmann::json::array();
+    for (const StrengthSpec::Measured& m : spec.measured)
+      measured.push_back(
+          {{"joint", m.joint}, {"direction", m.direction}, {"peak_moment_Nm", m.peak_moment_Nm}});
+    out["measured"] = std::move(measured);
+  }
+  return out;
+}
+
 }  // namespace
 
 BodyModel parse_body_model(const nlohmann::json& document, const std::string& file) {
@@ -207,7 +267,7 @@ BodyModel parse_body_model(const nlohmann::json& document, const std::string& fi
   if (format.as_string() != kModelFormat)
     format.fail("unsupported format " + in_quotes(format.as_string()) + ", expected " +
                 in_quotes(kModelFormat));
-  root.require_keys_within({"format", "name", "source", "segments"});
+  root.require_keys_within({"format", "name", "source", "segments", "strength"});
 
   BodyModel model;
   model.name = root.at("name").as_string();
@@ -274,6 +334,8 @@ BodyModel parse_body_model(const nlohmann::json& document, const std::string& fi
 
     model.segments.push_back(std::move(segment));
   }
+  if (const auto strength = root.find("strength"))
+    model.strength = parse_strength(*strength, model);
   return model;
 }
 
@@ -321,7 +383,8 @@ nlohmann::json body_model_to_json(const BodyModel& model) {
   return {{"format", kModelFormat},
           {"name", model.name},
           {"source", model.source},
-          {"segments", std::move(segments)}};
+          {"segments", std::move(segments)},
+          {"strength", strength_to_json(model.strength)}};
 }
 
 void save_body_model_file(const std::string& path, const BodyModel& model) {

@@ -37,6 +37,14 @@ inline constexpr double kMaxBodyMass = 300.0;
 /// 38 kg junior is 18, a 1.85 m, 85 kg senior 25. Outside [8, 80] a number was mistyped.
 inline constexpr double kMinBodyMassIndex = 8.0;
 inline constexpr double kMaxBodyMassIndex = 80.0;
+/// years: an athlete's age (`model new --age`, a model's strength). Anderson's groups span
+/// 18-80; children and the very old are read by the nearest group (joint_strength.h).
+inline constexpr double kMinAgeYears = 5.0;
+inline constexpr double kMaxAgeYears = 100.0;
+/// N·m: a measured peak isometric joint moment. A knee extension's is 150-400 N·m, a wrist's
+/// 10-40; 5000 is beyond any joint.
+inline constexpr double kMinJointMomentNm = 0.1;
+inline constexpr double kMaxJointMomentNm = 5000.0;
 
 // Motion (docs/formats.md, "Motion").
 /// s: the flight time T. Trampoline and diving flights last 1-3 s, a 27 m cliff dive 3 s.

@@ -55,7 +55,29 @@ void set_joint_loads(ResultJson& r, const BodyModel& model, const DenseCheck& be
     if (after && k < static_cast<int>(after->joint_peaks.size())) l.after = after->joint_peaks[k];
     r.joint_loads.push_back(std::move(l));
   }
-  r.joint_moment_shares = joint_moment_shares(model, after ? *after : before);
+  const AthleteStrength strength = athlete_strength(model);
+  auto entries = [&](const DenseCheck& check) {
+    std::vector<ResultJson::JointStrength> out;
+    for (int k = 1; k < model.size() && k < static_cast<int>(check.strength_peaks.size()); ++k) {
+      const JointStrengthPeak& p = check.strength_peaks[k];
+      if (p.coordinate < 0) continue;
+      const JointCoordinate& c = strength.coordinates[k].coordinates[p.coordinate];
+      const StrengthCurve& curve = p.positive ? *strength.joints[k][p.coordinate].positive
+                                              : *strength.joints[k][p.coordinate].negative;
+      out.push_back({model.segments[k].joint, c.name, p.positive ? c.positive : c.negative,
+                     strength_direction_words(model, k, p), p.share, p.time_s, p.moment_Nm,
+                     p.capacity_Nm, p.angle_rad * 180.0 / 3.14159265358979323846,
+                     p.shortening_speed, p.extrapolated, curve.source});
+    }
+    return out;
+  };
+  r.strength_reference = strength_reference_words(model.strength);
+  r.strength_before = entries(before);
+  r.strength_verdict_before = strength_verdict_words(model, before.strength_peaks);
+  if (after) {
+    r.strength_after = entries(*after);
+    r.strength_verdict_after = strength_verdict_words(model, after->strength_peaks);
+  }
 }
 
 /// The closest pass to the apparatus and a dive's entry, from the flight's samples.
@@ -404,19 +426,28 @@ nlohmann::json result_to_json(const ResultJson& r) {
     }
     j["joint_loads"] = loads;
   }
-  if (!r.joint_moment_shares.empty()) {
-    nlohmann::json joints = nlohmann::json::object();
-    const auto optional_number = [](const std::optional<double>& x) {
-      return x ? nlohmann::json(*x) : nlohmann::json(nullptr);
+  if (!r.strength_before.empty()) {
+    auto block = [](const std::vector<ResultJson::JointStrength>& entries,
+                    const std::string& verdict) {
+      nlohmann::json joints = nlohmann::json::object();
+      for (const ResultJson::JointStrength& e : entries)
+        joints[e.joint] = {{"coordinate", e.coordinate},
+                           {"direction", e.direction},
+                           {"words", e.words},
+                           {"share", e.share},
+                           {"time_s", e.time_s},
+                           {"moment_Nm", e.moment_Nm},
+                           {"capacity_Nm", e.capacity_Nm},
+                           {"angle_deg", e.angle_deg},
+                           {"shortening_speed_rad_s", e.shortening_speed_rad_s},
+                           {"extrapolated", e.extrapolated},
+                           {"source", e.source}};
+      return nlohmann::json{{"joints", joints}, {"verdict", verdict}};
     };
-    for (const JointMomentShare& s : r.joint_moment_shares)
-      joints[s.joint] = {{"max_moment_per_kg", s.max_moment_per_kg},
-                         {"published_max_per_kg", optional_number(s.published_max_per_kg)},
-                         {"share_of_published_max", optional_number(s.share)}};
-    j["joint_moment_shares"] = {
-        {"motion", r.kind == ResultJson::Kind::kOptimization ? "after" : "before"},
-        {"joints", joints},
-        {"largest", joint_moment_share_words(r.joint_moment_shares)}};
+    j["joint_strength"] = {{"reference", r.strength_reference},
+                           {"before", block(r.strength_before, r.strength_verdict_before)}};
+    if (!r.strength_after.empty())
+      j["joint_strength"]["after"] = block(r.strength_after, r.strength_verdict_after);
   }
   if (r.rotation_before) {
     j["rotation"]["before"] = rotation_json(*r.rotation_before);
@@ -543,20 +574,36 @@ ResultJson parse_result_json(const nlohmann::json& document, const std::string& 
       r.joint_loads.push_back(std::move(l));
     }
   }
-  if (const auto shares = root.find("joint_moment_shares")) {
-    shares->require_object();
-    const JsonNode joints = shares->at("joints");
-    joints.require_object();
-    for (const auto& [name, node] : joints.members()) {
-      node.require_object();
-      JointMomentShare s;
-      s.joint = name;
-      s.max_moment_per_kg = node.at("max_moment_per_kg").as_double();
-      if (const auto published = node.find("published_max_per_kg"))
-        s.published_max_per_kg = published->as_double();
-      if (const auto share = node.find("share_of_published_max")) s.share = share->as_double();
-      r.joint_moment_shares.push_back(std::move(s));
-    }
+  if (const auto strength = root.find("joint_strength")) {
+    strength->require_object();
+    r.strength_reference = strength->at("reference").as_string();
+    auto read_block = [](const JsonNode& block, std::vector<ResultJson::JointStrength>& entries,
+                         std::string& verdict) {
+      block.require_object();
+      verdict = block.at("verdict").as_string();
+      const JsonNode joints = block.at("joints");
+      joints.require_object();
+      for (const auto& [name, node] : joints.members()) {
+        node.require_object();
+        ResultJson::JointStrength e;
+        e.joint = name;
+        e.coordinate = node.at("coordinate").as_string();
+        e.direction = node.at("direction").as_string();
+        e.words = node.at("words").as_string();
+        e.share = node.at("share").as_double();
+        e.time_s = node.at("time_s").as_double();
+        e.moment_Nm = node.at("moment_Nm").as_double();
+        e.capacity_Nm = node.at("capacity_Nm").as_double();
+        e.angle_deg = node.at("angle_deg").as_double();
+        e.shortening_speed_rad_s = node.at("shortening_speed_rad_s").as_double();
+        e.extrapolated = read_bool(node.at("extrapolated"));
+        e.source = node.at("source").as_string();
+        entries.push_back(std::move(e));
+      }
+    };
+    read_block(strength->at("before"), r.strength_before, r.strength_verdict_before);
+    if (const auto after = strength->find("after"))
+      read_block(*after, r.strength_after, r.strength_verdict_after);
   }
   if (r.kind == ResultJson::Kind::kSimulation) {
     ResultJson::Simulation s;

@@ -15,8 +15,8 @@
 
 #include "saltus/evaluation/clearance.h"
 #include "saltus/evaluation/evaluate.h"
-#include "saltus/evaluation/joint_strength.h"
 #include "saltus/evaluation/simulate.h"
+#include "saltus/evaluation/strength_demand.h"
 #include "saltus/evaluation/yeadon_angles.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/formats/trajectory_csv.h"
@@ -75,11 +75,27 @@ struct ResultJson {
     std::optional<JointLoadPeak> after;
   };
   std::vector<JointLoad> joint_loads;
-  /// Each joint's peak moment per kg of body mass against the published maximal voluntary
-  /// moment at that joint (evaluation/joint_strength.h): of the optimised motion for
-  /// optimisations, of the evaluated one for evaluations; the root left out. Missing from files
-  /// before it.
-  std::vector<JointMomentShare> joint_moment_shares;
+  /// Each joint's largest share of the athlete's strength and when (evaluation/
+  /// strength_demand.h), over the dense check's points: of the evaluated or interpolated
+  /// ("before") motion and, for optimisations, of the optimised one ("after"); joints with a
+  /// strength curve, model order. Missing from files before it.
+  struct JointStrength {
+    std::string joint;       ///< "hip_l"
+    std::string coordinate;  ///< "hip_flexion_l" (body/joint_coordinates.h)
+    std::string direction;   ///< "flexion"
+    std::string words;       ///< "left hip flexion"
+    double share = 0.0;
+    double time_s = 0.0;
+    double moment_Nm = 0.0;
+    double capacity_Nm = 0.0;
+    double angle_deg = 0.0;
+    double shortening_speed_rad_s = 0.0;
+    bool extrapolated = false;
+    std::string source;  ///< the curve's ("Anderson et al. 2007, men 18-25")
+  };
+  std::vector<JointStrength> strength_before, strength_after;
+  /// strength_verdict_words of each, and whose strength it is ("population, male, 21 years").
+  std::string strength_verdict_before, strength_verdict_after, strength_reference;
   /// Yeadon's somersaults, twists, largest tilt and peak twist rate (evaluation/yeadon_angles.h)
   /// of the evaluated, simulated or interpolated motion and of the optimised one; missing from
   /// files before them. A simulation's peak rate is not known (its samples hold no ω): 0.

@@ -59,6 +59,24 @@ void check_person_size(double height_m, double mass_kg, const std::string& heigh
                          "]: is the height or the mass mistyped?");
 }
 
+StrengthSpec strength_from_flags(const std::string& reference, const std::string& sex,
+                                 double age_years) {
+  StrengthSpec spec;
+  if (reference != "population" && reference != "elite-gymnast")
+    throw InputError(
+        "--strength", "",
+        "expected population or elite-gymnast, found \"" + message_text(reference) + "\"");
+  spec.reference = reference;
+  spec.female = parse_sex(sex, "--sex") == Sex::kFemale;
+  if (!(age_years >= plausible::kMinAgeYears && age_years <= plausible::kMaxAgeYears))
+    throw InputError("--age", "",
+                     "an age of " + message_number(age_years) + " years is outside [" +
+                         message_number(plausible::kMinAgeYears) + ", " +
+                         message_number(plausible::kMaxAgeYears) + "] years");
+  spec.age_years = age_years;
+  return spec;
+}
+
 BodyModel new_athlete_model(const AthleteSize& size) {
   check_person_size(size.height_m, size.mass_kg, "--height", "--mass");
   return checked(de_leva_model(size));

@@ -17,6 +17,12 @@ namespace saltus {
 /// "female" or "male"; anything else is InputError naming `field` (e.g. "--sex").
 Sex parse_sex(const std::string& text, const std::string& field);
 
+/// An athlete's strength from the model verbs' flags: `reference` "population" or
+/// "elite-gymnast" (--strength), `sex` "female" or "male" (--sex), `age_years` within the
+/// plausible range (--age); InputError naming the flag otherwise.
+StrengthSpec strength_from_flags(const std::string& reference, const std::string& sex,
+                                 double age_years);
+
 /// Refuses, with InputError naming `height_field` or `mass_field`, a stature or a mass outside
 /// the human range (formats/plausible_ranges.h) or a pair whose body mass index no person has.
 void check_person_size(double height_m, double mass_kg, const std::string& height_field,

@@ -291,8 +291,56 @@ TEST(BodyModelJson, OptionalFieldsMayBeLeftOut) {
   EXPECT_EQ(model.segments[3].shape.type, "capsule");
 }
 
+TEST(BodyModelJson, StrengthRoundTripsAndDefaultsToAYoungMan) {
+  // The bundled athlete flies elite skills: the elite gymnast's strength.
+  EXPECT_EQ(load_body_model(kModelPath).strength.reference, "elite-gymnast");
+  // Without "strength": a young man's population strength.
+  nlohmann::json doc = good_document();
+  doc.erase("strength");
+  const BodyModel bundled = parse_body_model(doc, kBadFile);
+  EXPECT_EQ(bundled.strength.reference, "population");
+  EXPECT_FALSE(bundled.strength.female);
+  EXPECT_DOUBLE_EQ(bundled.strength.age_years, 21.0);
+  BodyModel model = bundled;
+  model.strength.reference = "elite-gymnast";
+  model.strength.female = true;
+  model.strength.age_years = 33.5;
+  model.strength.measured = {{"hip", "extension", 231.5}, {"knee_l", "flexion", 97.0}};
+  const nlohmann::json json = body_model_to_json(model);
+  EXPECT_EQ(json.at("strength").at("sex"), "female");
+  const BodyModel back = parse_body_model(nlohmann::json::parse(json.dump(2)), "text");
+  EXPECT_EQ(back.strength.reference, "elite-gymnast");
+  EXPECT_TRUE(back.strength.female);
+  EXPECT_DOUBLE_EQ(back.strength.age_years, 33.5);
+  ASSERT_EQ(back.strength.measured.size(), 2u);
+  EXPECT_EQ(back.strength.measured[1].joint, "knee_l");
+  EXPECT_EQ(back.strength.measured[1].direction, "flexion");
+  EXPECT_DOUBLE_EQ(back.strength.measured[1].peak_moment_Nm, 97.0);
+}
+
 // ----------------------------------------------------------------------------------------------
 // Validation: one test per kind of bad input.
+
+TEST(BodyModelValidation, StrengthNamesWhatItCannotUse) {
+  nlohmann::json doc = good_document();
+  doc["strength"] = {{"reference", "olympian"}};
+  expect_input_error(doc, "/strength/reference", "olympian");
+  doc["strength"] = {{"sex", "other"}};
+  expect_input_error(doc, "/strength/sex", "\"male\" or \"female\"");
+  doc["strength"] = {{"age_years", 300}};
+  expect_input_error(doc, "/strength/age_years", "years");
+  doc["strength"] = {
+      {"measured", {{{"joint", "hip"}, {"direction", "pronation"}, {"peak_moment_Nm", 100}}}}};
+  expect_input_error(doc, "/strength/measured/0", "pronation");
+  doc["strength"] = {
+      {"measured", {{{"joint", "tail"}, {"direction", "flexion"}, {"peak_moment_Nm", 100}}}}};
+  expect_input_error(doc, "/strength/measured/0", "tail");
+  doc["strength"] = {
+      {"measured", {{{"joint", "hip"}, {"direction", "flexion"}, {"peak_moment_Nm", -5}}}}};
+  expect_input_error(doc, "/strength/measured/0/peak_moment_Nm", "N·m");
+  doc["strength"] = {{"age", 20}};
+  expect_input_error(doc, "/strength/age", "age_years");
+}
 
 TEST(BodyModelValidation, GoodDocumentParses) {
   EXPECT_NO_THROW(parse_body_model(good_document(), kBadFile));

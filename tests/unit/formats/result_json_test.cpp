@@ -100,10 +100,14 @@ auto fields(const DiveEntry& e) {
                   e.vertical);
 }
 // By joint name: the file's object keeps no order (nlohmann sorts its keys).
-auto fields(const std::vector<JointMomentShare>& shares) {
-  std::vector<std::tuple<std::string, double, std::optional<double>, std::optional<double>>> all;
-  for (const JointMomentShare& s : shares)
-    all.emplace_back(s.joint, s.max_moment_per_kg, s.published_max_per_kg, s.share);
+auto fields(const std::vector<ResultJson::JointStrength>& entries) {
+  std::vector<std::tuple<std::string, std::string, std::string, std::string, double, double, double,
+                         double, double, double, bool, std::string>>
+      all;
+  for (const ResultJson::JointStrength& e : entries)
+    all.emplace_back(e.joint, e.coordinate, e.direction, e.words, e.share, e.time_s, e.moment_Nm,
+                     e.capacity_Nm, e.angle_deg, e.shortening_speed_rad_s, e.extrapolated,
+                     e.source);
   std::sort(all.begin(), all.end());
   return all;
 }
@@ -126,7 +130,10 @@ void expect_same(const ResultJson& a, const ResultJson& b) {
   EXPECT_TRUE(optional_fields(a.clearance) == optional_fields(b.clearance));
   EXPECT_TRUE(optional_fields(a.entry) == optional_fields(b.entry));
   EXPECT_TRUE(optional_fields(a.optimization) == optional_fields(b.optimization));
-  EXPECT_TRUE(fields(a.joint_moment_shares) == fields(b.joint_moment_shares));
+  EXPECT_TRUE(fields(a.strength_before) == fields(b.strength_before));
+  EXPECT_TRUE(fields(a.strength_after) == fields(b.strength_after));
+  EXPECT_EQ(std::tie(a.strength_reference, a.strength_verdict_before, a.strength_verdict_after),
+            std::tie(b.strength_reference, b.strength_verdict_before, b.strength_verdict_after));
 }
 
 /// A result.json of `kind` with seeded values in every field the kind has.
@@ -184,11 +191,22 @@ ResultJson random_result(ResultJson::Kind kind, std::mt19937& rng) {
       r.residual_check->converged = rng() % 2;
     }
     if (kind == ResultJson::Kind::kOptimization) r.residual_check->optimizer_agrees = rng() % 2;
-    // Joints with and without a bound.
-    std::vector<std::pair<std::string, double>> peaks;
-    for (const char* joint : {"elbow_l", "hip_r", "knee_l", "lumbar"})
-      peaks.emplace_back(joint, positive(rng) / 10);
-    r.joint_moment_shares = joint_moment_shares(peaks, 40 + positive(rng) / 100);
+    r.strength_reference = "reference " + std::to_string(rng());
+    auto entries = [&] {
+      std::vector<ResultJson::JointStrength> out;
+      for (const char* joint : {"elbow_l", "hip_r", "knee_l", "lumbar"})
+        out.push_back({joint, std::string(joint) + "_flexion", "flexion",
+                       std::string("the ") + joint, positive(rng), positive(rng), positive(rng),
+                       positive(rng), any(rng), any(rng), rng() % 2 == 0,
+                       "source " + std::to_string(rng())});
+      return out;
+    };
+    r.strength_before = entries();
+    r.strength_verdict_before = "verdict " + std::to_string(rng());
+    if (kind == ResultJson::Kind::kOptimization) {
+      r.strength_after = entries();
+      r.strength_verdict_after = "verdict " + std::to_string(rng());
+    }
   }
   if (kind != ResultJson::Kind::kOptimization)
     r.takeoff_angular_momentum = Eigen::Vector3d(any(rng), any(rng), any(rng));
@@ -316,26 +334,27 @@ TEST(ResultJson, KeysAreThoseOfDesignSection6) {
                           "takeoff_angular_momentum",
                           "residual_check",
                           "clearance",
-                          "joint_moment_shares"})
+                          "joint_strength"})
     EXPECT_TRUE(e.contains(key)) << key;
   // "entry" for dives only.
   EXPECT_EQ(e.contains("entry"), e["clearance"]["apparatus"] == "platform");
   EXPECT_EQ(e.size(), 24u + e.contains("entry")) << e.dump();
-  EXPECT_EQ(e["joint_moment_shares"]["motion"], "before");
-  for (const char* key : {"max_moment_per_kg", "published_max_per_kg", "share_of_published_max"})
-    EXPECT_TRUE(e["joint_moment_shares"]["joints"]["knee_l"].contains(key)) << key;
-  EXPECT_TRUE(e["joint_moment_shares"]["joints"]["hip_r"]["share_of_published_max"].is_null());
-  EXPECT_TRUE(e["joint_moment_shares"]["largest"].is_string());
+  for (const char* key :
+       {"coordinate", "direction", "words", "share", "time_s", "moment_Nm", "capacity_Nm",
+        "angle_deg", "shortening_speed_rad_s", "extrapolated", "source"})
+    EXPECT_TRUE(e["joint_strength"]["before"]["joints"]["knee_l"].contains(key)) << key;
+  EXPECT_TRUE(e["joint_strength"]["before"]["verdict"].is_string());
+  EXPECT_FALSE(e["joint_strength"].contains("after"));
   EXPECT_TRUE(e["after"].is_null());
   EXPECT_TRUE(e["iterations"].is_null());
   EXPECT_TRUE(e["samples"].is_number_integer());
   const nlohmann::json o = result_to_json(random_result(ResultJson::Kind::kOptimization, rng));
-  for (const char* key : {"knots_per_interval_requested", "ipopt_status", "restarts", "formulation",
-                          "timing_optimized", "tolerances", "joint_turn_limit_deg",
-                          "largest_joint_turn_deg", "resolution", "keyframe_time_spread_s",
-                          "keyframe_times_undetermined", "joint_moment_shares"})
+  for (const char* key :
+       {"knots_per_interval_requested", "ipopt_status", "restarts", "formulation",
+        "timing_optimized", "tolerances", "joint_turn_limit_deg", "largest_joint_turn_deg",
+        "resolution", "keyframe_time_spread_s", "keyframe_times_undetermined", "joint_strength"})
     EXPECT_TRUE(o.contains(key)) << key;
-  EXPECT_EQ(o["joint_moment_shares"]["motion"], "after");
+  EXPECT_TRUE(o["joint_strength"]["after"]["verdict"].is_string());
   for (const char* key : {"automatic", "subdivisions", "knots", "levels"})
     EXPECT_TRUE(o["resolution"].contains(key)) << key;
   EXPECT_TRUE(o["resolution"]["automatic"].is_boolean());
@@ -359,11 +378,10 @@ TEST(ResultJson, KeysAreThoseOfDesignSection6) {
 TEST(ResultJson, OlderOptimisationResultsWithoutTheLaterKeysStillRead) {
   std::mt19937 rng(5);
   nlohmann::json j = result_to_json(random_result(ResultJson::Kind::kOptimization, rng));
-  for (const char* key :
-       {"restarts", "tolerances", "largest_joint_turn_deg", "ipopt_status", "joint_moment_shares",
-        "knots_per_interval_requested", "joint_turn_limit_deg", "formulation", "timing_optimized",
-        "epsilon", "residual_check", "resolution", "keyframe_time_spread_s",
-        "keyframe_times_undetermined"})
+  for (const char* key : {"restarts", "tolerances", "largest_joint_turn_deg", "ipopt_status",
+                          "joint_strength", "knots_per_interval_requested", "joint_turn_limit_deg",
+                          "formulation", "timing_optimized", "epsilon", "residual_check",
+                          "resolution", "keyframe_time_spread_s", "keyframe_times_undetermined"})
     j.erase(key);
   for (const char* stage : {"before", "after"})
     for (const char* key : {"optimizer_objective", "optimizer_avg_root_force"})
