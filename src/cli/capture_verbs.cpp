@@ -20,46 +20,9 @@ std::string absolute(const std::string& path) {
   return std::filesystem::absolute(path).lexically_normal().string();
 }
 
-/// A whole-string number, or InputError naming the option.
-double parse_number(const std::string& text, const std::string& option) {
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || !std::isfinite(v))
-    throw saltus::InputError(option, "",
-                             "expected a number, found \"" + saltus::message_text(text) + "\"");
-  return v;
-}
-
 saltus::CaptureFileOptions import_options(const ImportArgs& args) {
-  saltus::CaptureFileOptions o;
-  o.model = args.model;
-  o.mapping = args.mapping;
-  if (args.keyframes == "all") {
-    o.import.all_keyframes = true;
-  } else if (!args.keyframes.empty()) {
-    const double n = parse_number(args.keyframes, "--keyframes");
-    if (n < 2 || n != static_cast<int>(n))
-      throw saltus::InputError("--keyframes", "",
-                               "expected a whole number >= 2 or \"all\", found \"" +
-                                   saltus::message_text(args.keyframes) + "\"");
-    o.import.keyframe_count = static_cast<int>(n);
-  }
-  if (!args.flight.empty()) {
-    const std::size_t colon = args.flight.find(':');
-    if (colon == std::string::npos)
-      throw saltus::InputError(
-          "--flight", "",
-          "expected START:END in seconds, found \"" + saltus::message_text(args.flight) + "\"");
-    const double start = parse_number(args.flight.substr(0, colon), "--flight");
-    const double end = parse_number(args.flight.substr(colon + 1), "--flight");
-    if (!(start < end))
-      throw saltus::InputError(
-          "--flight", "",
-          "START must be before END: \"" + saltus::message_text(args.flight) + "\"");
-    o.import.flight = std::make_pair(start, end);
-  }
-  if (args.frame_time > 0) o.import.frame_time = args.frame_time;
-  return o;
+  return saltus::capture_import_options(args.model, args.mapping, args.keyframes, args.flight,
+                                        args.frame_time);
 }
 
 void print_vector(const char* label, const Eigen::Vector3d& v, const char* unit) {

@@ -45,7 +45,7 @@ struct RunArgs {
   int jobs = available_cpus();
   std::string shard;
   bool resume = false;
-  double case_time_limit_s = 900.0;
+  double case_time_limit_s = kDefaultCaseTimeLimitS;
   std::string emit_slurm;
   int shards = 0;
   bool no_early_stop = false;
@@ -426,12 +426,6 @@ int StudyVerbs::State::run_convergence() const {
   for (double percent : a.mass_errors_percent)
     options.mass_errors.push_back(percent / 100.0);
   options.mass_segments = a.mass_segments;
-  for (const std::string& segment : options.mass_segments)
-    for (const LabelledMotion& m : motions)
-      if (segment != "all" && m.file.model.segment_index(segment) < 0)
-        throw InputError(
-            m.file.path, "",
-            "--mass-segments: model " + m.file.model.name + " has no segment '" + segment + "'");
   options.timing_errors = a.timing_errors;
   options.seed = a.seed;
   if (a.run.no_early_stop) options.strict_checkpoints.clear();

@@ -159,7 +159,10 @@ MotionFile load_motion_for_athlete(const std::string& path, const std::string& m
                                    TakeoffRule rule) {
   MotionFile athlete = load_motion_or_capture(path, model_override);
   if (model_override.empty()) return athlete;
-  const MotionFile own = load_motion_or_capture(path, "");
+  return adapt_takeoff_to_athlete(load_motion_or_capture(path, ""), std::move(athlete), rule);
+}
+
+MotionFile adapt_takeoff_to_athlete(const MotionFile& own, MotionFile athlete, TakeoffRule rule) {
   // Only poses are needed (no dense residual check): the take-off pose for the inertias, and the
   // flight on a uniform grid when the motion gives no L to fit one from.
   const Trajectory<double> own_trajectory = motion_trajectory(own.motion, own.model);

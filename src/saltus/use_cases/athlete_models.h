@@ -66,6 +66,12 @@ TakeoffRule parse_takeoff_rule(const std::string& text, const std::string& field
 MotionFile load_motion_for_athlete(const std::string& path, const std::string& model_override,
                                    TakeoffRule rule);
 
+/// load_motion_for_athlete's step after reading: `athlete`, the motion of `own` on another
+/// athlete's model (the same keyframes, checked against that model), gets its take-off angular
+/// momentum by `rule` from `own`'s and says so in takeoff_adaptation. For motions in memory (the
+/// Python module).
+MotionFile adapt_takeoff_to_athlete(const MotionFile& own, MotionFile athlete, TakeoffRule rule);
+
 /// Writes a model file (save_body_model_file): atomic, never over a file Saltus did not write.
 void write_athlete_model(const std::string& path, const BodyModel& model);
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
@@ -418,6 +419,54 @@ nlohmann::json write_capture_outputs(const std::string& out_dir, const CaptureFi
 
 bool is_capture_path(const std::string& path) {
   return lower(fs::path(path).extension().string()) == ".bvh";
+}
+
+namespace {
+
+/// A whole-string number, or InputError naming the flag.
+double flag_number(const std::string& text, const std::string& flag) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(v))
+    throw InputError(flag, "", "expected a number, found \"" + message_text(text) + "\"");
+  return v;
+}
+
+}  // namespace
+
+CaptureFileOptions capture_import_options(const std::string& model, const std::string& mapping,
+                                          const std::string& keyframes, const std::string& flight,
+                                          double frame_time) {
+  CaptureFileOptions o;
+  o.model = model;
+  o.mapping = mapping;
+  if (keyframes == "all") {
+    o.import.all_keyframes = true;
+  } else if (!keyframes.empty()) {
+    const double n = flag_number(keyframes, "--keyframes");
+    if (n < 2 || n != static_cast<int>(n))
+      throw InputError(
+          "--keyframes", "",
+          "expected a whole number >= 2 or \"all\", found \"" + message_text(keyframes) + "\"");
+    o.import.keyframe_count = static_cast<int>(n);
+  }
+  if (!flight.empty()) {
+    const std::size_t colon = flight.find(':');
+    if (colon == std::string::npos)
+      throw InputError("--flight", "",
+                       "expected START:END in seconds, found \"" + message_text(flight) + "\"");
+    const double start = flag_number(flight.substr(0, colon), "--flight");
+    const double end = flag_number(flight.substr(colon + 1), "--flight");
+    if (!(start < end))
+      throw InputError("--flight", "",
+                       "START must be before END: \"" + message_text(flight) + "\"");
+    o.import.flight = std::make_pair(start, end);
+  }
+  if (!(frame_time >= 0) || !std::isfinite(frame_time))
+    throw InputError("--frame-time", "",
+                     "expected seconds per frame > 0, found " + message_number(frame_time));
+  if (frame_time > 0) o.import.frame_time = frame_time;
+  return o;
 }
 
 MotionFile load_motion_or_capture(const std::string& path, const std::string& model_override) {

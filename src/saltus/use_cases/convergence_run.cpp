@@ -32,6 +32,12 @@ CaseRecord convergence_case_record(int index, const StudyOutcome& outcome,
 
 StudyJob convergence_study_job(const std::vector<LabelledMotion>& motions,
                                const ConvergenceStudyOptions& options) {
+  for (const std::string& segment : options.mass_segments)
+    for (const LabelledMotion& m : motions)
+      if (segment != "all" && m.file.model.segment_index(segment) < 0)
+        throw InputError(
+            m.file.path, "",
+            "--mass-segments: model " + m.file.model.name + " has no segment '" + segment + "'");
   auto shared_motions = std::make_shared<const std::vector<LabelledMotion>>(motions);
   auto cases =
       std::make_shared<const std::vector<StudyCase>>(convergence_study_cases(motions, options));

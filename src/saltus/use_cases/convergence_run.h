@@ -18,7 +18,8 @@ namespace saltus {
 /// study.json's "study" for a convergence study.
 inline constexpr const char* kConvergenceStudy = "convergence";
 
-/// The study for the runner (study_runner.h).
+/// The study for the runner (study_runner.h). InputError naming the motion's file when a
+/// mass segment other than "all" is not a segment of its model.
 StudyJob convergence_study_job(const std::vector<LabelledMotion>& motions,
                                const ConvergenceStudyOptions& options);
 

@@ -33,6 +33,10 @@ struct StudyJob {
   std::function<CaseRecord(int index, const WorkerExit& exit)> unfinished_case;
 };
 
+/// s: a case still running after this is killed and recorded as timed out, unless the user
+/// says otherwise (`--case-time-limit`).
+inline constexpr double kDefaultCaseTimeLimitS = 900.0;
+
 struct StudyRunOptions {
   int jobs = 1;
   double case_time_limit_s = 0.0;  ///< 0: none

@@ -141,5 +141,26 @@ TEST(AthleteModels, TheSameSpinOnAScaledAthleteFliesTheSameRotation) {
   EXPECT_EQ(ath_error_of([] { parse_takeoff_rule("spin", "--takeoff"); }).file(), "--takeoff");
 }
 
+TEST(AthleteModels, AMotionInMemoryIsCarriedOverAsItsFileIs) {
+  // adapt_takeoff_to_athlete is load_motion_for_athlete's step after reading: from motions in
+  // memory it gives what the files give, to the last bit.
+  const test::TempDir dir;
+  const MotionFile own = load_motion_file(test::m1_path());
+  const std::string big = dir / "big.model.json";
+  save_body_model_file(big, scale_body_model(own.model, 1.1, 1.3, "big"));
+  for (const TakeoffRule rule : {TakeoffRule::kSameSpin, TakeoffRule::kKeepMomentum}) {
+    const MotionFile from_files = load_motion_for_athlete(test::m1_path(), big, rule);
+    const MotionFile from_memory =
+        adapt_takeoff_to_athlete(own, load_motion_file(test::m1_path(), big), rule);
+    ASSERT_TRUE(from_memory.takeoff_adaptation);
+    EXPECT_EQ(from_memory.takeoff_adaptation->rule, from_files.takeoff_adaptation->rule);
+    EXPECT_EQ(from_memory.takeoff_adaptation->angular_momentum,
+              from_files.takeoff_adaptation->angular_momentum);
+    EXPECT_EQ(*from_memory.motion.takeoff.angular_momentum,
+              *from_files.motion.takeoff.angular_momentum);
+    EXPECT_EQ(from_memory.model.name, "big");
+  }
+}
+
 }  // namespace
 }  // namespace saltus

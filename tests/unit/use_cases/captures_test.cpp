@@ -220,5 +220,38 @@ TEST(CaptureFiles, AFolderWithNothingToExportIsAnInputError) {
   EXPECT_THROW(load_export_source(empty.string()), InputError);
 }
 
+TEST(CaptureFiles, ImportOptionsFromTheFlagsText) {
+  const CaptureFileOptions defaults = capture_import_options("m", "map.json", "", "", 0.0);
+  EXPECT_EQ(defaults.model, "m");
+  EXPECT_EQ(defaults.mapping, "map.json");
+  EXPECT_FALSE(defaults.import.all_keyframes);
+  EXPECT_FALSE(defaults.import.flight.has_value());
+  EXPECT_EQ(defaults.import.frame_time, CaptureImportOptions{}.frame_time);
+  EXPECT_TRUE(capture_import_options("", "", "all", "", 0.0).import.all_keyframes);
+  const CaptureFileOptions given = capture_import_options("", "", "7", "0.25:1.5", 0.01);
+  EXPECT_EQ(given.import.keyframe_count, 7);
+  ASSERT_TRUE(given.import.flight.has_value());
+  EXPECT_EQ(given.import.flight->first, 0.25);
+  EXPECT_EQ(given.import.flight->second, 1.5);
+  EXPECT_EQ(given.import.frame_time, 0.01);
+  const auto refused_flag = [](const std::string& keyframes, const std::string& flight,
+                               double frame_time) {
+    try {
+      capture_import_options("", "", keyframes, flight, frame_time);
+    } catch (const InputError& e) {
+      return e.file();
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(refused_flag("1", "", 0), "--keyframes");
+  EXPECT_EQ(refused_flag("2.5", "", 0), "--keyframes");
+  EXPECT_EQ(refused_flag("some", "", 0), "--keyframes");
+  EXPECT_EQ(refused_flag("", "0.5", 0), "--flight");
+  EXPECT_EQ(refused_flag("", "1:0.5", 0), "--flight");
+  EXPECT_EQ(refused_flag("", "a:1", 0), "--flight");
+  EXPECT_EQ(refused_flag("", "", -0.01), "--frame-time");
+  EXPECT_EQ(refused_flag("", "", std::nan("")), "--frame-time");
+}
+
 }  // namespace
 }  // namespace saltus

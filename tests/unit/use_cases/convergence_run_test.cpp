@@ -62,5 +62,18 @@ TEST(ConvergenceRun, OutputsAreRefusedForRecordsOfAnotherKind) {
       InputError);
 }
 
+TEST(ConvergenceRun, AMassSegmentTheModelLacksIsRefusedNamingTheMotion) {
+  ConvergenceStudyOptions o = small_design();
+  o.mass_segments = {"all", "tail"};
+  try {
+    convergence_study_job({labelled_m1()}, o);
+    FAIL() << "a segment the model lacks was taken";
+  } catch (const InputError& e) {
+    EXPECT_NE(e.file().find("M1-straight-back-somersault"), std::string::npos) << e.what();
+    EXPECT_NE(e.problem().find("--mass-segments"), std::string::npos) << e.what();
+    EXPECT_NE(e.problem().find("'tail'"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace saltus
