@@ -53,10 +53,10 @@ if ((${#missing[@]})); then
 fi
 
 if [ "$mode" = demo ]; then
-  # The demo builds what it runs: the command line and the app, not the tests.
-  stage "configure and build saltus and saltus-gui (Release)"
+  # The demo builds what it runs: the command line, the app and the Python module, not the tests.
+  stage "configure and build saltus, saltus-gui and the Python module (Release)"
   cmake --preset release >/dev/null
-  cmake --build --preset release -j"$(nproc)" --target saltus_cli saltus_gui
+  cmake --build --preset release -j"$(nproc)" --target saltus_cli saltus_gui saltus_python
   stage "the bundled motions: evaluate, simulate, optimise"
   motion=examples/motions/M1-straight-back-somersault.motion.json
   echo "== saltus evaluate $motion"
@@ -74,6 +74,11 @@ if [ "$mode" = demo ]; then
     echo "== saltus analyse twist examples/motions/$name.motion.json"
     build/release/bin/saltus analyse twist "examples/motions/$name.motion.json" --out "out/$name-twist"
   done
+  stage "the same from Python (python/README.md)"
+  PYTHONPATH=build/release/python /usr/bin/python3 -c 'import saltus
+r = saltus.optimize("examples/motions/M1-straight-back-somersault.motion.json")
+print("M1 from Python: average root force %.4g N -> %.4g N (%s)"
+      % (r.before.average_root_force, r.after.average_root_force, r.status))'
   echo "-- $((SECONDS - stage_start)) s (total $SECONDS s)"
   exit 0
 fi
