@@ -2,6 +2,7 @@
 // their results as objects with numpy arrays. Each file binds one part (module.h).
 
 #include "module.h"
+#include "saltus/optim/solver_memory.h"
 
 PYBIND11_MODULE(saltus, m) {
   namespace sp = saltus_python;
@@ -17,6 +18,10 @@ PYBIND11_MODULE(saltus, m) {
       "and write the CLI's result folders. Bad input raises InputError (a ValueError) naming the "
       "file and field. docs/python.md.";
   m.attr("__version__") = "0.1.0";
+  // The process-wide setting the `saltus` program makes in its main (optim/solver_memory.h):
+  // without it every solver iteration maps its fronts afresh, and optimize from Python would be
+  // slower than the CLI.
+  saltus::keep_solver_memory_in_heap();
   sp::bind_errors(m);
   sp::bind_options(m);
   sp::bind_motions(m);

@@ -1,12 +1,36 @@
 #include "saltus/optim/ipopt_solver.h"
 
+#include <dlfcn.h>
 #include <IpDenseVector.hpp>
 #include <IpIpoptApplication.hpp>
 #include <IpIpoptData.hpp>
 #include <IpIteratesVector.hpp>
 #include <IpTNLP.hpp>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <mutex>
+
+// One MUMPS call at a time in a process. Ipopt's linear solver, MUMPS (Debian's 5.5, sequential),
+// keeps the factorisation's load-balancing data in Fortran module variables shared by every
+// instance: two optimisations at once in one process (two threads of the Python module) crashed
+// in dmumps_load_update. Ipopt calls MUMPS only through dmumps_c, so this definition, found
+// before MUMPS's own (the program's or the module's symbols come first), takes a lock and
+// calls MUMPS's; everything else of two solves (the NLP's callbacks, Ipopt's own steps) still
+// runs at once.
+extern "C" void dmumps_c(void* mumps_data) {
+  using Mumps = void (*)(void*);
+  static const Mumps mumps = reinterpret_cast<Mumps>(dlsym(RTLD_NEXT, "dmumps_c"));
+  static std::mutex one_at_a_time;
+  if (!mumps) {
+    std::fputs("saltus: MUMPS's dmumps_c not found beside Ipopt\n", stderr);
+    std::abort();
+  }
+  const std::lock_guard<std::mutex> lock(one_at_a_time);
+  mumps(mumps_data);
+}
 
 namespace saltus {
 

@@ -1,12 +1,17 @@
 // The Ipopt adapter (optim/ipopt_solver.h) alone, without the solve policy: it solves a problem
 // with a published optimum, shows the observer every iteration with the iterate Ipopt holds,
-// stops when the observer says so, starts where it is told and honours the iteration limit.
+// stops when the observer says so, starts where it is told and honours the iteration limit; and
+// several solves run at once in one process (threads; MUMPS's calls take turns).
 
 #include "saltus/optim/ipopt_solver.h"
 
 #include <gtest/gtest.h>
 
+#include <thread>
+
+#include "saltus/optim/optimize.h"
 #include "support/small_nlps.h"
+#include "support/test_motions.h"
 
 namespace saltus {
 namespace {
@@ -62,6 +67,27 @@ TEST(IpoptSolver, StartsWhereItIsTold) {
   ASSERT_EQ(first.size(), 4u);
   for (int i = 0; i < 4; ++i)
     EXPECT_NEAR(first[i], start[i], 1e-6);
+}
+
+TEST(IpoptSolver, SolvesAtOnceInSeveralThreadsAsAlone) {
+  // Without the lock around MUMPS's calls two of these crashed in MUMPS's load balancing.
+  const BodyModel model = test::bundled_model();
+  const Motion motion = test::tuck_motion(model);
+  OptimizeOptions options;
+  options.automatic_resolution = false;
+  options.nlp.joint_load_weight = 0.0;
+  options.solver.max_iterations = 8;
+  const OptimizationResult alone = optimize_motion(motion, model, options);
+  std::vector<OptimizationResult> together(4);
+  std::vector<std::thread> threads;
+  for (OptimizationResult& r : together)
+    threads.emplace_back([&] { r = optimize_motion(motion, model, options); });
+  for (std::thread& t : threads)
+    t.join();
+  for (const OptimizationResult& r : together) {
+    EXPECT_EQ(r.solve.iterations, alone.solve.iterations);
+    EXPECT_EQ(r.solve.x, alone.solve.x);
+  }
 }
 
 }  // namespace
