@@ -2,6 +2,7 @@
 refused by the library's own readers and the object stays as it was; bad arrays raise."""
 
 import copy
+import json
 import math
 
 import numpy as np
@@ -120,9 +121,14 @@ def test_copies_are_independent_and_an_edit_drops_the_stored_spline(m1_quick):
     assert other.model.total_mass == optimised.model.total_mass + 1.0
 
 
-def test_a_model_of_other_segments_is_refused():
+def test_a_model_of_other_segments_is_refused(tmp_path):
     motion = saltus.read_motion(M1)
-    model = motion.model
-    assert len(model.segment_names) == len(model.joint_names)
-    motion.model = saltus.model_new(1.80, 80, "male")  # the same 13 segments: accepted
+    motion.model = saltus.model_new(1.80, 80, "male")  # the same 13 segments: taken
+    assert motion.model.name.startswith("de-leva")
+    document = motion.model.to_json()
+    document["segments"] = document["segments"][:-1]  # a leaf segment less
+    (tmp_path / "short.model.json").write_text(json.dumps(document))
+    short = saltus.read_model(tmp_path / "short.model.json")
+    with pytest.raises(saltus.InputError):
+        motion.model = short
     assert motion.model.name.startswith("de-leva")

@@ -135,6 +135,15 @@ def test_study_athletes_and_merge_are_the_cli_s(tmp_path):
     assert table_without_seconds(tmp_path / "merged") == table_without_seconds(tmp_path / "py")
 
 
+def test_study_mass_is_the_cli_s(tmp_path):
+    run_cli("study", "mass", M1, "--max-iter", 15, "--out", tmp_path / "cli", "-q")
+    ours = saltus.study_mass(M1, tmp_path / "py", max_iter=15)
+    cli = json.loads((tmp_path / "cli" / "result.json").read_text())
+    assert_same_result(ours, cli)
+    for name in ("mass.csv", "model_scaled.json"):
+        assert filecmp.cmp(tmp_path / "cli" / name, tmp_path / "py" / name, shallow=False), name
+
+
 def test_the_studies_check_their_arguments_as_the_cli_does(tmp_path):
     junior = str(tmp_path / "junior.model.json")
     saltus.model_new(1.45, 38, "female", name="junior").write(junior)
