@@ -3,6 +3,7 @@
 #include "module.h"
 #include "saltus/evaluation/twist_sources.h"
 #include "saltus/evaluation/what_if.h"
+#include "saltus/formats/result_json.h"
 #include "saltus/formats/twist_files.h"
 #include "saltus/formats/what_if_files.h"
 #include "saltus/use_cases/athlete_models.h"
@@ -44,41 +45,23 @@ saltus::MotionFile athlete_motion(py::handle motion, py::handle model, const std
   return saltus::adapt_takeoff_to_athlete(own, std::move(athlete), rule);
 }
 
-py::dict yeadon_dict(const saltus::YeadonSummary& y) {
-  py::dict d;
-  d["somersaults"] = y.somersaults;
-  d["twists"] = y.twists;
-  d["max_tilt_deg"] = y.max_tilt_deg;
-  d["peak_twist_rate_rev_s"] = y.peak_twist_rate_rev_s;
-  d["description"] = y.description;
-  return d;
-}
-
-py::dict tuck_dict(const saltus::TuckPhases& t) {
-  py::dict d;
-  d["found"] = t.found;
-  d["reason"] = t.reason;
-  d["takeoff_bend_deg"] = t.takeoff_bend_deg;
-  d["peak_bend_deg"] = t.peak_bend_deg;
-  d["peak_time_s"] = t.peak_time_s;
-  d["landing_bend_deg"] = t.landing_bend_deg;
-  d["tuck_start_s"] = t.tuck_start_s;
-  d["tucked_s"] = t.tucked_s;
-  d["opens"] = t.opens;
-  d["open_start_s"] = t.open_start_s;
-  d["opened_s"] = t.opened_s;
-  d["tuck_later_range_s"] = py::make_tuple(t.tuck_later_min_s, t.tuck_later_max_s);
-  d["open_later_range_s"] = py::make_tuple(t.open_later_min_s, t.open_later_max_s);
+/// The tuck as result.json records it, with the bend over time the rule read as arrays.
+py::object tuck_dict(const saltus::TuckPhases& t) {
+  py::object d = python_json(saltus::tuck_json(t));
   d["times"] = readonly(doubles_array(t.times));
   d["bend_deg"] = readonly(doubles_array(t.bend_deg));
   return d;
 }
 
+py::object yeadon_dict(const saltus::YeadonSummary& y) {
+  return python_json(saltus::rotation_json(y));
+}
+
 const char* const kTuckDoc =
-    "the tuck as the library reads it off the legs' bend, a dict: found (and reason when not), "
-    "bend at take-off, peak and landing (°), the tuck-in's start and end and the opening's "
-    "(s), the ranges tuck_later and open_later may take (s), and the bend over time (times s, "
-    "bend_deg °, numpy arrays)";
+    "the tuck as the library reads it off the legs' bend, a dict as result.json's \"tuck\": "
+    "found (and reason when not), bend at take-off, peak and landing (°), the tuck-in's start "
+    "and end and the opening's (s), the ranges tuck_later and open_later may take (s); and the "
+    "bend over time (times s, bend_deg °, numpy arrays)";
 
 }  // namespace
 
@@ -137,12 +120,8 @@ void bind_analyses(py::module_& m) {
           "write",
           [](const TwistAnalysis& t, py::handle out) {
             const std::string dir = path_argument(out, "out");
-            nlohmann::json written;
-            {
-              py::gil_scoped_release release;
-              written = saltus::write_twist_outputs(dir, *t.file, *t.sources);
-            }
-            return python_json(written);
+            return write_released(
+                [&] { return saltus::write_twist_outputs(dir, *t.file, *t.sources); });
           },
           py::arg("out"),
           documented("write($self, out)", "Writes result.json, twist.csv and twist.md atomically.")
@@ -182,12 +161,9 @@ void bind_analyses(py::module_& m) {
           "write",
           [](const WhatIfFlight& w, py::handle out) {
             const std::string dir = path_argument(out, "out");
-            nlohmann::json written;
-            {
-              py::gil_scoped_release release;
-              written = saltus::write_what_if_outputs(dir, *w.file, *w.prepared, *w.result);
-            }
-            return python_json(written);
+            return write_released([&] {
+              return saltus::write_what_if_outputs(dir, *w.file, *w.prepared, *w.result);
+            });
           },
           py::arg("out"),
           documented("write($self, out)",

@@ -106,6 +106,15 @@ py::array_t<double> doubles_array(const std::vector<double>& values) {
   return a;
 }
 
+py::object write_released(const std::function<nlohmann::json()>& write) {
+  nlohmann::json written;
+  {
+    py::gil_scoped_release release;
+    written = write();
+  }
+  return python_json(written);
+}
+
 py::object python_json(const nlohmann::json& document) {
   return py::module_::import("json").attr("loads")(document.dump());
 }

@@ -8,6 +8,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -52,6 +53,9 @@ py::array_t<double> vector3_array(const Eigen::Vector3d& v);
 py::array_t<double> quaternion_array(const Eigen::Quaterniond& q);
 py::array_t<double> matrix3_array(const Eigen::Matrix3d& m);
 py::array_t<double> doubles_array(const std::vector<double>& values);
+/// Runs `write` (a library writer of a result folder) with the GIL released; returns the
+/// result.json it wrote as Python objects.
+py::object write_released(const std::function<nlohmann::json()>& write);
 /// A JSON document as Python objects (dict, list, float, ...), read by Python's json module so
 /// that every number is the one the file holds.
 py::object python_json(const nlohmann::json& document);

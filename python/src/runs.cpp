@@ -69,20 +69,13 @@ saltus::MotionFile run_motion(py::handle motion, py::handle model) {
 }
 
 py::object figures(const saltus::ForceMetrics& m) {
-  py::dict d;
-  d["average_root_force"] = m.avg_root_force;
-  d["objective"] = m.objective;
-  d["rms_root_force"] = m.rms_force_N;
-  d["max_root_force"] = m.max_force_N;
-  d["rms_root_moment"] = m.rms_moment_Nm;
-  d["max_root_moment"] = m.max_moment_Nm;
-  return std::move(d);
+  return python_json(saltus::force_metrics_to_json(m));
 }
 
 const char* const kFiguresDoc =
-    "the root force figures of the dense check, a dict: average_root_force = sqrt(J/6) N (the "
-    "paper's 'average force acting on the root'), objective J = (1/T)∫ΣF_i² dt N², "
-    "rms_root_force and max_root_force N, rms_root_moment and max_root_moment N·m";
+    "the root force figures of the dense check, a dict as result.json's \"before\": "
+    "avg_root_force = sqrt(J/6) N (the paper's 'average force acting on the root'), objective "
+    "J = (1/T)∫ΣF_i² dt N², rms_force_N and max_force_N, rms_moment_Nm and max_moment_Nm";
 
 /// Runs the optimiser with the GIL released. Each iteration takes the GIL briefly: it calls
 /// `progress` (if any), and in the main thread lets Python see Ctrl+C. Ctrl+C, or the callback
@@ -193,12 +186,9 @@ void bind_runs(py::module_& m) {
           "write",
           [](const Evaluation& e, py::handle out) {
             const std::string dir = path_argument(out, "out");
-            nlohmann::json written;
-            {
-              py::gil_scoped_release release;
-              written = saltus::write_evaluation_outputs(dir, *e.file, *e.evaluation, e.options);
-            }
-            return python_json(written);
+            return write_released([&] {
+              return saltus::write_evaluation_outputs(dir, *e.file, *e.evaluation, e.options);
+            });
           },
           py::arg("out"),
           documented("write($self, out)",
@@ -263,12 +253,9 @@ void bind_runs(py::module_& m) {
           "write",
           [](const Simulation& s, py::handle out) {
             const std::string dir = path_argument(out, "out");
-            nlohmann::json written;
-            {
-              py::gil_scoped_release release;
-              written = saltus::write_simulation_outputs(dir, *s.file, *s.simulation, s.options);
-            }
-            return python_json(written);
+            return write_released([&] {
+              return saltus::write_simulation_outputs(dir, *s.file, *s.simulation, s.options);
+            });
           },
           py::arg("out"),
           documented(
@@ -332,12 +319,9 @@ void bind_runs(py::module_& m) {
           "write",
           [](const Optimization& o, py::handle out) {
             const std::string dir = path_argument(out, "out");
-            nlohmann::json written;
-            {
-              py::gil_scoped_release release;
-              written = saltus::write_optimization_outputs(dir, *o.file, *o.result, o.options);
-            }
-            return python_json(written);
+            return write_released([&] {
+              return saltus::write_optimization_outputs(dir, *o.file, *o.result, o.options);
+            });
           },
           py::arg("out"),
           documented(

@@ -34,6 +34,16 @@ struct ResultFolder {
   std::shared_ptr<Flight> before, after;
 };
 
+/// One of an import's motions on its model, naming the model as the import's files do.
+MotionPtr capture_motion(const saltus::CaptureFile& capture, const saltus::Motion& motion) {
+  saltus::MotionFile f;
+  f.path = capture.path;
+  f.model = capture.model;
+  f.motion = motion;
+  f.motion.model = capture.model_reference;
+  return new_motion(f);
+}
+
 std::shared_ptr<Flight> csv_flight(std::shared_ptr<const saltus::ResultFolder> folder,
                                    std::shared_ptr<const saltus::BodyModel> model,
                                    const saltus::TrajectoryCsv& csv) {
@@ -144,23 +154,13 @@ void bind_verbs(py::module_& m) {
       .def_property_readonly(
           "keyframes",
           [](const CaptureImport& c) {
-            saltus::MotionFile f;
-            f.path = c.capture->path;
-            f.model = c.capture->model;
-            f.motion = c.capture->import.keyframes;
-            f.motion.model = c.capture->model_reference;
-            return new_motion(f);
+            return capture_motion(*c.capture, c.capture->import.keyframes);
           },
           "the picked keyframes, a Motion to evaluate or optimise")
       .def_property_readonly(
           "captured",
           [](const CaptureImport& c) {
-            saltus::MotionFile f;
-            f.path = c.capture->path;
-            f.model = c.capture->model;
-            f.motion = c.capture->import.captured;
-            f.motion.model = c.capture->model_reference;
-            return new_motion(f);
+            return capture_motion(*c.capture, c.capture->import.captured);
           },
           "every captured flight frame as a keyframe, a Motion")
       .def_property_readonly("warnings",
@@ -175,12 +175,7 @@ void bind_verbs(py::module_& m) {
           "write",
           [](const CaptureImport& c, py::handle out) {
             const std::string dir = path_argument(out, "out");
-            nlohmann::json written;
-            {
-              py::gil_scoped_release release;
-              written = saltus::write_capture_outputs(dir, *c.capture);
-            }
-            return python_json(written);
+            return write_released([&] { return saltus::write_capture_outputs(dir, *c.capture); });
           },
           py::arg("out"),
           documented(

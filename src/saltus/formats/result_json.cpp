@@ -187,8 +187,6 @@ nlohmann::json joint_peak_json(const JointLoadPeak& p, double body_weight) {
           {"peak_moment_time_s", p.moment_time_s}};
 }
 
-namespace {
-
 nlohmann::json rotation_json(const YeadonSummary& s) {
   return {{"somersaults", s.somersaults},
           {"twists", s.twists},
@@ -197,6 +195,8 @@ nlohmann::json rotation_json(const YeadonSummary& s) {
           {"peak_twist_rate_rev_s", s.peak_twist_rate_rev_s},
           {"peak_twist_rate_time_s", s.peak_twist_rate_time_s}};
 }
+
+namespace {
 
 /// "clearance": the edge and height keys name what they measure on each apparatus.
 nlohmann::json clearance_json(const ApparatusClearance& c) {

@@ -165,6 +165,9 @@ ResultJson read_result_json(const std::string& path);
 
 /// before/after block of result.json.
 nlohmann::json force_metrics_to_json(const ForceMetrics& metrics);
+/// Yeadon's summary of a flight as result.json's "rotation" blocks write it (somersaults,
+/// twists, description, max_tilt_deg, peak twist rate and its time).
+nlohmann::json rotation_json(const YeadonSummary& summary);
 /// One joint's peak load as result.json writes it: force (N, % of `body_weight` N, time) and
 /// moment (N·m, time).
 nlohmann::json joint_peak_json(const JointLoadPeak& peak, double body_weight);

@@ -8,8 +8,6 @@
 
 namespace saltus {
 
-namespace {
-
 nlohmann::json tuck_json(const TuckPhases& t) {
   if (!t.found) return {{"found", false}, {"reason", t.reason}};
   return {{"found", true},
@@ -25,6 +23,8 @@ nlohmann::json tuck_json(const TuckPhases& t) {
           {"tuck_later_range_s", {t.tuck_later_min_s, t.tuck_later_max_s}},
           {"open_later_range_s", {t.open_later_min_s, t.open_later_max_s}}};
 }
+
+namespace {
 
 nlohmann::json counts_json(const YeadonSummary& s) {
   return {{"somersaults", s.somersaults}, {"twists", s.twists}, {"description", s.description}};

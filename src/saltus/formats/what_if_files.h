@@ -13,6 +13,10 @@
 
 namespace saltus {
 
+/// A tuck as result.json's "tuck" and "changed_tuck" write it: found (and the reason when not),
+/// the bends and times of its phases, the shifts it allows.
+nlohmann::json tuck_json(const TuckPhases& tuck);
+
 nlohmann::json what_if_result_json(const MotionFile& file, const WhatIf& prepared,
                                    const WhatIfResult& result);
 /// t, then somersault, tilt and twist (degrees, φ and ψ continuous) of the what-if flight and of
