@@ -188,6 +188,25 @@ void bind_flights(py::module_& m) {
           "the moment each joint's parent applies on its segment, N·m, in the segment's frame "
           "about the joint centre, shape (n, segments − 1, 3); None as joint_forces")
       .def_property_readonly(
+          "strength_shares",
+          [](Flight& f) -> py::object {
+            const Samples& s = *f.samples;
+            if (s.empty() || s.front().strength_share.empty()) return py::none();
+            return cached(f, "strength_shares", [&]() {
+              const py::ssize_t joints = static_cast<py::ssize_t>(f.model->segments.size()) - 1;
+              py::array_t<double> a = new_array({static_cast<py::ssize_t>(s.size()), joints});
+              double* out = a.mutable_data();
+              for (const saltus::SampleRecord& r : s)
+                for (py::ssize_t j = 1; j <= joints; ++j)
+                  *out++ = r.strength_share[static_cast<std::size_t>(j)];
+              return a;
+            });
+          },
+          "each joint's largest share of the athlete's maximal moment at that angle and speed "
+          "(1: all the muscles can give; 0 where no direction has a strength curve), "
+          "dimensionless, shape (n, segments − 1) in joint_names' order; None when the samples "
+          "hold none (a trajectory CSV read back)")
+      .def_property_readonly(
           "somersault_tilt_twist",
           [](Flight& f) {
             return cached(f, "somersault_tilt_twist", [&]() {

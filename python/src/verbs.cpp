@@ -13,7 +13,7 @@
 #include "saltus/use_cases/athletes_run.h"
 #include "saltus/use_cases/captures.h"
 #include "saltus/use_cases/convergence_run.h"
-#include "saltus/use_cases/exports.h"
+#include "saltus/use_cases/motion_exports.h"
 #include "saltus/use_cases/paper_report_run.h"
 #include "saltus/use_cases/result_folders.h"
 #include "saltus/use_cases/study_runner.h"
@@ -230,42 +230,47 @@ void bind_verbs(py::module_& m) {
 
   std::string format_names;
   for (const saltus::ExportFormat& f : saltus::export_formats())
-    format_names += (format_names.empty() ? "" : ", ") + f.name + " (" + f.description + ")";
+    format_names += (format_names.empty() ? "'" : ", '") + f.name + "' (" + f.title + ")";
   m.def(
       "export",
       [](py::handle source, py::handle out, const std::string& format, double fps,
          py::handle capture) {
-        saltus::ExportRequest request;
-        if (py::isinstance<PyMotion>(source))
-          throw_input_error("source",
-                            "export reads a file or a result folder: write the motion first "
-                            "(Motion.write) and export its path");
-        request.source = path_argument(source, "source");
-        request.out_path = path_argument(out, "out");
-        request.fps = fps;
-        if (!capture.is_none()) request.capture = path_argument(capture, "capture");
+        saltus::ExportOptions options;
+        options.fps = fps;
+        if (!capture.is_none()) options.capture = path_argument(capture, "capture");
+        const std::string target = path_argument(out, "out");
         saltus::ExportSummary summary;
-        {
+        if (py::isinstance<PyMotion>(source)) {
+          const saltus::MotionFile file = motion_file(*py::cast<MotionPtr>(source));
           py::gil_scoped_release release;
-          summary = saltus::export_motion(format, request);
+          summary = saltus::export_motion(file, format, target, options);
+        } else {
+          const std::string path = path_argument(source, "source");
+          py::gil_scoped_release release;
+          summary = saltus::export_source(path, format, target, options);
         }
         py::dict d;
         d["format"] = summary.format;
         d["motion"] = summary.motion;
         d["model"] = summary.model;
-        d["details"] = summary.details;
+        d["frames"] = summary.frames;
+        d["frame_time"] = summary.frame_time;
+        d["description"] = summary.description;
+        d["files"] = summary.files;
+        d["bytes"] = summary.bytes;
         return d;
       },
       py::arg("source"), py::arg("out"), py::kw_only(), py::arg("format"), py::arg("fps") = 0.0,
       py::arg("capture") = py::none(),
       documented("export(source, out, *, format, fps=0.0, capture=None)",
-                 "`saltus export`: a motion file, a capture or a result folder of optimize or "
-                 "import written to the file `out` in `format`: " +
+                 "`saltus export`: `source` (a Motion in memory, or a motion file, a capture or "
+                 "a result folder of optimize or import) written to `out` (a file, or a folder "
+                 "for the folder formats) in `format`, one of the library's export formats: " +
                      format_names +
-                     ". fps: frames per second where the format takes it (0: its default); "
-                     "capture: the motion capture drawn beside the athlete where the format "
-                     "draws one. Returns a dict: format, motion, model, details (what was "
-                     "written, in words).")
+                     ". fps: frames per second of the sampled formats (0: the keyframes' rate "
+                     "when even, else 60); capture: the motion capture the page draws beside "
+                     "the athlete. Never over a file Saltus did not write. Returns a dict: "
+                     "format, motion, model, frames, frame_time, description, files, bytes.")
           .c_str());
   m.def(
       "export_formats",
@@ -274,32 +279,48 @@ void bind_verbs(py::module_& m) {
         for (const saltus::ExportFormat& f : saltus::export_formats()) {
           py::dict d;
           d["name"] = f.name;
-          d["description"] = f.description;
-          d["options"] = f.options;
+          d["title"] = f.title;
+          d["extension"] = f.extension;
+          d["sampled"] = f.sampled;
           out.append(d);
         }
         return out;
       },
       documented("export_formats()",
-                 "The formats export writes: name, description and the options each takes.")
+                 "The formats export writes, from the library's table: name, title, the "
+                 "output's extension ('' for a folder) and whether it is sampled at fps.")
           .c_str());
 
   // ---- athletes' models ----
+  const saltus::StrengthSpec strength_defaults;
+  const std::string strength_parameters =
+      "age=" + saltus::format_number("%.1f", strength_defaults.age_years) + ", strength='" +
+      strength_defaults.reference + "'";
+  const std::string strength_docs =
+      " age (years) and strength ('population': Anderson 2007's legs by sex and age, the upper "
+      "body scaled alike; 'elite-gymnast') give the athlete's strength curves, as the CLI's "
+      "--age and --strength.";
   m.def(
       "model_new",
-      [](double height, double mass, const std::string& sex, const std::string& name) {
+      [](double height, double mass, const std::string& sex, const std::string& name, double age,
+         const std::string& strength) {
         saltus::AthleteSize size;
         size.height_m = height;
         size.mass_kg = mass;
         size.sex = saltus::parse_sex(sex, "--sex");
         size.name = name;
-        return new_model(saltus::new_athlete_model(size));
+        saltus::BodyModel model = saltus::new_athlete_model(size);
+        model.strength = saltus::strength_from_flags(strength, sex, age);
+        return new_model(model);
       },
       py::arg("height"), py::arg("mass"), py::arg("sex"), py::arg("name") = "",
-      documented("model_new(height, mass, sex, name='')",
+      py::arg("age") = strength_defaults.age_years,
+      py::arg("strength") = strength_defaults.reference,
+      documented("model_new(height, mass, sex, name='', " + strength_parameters + ")",
                  "`saltus model new`: the body model of a person height m tall weighing mass kg, "
                  "sex 'female' or 'male' (de Leva 1996, on the bundled model's 13 segments); "
-                 "named from them unless `name`. Returns a Model (Model.write saves it).")
+                 "named from them unless `name`." +
+                     strength_docs + " Returns a Model (Model.write saves it).")
           .c_str());
   m.def(
       "model_scale",
@@ -317,20 +338,28 @@ void bind_verbs(py::module_& m) {
   m.def(
       "model_yeadon",
       [](py::handle measurements, const std::string& densities, double mass,
-         const std::string& name) {
+         const std::string& name, const std::string& sex, double age, const std::string& strength) {
         const std::string path = path_argument(measurements, "measurements");
-        const saltus::YeadonModel made = saltus::yeadon_athlete_model(path, densities, mass, name);
+        saltus::YeadonModel made = saltus::yeadon_athlete_model(path, densities, mass, name);
+        made.model.strength = saltus::strength_from_flags(strength, sex, age);
         for (const std::string& warning : made.warnings)
-          PyErr_WarnEx(PyExc_UserWarning, (path + ": " + warning).c_str(), 1);
+          if (PyErr_WarnEx(PyExc_UserWarning, (path + ": " + warning).c_str(), 1) != 0)
+            throw py::error_already_set();
         return new_model(made.model);
       },
       py::arg("measurements"), py::arg("densities") = "dempster", py::arg("mass") = 0.0,
-      py::arg("name") = "",
-      documented("model_yeadon(measurements, densities='dempster', mass=0.0, name='')",
+      py::arg("name") = "", py::arg("sex") = "male", py::arg("age") = strength_defaults.age_years,
+      py::arg("strength") = strength_defaults.reference,
+      documented("model_yeadon(measurements, densities='dempster', mass=0.0, name='', "
+                 "sex='male', " +
+                     strength_parameters + ")",
                  "`saltus model yeadon`: Yeadon's 1990 geometric model of the person measured "
                  "in the file (95 measurements, the yeadon package's text format), densities "
-                 "'dempster', 'chandler' or 'clauser', scaled to `mass` kg when > 0. Measurements "
-                 "that look wrong but are usable are UserWarnings. Returns a Model.")
+                 "'dempster', 'chandler' or 'clauser', scaled to `mass` kg when > 0; sex (for "
+                 "the strength tables)," +
+                     strength_docs +
+                     " Measurements that look wrong but are usable are UserWarnings. Returns a "
+                     "Model.")
           .c_str());
   m.def(
       "model_info",

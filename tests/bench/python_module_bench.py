@@ -28,7 +28,7 @@ ROOT = Path(__file__).resolve().parents[2]
 MOTIONS = {p.name.split("-")[0]: p for p in (ROOT / "examples" / "motions").glob("*.motion.json")}
 ARRAYS = ("times", "root_force", "root_moment", "residual_force", "residual_moment", "com",
           "com_velocity", "angular_momentum", "segment_positions", "segment_rotations",
-          "joint_forces", "joint_moments", "somersault_tilt_twist")
+          "joint_forces", "joint_moments", "strength_shares", "somersault_tilt_twist")
 
 
 def cli_seconds(cli, motion, out):

@@ -42,6 +42,18 @@ def test_the_arrays_are_the_trajectory_csv_s_columns(tmp_path):
     assert not e.root_force.flags.writeable
 
 
+def test_the_strength_shares_over_time_peak_where_result_json_says():
+    e = saltus.evaluate(M1, samples=2001)
+    shares = e.strength_shares
+    assert shares.shape == (len(e), len(e.joint_names)) and (shares >= 0).all()
+    peaks = e.result["joint_strength"]["before"]["joints"]
+    for j, joint in enumerate(e.joint_names):
+        # The dense check's peak is the largest over more points than the 2001 samples.
+        peak = peaks[joint]["share"]
+        assert shares[:, j].max() <= peak * (1 + 1e-9), joint
+        assert shares[:, j].max() == pytest.approx(peak, rel=0.02), joint
+
+
 def test_the_average_root_force_is_the_paper_s_sqrt_j_over_6():
     e = saltus.evaluate(M1, samples=2001)
     # Independently of the dense check: the trapezoidal rule on 2001 samples of the arrays.

@@ -57,18 +57,27 @@ def test_import_capture_is_saltus_import(tmp_path):
 
 
 def test_export_by_format_name_is_saltus_export(tmp_path):
-    names = [f["name"] for f in saltus.export_formats()]
-    assert "bvh" in names and "html" in names
+    formats = {f["name"]: f for f in saltus.export_formats()}
+    assert {"bvh", "html"} <= set(formats)
     run_cli("export", M1, "--format", "bvh", "--fps", 30, "--out", tmp_path / "cli.bvh", "-q")
     summary = saltus.export(M1, tmp_path / "py.bvh", format="bvh", fps=30)
     assert filecmp.cmp(tmp_path / "cli.bvh", tmp_path / "py.bvh", shallow=False)
-    assert summary["format"] == "bvh" and summary["details"]
+    assert summary["format"] == "bvh" and summary["frames"] == round(2.04 * 30) + 1
+    # A motion in memory exports as its file does.
+    saltus.export(saltus.read_motion(M1), tmp_path / "memory.bvh", format="bvh", fps=30)
+    assert filecmp.cmp(tmp_path / "cli.bvh", tmp_path / "memory.bvh", shallow=False)
     saltus.export(M1, tmp_path / "m1.html", format="html")
-    assert (tmp_path / "m1.html").read_text().startswith("<!DOCTYPE html>")
+    assert (tmp_path / "m1.html").read_text().lstrip().lower().startswith("<!doctype html>")
+    # Every other format of the table, by its name alone, as the CLI writes it.
+    for name, f in formats.items():
+        if name in ("bvh", "html"):
+            continue
+        out = "x" + f["extension"]
+        run_cli("export", M1, "--format", name, "--out", tmp_path / "cli" / out, "-q")
+        written = saltus.export(M1, tmp_path / "py" / out, format=name)
+        assert written["files"], name
     with pytest.raises(saltus.InputError, match="format"):
         saltus.export(M1, tmp_path / "x", format="obj")
-    with pytest.raises(saltus.InputError, match="fps"):
-        saltus.export(M1, tmp_path / "x.html", format="html", fps=30)
 
 
 def test_models_are_saltus_model_new_scale_yeadon_and_info(tmp_path):
@@ -94,6 +103,14 @@ def test_models_are_saltus_model_new_scale_yeadon_and_info(tmp_path):
     assert raised.value.file == "height"
     with pytest.raises(saltus.InputError, match="sex"):
         saltus.model_new(1.6, 55, "other")
+    run_cli("model", "new", "--height", 1.62, "--mass", 55, "--sex", "female", "--age", 40,
+            "--strength", "elite-gymnast", "--out", tmp_path / "cli-40.model.json", "-q")
+    saltus.model_new(1.62, 55, "female", age=40, strength="elite-gymnast").write(
+        tmp_path / "py-40.model.json")
+    assert filecmp.cmp(tmp_path / "cli-40.model.json", tmp_path / "py-40.model.json",
+                       shallow=False)
+    with pytest.raises(saltus.InputError, match="age"):
+        saltus.model_new(1.6, 55, "female", age=300)
 
 
 def test_a_result_folder_of_the_cli_reads_back(m1_quick):
