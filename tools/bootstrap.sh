@@ -27,7 +27,7 @@ packages=(build-essential cmake ninja-build pkg-config clang-format
 # WebDriver BiDi by a Python script with Debian's websocket client).
 [ "$mode" = test ] && packages+=(clang libclang-rt-14-dev llvm slurm-wlm munge parallel chromium
                                  firefox-esr python3-websocket python3-pytest python3-nbclient
-                                 python3-ipykernel jupyter-notebook libmujoco-dev)
+                                 python3-ipykernel jupyter-notebook libmujoco-dev nodejs)
 
 # Each stage's wall time, so CI logs show where the time goes (CI's limit is 60 minutes).
 stage_start=$SECONDS
@@ -41,6 +41,9 @@ missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+# Debian's nodejs comes without npm (its own package); NodeSource's carries it and conflicts with
+# Debian's npm, so npm is asked for only where the command is missing.
+[ "$mode" = test ] && ! command -v npm >/dev/null && missing+=(npm)
 if ((${#missing[@]})); then
   echo "== installing: ${missing[*]}"
   sudo_cmd=()
@@ -82,6 +85,12 @@ print("M1 from Python: average root force %.4g N -> %.4g N (%s)"
   echo "-- $((SECONDS - stage_start)) s (total $SECONDS s)"
   exit 0
 fi
+
+# The glTF export's test runs Khronos's glTF validator, an npm package pinned by
+# tests/support/npm/package-lock.json: npm ci installs exactly that version into
+# tests/support/npm/node_modules (from npm's cache when it holds it, so a rerun needs no network).
+stage "the glTF validator (npm ci in tests/support/npm)"
+(cd tests/support/npm && npm ci --prefer-offline --no-audit --no-fund --loglevel=error)
 
 stage "configure and build everything (Release)"
 cmake --preset release >/dev/null

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "support/chromium_page.h"
 #include "support/cli_runner.h"
 
 namespace saltus::test {
@@ -59,48 +60,9 @@ TEST(ExportHtml, WritesOnePageAndNeverOverAnotherFile) {
       << "nothing else written, no temporary left";
 }
 
-/// Fails the test (not skips it) when Chromium is missing.
-void require_chromium() {
-  ASSERT_EQ(run_command("command -v chromium").status, 0)
-      << "chromium is needed for this test: tools/bootstrap.sh test installs it";
-}
-
-/// Chromium headless with software WebGL (SwiftShader through ANGLE), its profile in `profile`.
-std::string chromium_command(const std::string& profile) {
-  return "timeout 60 chromium --headless --no-sandbox --disable-gpu --use-angle=swiftshader "
-         "--enable-unsafe-swiftshader --hide-scrollbars --mute-audio --no-first-run "
-         "--disable-extensions --disable-background-networking --user-data-dir=" +
-         profile;
-}
-
-std::string unescape_html(std::string text) {
-  for (const auto& [from, to] : {std::pair<std::string, std::string>{"&lt;", "<"},
-                                 {"&gt;", ">"},
-                                 {"&quot;", "\""},
-                                 {"&amp;", "&"}}) {
-    for (std::size_t at = text.find(from); at != std::string::npos;
-         at = text.find(from, at + to.size()))
-      text.replace(at, from.size(), to);
-  }
-  return text;
-}
-
 /// The findings of the page's own self-test (#selftest), read from the DOM Chromium dumps.
 nlohmann::json selftest_findings(const std::string& page, const std::string& profile) {
-  CliRun run =
-      run_command(chromium_command(profile) + " --virtual-time-budget=10000 --dump-dom 'file://" +
-                  page + "#selftest'");
-  EXPECT_EQ(run.status, 0) << run.output;
-  EXPECT_EQ(run.output.find("Uncaught"), std::string::npos) << run.output;
-  const std::string open = "<pre id=\"selftest-result\">";
-  const std::size_t start = run.output.find(open);
-  if (start == std::string::npos) {
-    ADD_FAILURE() << "no self-test result: " << run.output;
-    return nlohmann::json::object();
-  }
-  const std::size_t end = run.output.find("</pre>", start);
-  return nlohmann::json::parse(
-      unescape_html(run.output.substr(start + open.size(), end - start - open.size())));
+  return page_json("file://" + page + "#selftest", profile, "selftest-result");
 }
 
 /// Fails the test (not skips it) when Firefox or the script's websocket module is missing.

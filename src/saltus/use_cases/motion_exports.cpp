@@ -13,6 +13,7 @@
 #include "saltus/formats/bvh_file.h"
 #include "saltus/formats/finite_check.h"
 #include "saltus/formats/flight_page_assets.h"
+#include "saltus/formats/gltf_file.h"
 #include "saltus/formats/mujoco_files.h"
 #include "saltus/formats/output_folder.h"
 #include "saltus/motion/interpolate.h"
@@ -87,12 +88,24 @@ std::vector<ExportFile> mujoco_files(const MotionFile& motion, const ExportSampl
           {"result.json", result_text(result, source)}};
 }
 
-/// A sampled format: its files for a motion, and its description for people.
+std::vector<ExportFile> gltf_files(const MotionFile& motion, const ExportSamples& samples,
+                                   const std::string&) {
+  std::vector<Eigen::Vector3d> com;
+  for (const SampleRecord& r : samples.records)
+    com.push_back(r.com);
+  return {{"flight.glb",
+           gltf_binary(motion.model, motion.motion.name, samples.times, samples.states, com)}};
+}
+
+/// A sampled format: its files for a motion, its description for people, and for a format
+/// written as one file, how Saltus knows a file of that format it wrote (and may replace).
 struct SampledExport {
   std::function<std::vector<ExportFile>(const MotionFile&, const ExportSamples&,
                                         const std::string&)>
       files;
   std::function<std::string(const MotionFile&, const ExportSamples&)> description;
+  std::function<bool(const std::string&)> written_by_saltus;
+  std::string file_kind;  ///< "glTF file", for the message when a file is not Saltus's
 };
 
 std::string frames_words(const ExportSamples& samples) {
@@ -108,7 +121,17 @@ const SampledExport* sampled_export(const std::string& format) {
           return std::to_string(m.model.size()) + " bodies (model " + m.model.name +
                  "), a free joint and " + std::to_string(m.model.size() - 1) +
                  " ball joints, z up; " + frames_words(s) + " as keys and qpos, qvel, qacc";
-        }}},
+        },
+        {},
+        ""}},
+      {"gltf",
+       {gltf_files,
+        [](const MotionFile& m, const ExportSamples& s) {
+          return std::to_string(m.model.size()) + " nodes with their meshes (model " +
+                 m.model.name + "), one animation of " + frames_words(s) +
+                 ", the CoM's path; metres, y up";
+        },
+        gltf_written_by_saltus, "glTF file"}},
   };
   for (const auto& [name, exporter] : table)
     if (name == format) return &exporter;
@@ -150,6 +173,14 @@ ExportSummary export_sampled(const MotionFile& motion, const ExportFormat& forma
       s.files.push_back((fs::path(out) / f.name).string());
     }
     folder.commit();
+  } else {
+    write_output_file(out, files.front().contents, [exporter](const std::string& existing) {
+      return exporter->written_by_saltus(existing)
+                 ? std::string()
+                 : "exists and is not a " + exporter->file_kind +
+                       " Saltus wrote; it is left as it is (remove it or choose another --out)";
+    });
+    s.files = {out};
   }
   return s;
 }
@@ -179,6 +210,7 @@ const std::vector<ExportFormat>& export_formats() {
       {"bvh", "BVH (Blender and other animation tools)", ".bvh", true},
       {"html", "web page (opens offline in any browser)", ".html", false},
       {"mujoco", "MuJoCo (MJCF model, qpos/qvel/qacc trajectory)", "", true},
+      {"gltf", "glTF 2.0 (.glb for Blender, three.js and web viewers)", ".glb", true},
   };
   return formats;
 }

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "saltus/formats/csv_table.h"
+#include "saltus/formats/twist_files.h"
 
 namespace saltus {
 namespace {
