@@ -2,7 +2,8 @@
 // keyframes: their root keyframes were read off a free flight of their own joint movements. A
 // free-flight simulation of each file must therefore land on its last keyframe; the trampoline
 // skills must land upright and the dive must enter head down. Also checks the paper's keyframe
-// counts (Table 1) and take-off states (§3.4, §6.2; the aerial full twist has M1's take-off).
+// counts (Table 1) and take-off states (§3.4, §6.2; the aerial full twist has M1's take-off), and
+// that each exports in every format of `saltus export`.
 
 #include <gtest/gtest.h>
 
@@ -17,6 +18,9 @@
 #include "saltus/evaluation/simulate.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/motion/motion.h"
+#include "saltus/use_cases/captures.h"
+#include "saltus/use_cases/motion_exports.h"
+#include "support/temp_path.h"
 
 namespace saltus {
 namespace {
@@ -116,6 +120,25 @@ TEST_P(ExampleMotion, FreeFlightLandsOnTheLastKeyframe) {
   } else {
     EXPECT_LT(flight.landing_root_error_deg, 5.0);
     EXPECT_LT(long_axis_angle_deg(flight_end, false), 6.0);
+  }
+}
+
+TEST_P(ExampleMotion, ExportsInEveryFormatForOtherTools) {
+  const MotionFile file = load_motion_file(GetParam());
+  const double fps = default_export_fps(file.motion);
+  for (const ExportFormat& format : export_formats()) {
+    const std::string out =
+        test::temp_path(fs::path(GetParam()).stem().string() + "-" + format.name + format.extension)
+            .string();
+    const ExportSummary summary = export_source(GetParam(), format.name, out);
+    EXPECT_EQ(summary.format, format.name);
+    if (format.sampled) {
+      EXPECT_EQ(summary.frames, std::round(file.motion.flight_time() * fps) + 1) << format.name;
+    }
+    ASSERT_FALSE(summary.files.empty()) << format.name;
+    for (const std::string& written : summary.files)
+      EXPECT_GT(fs::file_size(written), 0u) << written;
+    EXPECT_GT(summary.bytes, 1000u) << format.name;
   }
 }
 

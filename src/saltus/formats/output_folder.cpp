@@ -113,6 +113,15 @@ const std::vector<ResultKind>& result_kinds() {
        {},
        {},
        false},
+      // saltus export --format opensim (use_cases/motion_exports).
+      {"export opensim",
+       "saltus-export/1",
+       "export",
+       {"opensim"},
+       {"result.json", "model.osim", "coordinates.mot", "inverse_dynamics.sto"},
+       {},
+       {},
+       false},
       // saltus import (use_cases/captures).
       {"import",
        "saltus-result/1",

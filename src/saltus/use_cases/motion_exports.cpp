@@ -15,6 +15,7 @@
 #include "saltus/formats/flight_page_assets.h"
 #include "saltus/formats/gltf_file.h"
 #include "saltus/formats/mujoco_files.h"
+#include "saltus/formats/opensim_files.h"
 #include "saltus/formats/output_folder.h"
 #include "saltus/motion/interpolate.h"
 #include "saltus/use_cases/captures.h"
@@ -97,6 +98,23 @@ std::vector<ExportFile> gltf_files(const MotionFile& motion, const ExportSamples
            gltf_binary(motion.model, motion.motion.name, samples.times, samples.states, com)}};
 }
 
+std::vector<ExportFile> opensim_files(const MotionFile& motion, const ExportSamples& samples,
+                                      const std::string& source) {
+  std::vector<OpensimFrame> frames;
+  for (std::size_t k = 0; k < samples.times.size(); ++k)
+    frames.push_back(opensim_frame(motion.model, samples.states[k], samples.records[k]));
+  nlohmann::json result = export_result_json("opensim", motion, samples, source);
+  result["opensim_format"] = "OpenSim 4.0 (Version 40000); not opened in OpenSim by Saltus's tests";
+  nlohmann::json coordinates = nlohmann::json::array();
+  for (const OpensimCoordinate& c : opensim_coordinates(motion.model))
+    coordinates.push_back(c.name);
+  result["coordinates"] = coordinates;
+  return {{"model.osim", opensim_model_xml(motion.model, motion.motion.name)},
+          {"coordinates.mot", opensim_coordinates_mot(motion.model, samples.times, frames)},
+          {"inverse_dynamics.sto", opensim_forces_sto(motion.model, samples.times, frames)},
+          {"result.json", result_text(result, source)}};
+}
+
 /// A sampled format: its files for a motion, its description for people, and for a format
 /// written as one file, how Saltus knows a file of that format it wrote (and may replace).
 struct SampledExport {
@@ -132,6 +150,16 @@ const SampledExport* sampled_export(const std::string& format) {
                  ", the CoM's path; metres, y up";
         },
         gltf_written_by_saltus, "glTF file"}},
+      {"opensim",
+       {opensim_files,
+        [](const MotionFile& m, const ExportSamples& s) {
+          return std::to_string(m.model.size()) + " bodies (model " + m.model.name + "), " +
+                 std::to_string(3 * m.model.size() + 3) +
+                 " coordinates (the root free, every joint three rotations); " + frames_words(s) +
+                 " in degrees, and the forces that drive them";
+        },
+        {},
+        ""}},
   };
   for (const auto& [name, exporter] : table)
     if (name == format) return &exporter;
@@ -211,6 +239,7 @@ const std::vector<ExportFormat>& export_formats() {
       {"html", "web page (opens offline in any browser)", ".html", false},
       {"mujoco", "MuJoCo (MJCF model, qpos/qvel/qacc trajectory)", "", true},
       {"gltf", "glTF 2.0 (.glb for Blender, three.js and web viewers)", ".glb", true},
+      {"opensim", "OpenSim 4 (.osim model, .mot coordinates, .sto joint moments)", "", true},
   };
   return formats;
 }

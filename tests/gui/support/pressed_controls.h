@@ -46,6 +46,8 @@ inline constexpr PressedControl kPressedControls[] = {
      "file_menu_test.cpp", "FileMenuTest, ExportMotionAsWritesEveryFormatOfTheLibrary"},
     {"File > Export motion as > glTF 2.0 (.glb for Blender, three.js and web viewers)…",
      "file_menu_test.cpp", "FileMenuTest, ExportMotionAsWritesEveryFormatOfTheLibrary"},
+    {"File > Export motion as > OpenSim 4 (.osim model, .mot coordinates, .sto joint moments)…",
+     "file_menu_test.cpp", "FileMenuTest, ExportMotionAsWritesEveryFormatOfTheLibrary"},
     {"File > Export lecture figure (stroboscopic side view)…", "lecture_figure_test.cpp",
      "LectureFigureMenuTest, TheMenuEntryWritesTheFigureOfTheMotionShown"},
     {"File > Export animation (MP4 or GIF)…", "file_menu_test.cpp",
