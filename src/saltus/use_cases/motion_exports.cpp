@@ -131,9 +131,18 @@ std::string frames_words(const ExportSamples& samples) {
          " s (" + format_number("%.4g", 1.0 / samples.frame_time) + " fps)";
 }
 
-const SampledExport* sampled_export(const std::string& format) {
-  static const std::vector<std::pair<std::string, SampledExport>> table = {
-      {"mujoco",
+/// Every format, declared once: what people and flags see, and for the formats sampled here,
+/// how they are written (BVH is written by use_cases/captures, the page by use_cases/flight_page).
+struct FormatEntry {
+  ExportFormat format;
+  SampledExport exporter;
+};
+
+const std::vector<FormatEntry>& format_table() {
+  static const std::vector<FormatEntry> table = {
+      {{"bvh", "BVH (Blender and other animation tools)", ".bvh", true}, {}},
+      {{"html", "web page (opens offline in any browser)", ".html", false}, {}},
+      {{"mujoco", "MuJoCo (MJCF model, qpos/qvel/qacc trajectory)", "", true},
        {mujoco_files,
         [](const MotionFile& m, const ExportSamples& s) {
           return std::to_string(m.model.size()) + " bodies (model " + m.model.name +
@@ -142,7 +151,7 @@ const SampledExport* sampled_export(const std::string& format) {
         },
         {},
         ""}},
-      {"gltf",
+      {{"gltf", "glTF 2.0 (.glb for Blender, three.js and web viewers)", ".glb", true},
        {gltf_files,
         [](const MotionFile& m, const ExportSamples& s) {
           return std::to_string(m.model.size()) + " nodes with their meshes (model " +
@@ -150,7 +159,7 @@ const SampledExport* sampled_export(const std::string& format) {
                  ", the CoM's path; metres, y up";
         },
         gltf_written_by_saltus, "glTF file"}},
-      {"opensim",
+      {{"opensim", "OpenSim 4 (.osim model, .mot coordinates, .sto joint moments)", "", true},
        {opensim_files,
         [](const MotionFile& m, const ExportSamples& s) {
           return std::to_string(m.model.size()) + " bodies (model " + m.model.name + "), " +
@@ -161,8 +170,13 @@ const SampledExport* sampled_export(const std::string& format) {
         {},
         ""}},
   };
-  for (const auto& [name, exporter] : table)
-    if (name == format) return &exporter;
+  return table;
+}
+
+/// The writer of a format sampled here, or null (BVH, the page, an unknown name).
+const SampledExport* sampled_export(const std::string& format) {
+  for (const FormatEntry& entry : format_table())
+    if (entry.format.name == format && entry.exporter.files) return &entry.exporter;
   return nullptr;
 }
 
@@ -234,13 +248,12 @@ ExportSummary export_loaded(const MotionFile& motion, const ExportFormat& format
 }  // namespace
 
 const std::vector<ExportFormat>& export_formats() {
-  static const std::vector<ExportFormat> formats = {
-      {"bvh", "BVH (Blender and other animation tools)", ".bvh", true},
-      {"html", "web page (opens offline in any browser)", ".html", false},
-      {"mujoco", "MuJoCo (MJCF model, qpos/qvel/qacc trajectory)", "", true},
-      {"gltf", "glTF 2.0 (.glb for Blender, three.js and web viewers)", ".glb", true},
-      {"opensim", "OpenSim 4 (.osim model, .mot coordinates, .sto joint moments)", "", true},
-  };
+  static const std::vector<ExportFormat> formats = [] {
+    std::vector<ExportFormat> out;
+    for (const FormatEntry& entry : format_table())
+      out.push_back(entry.format);
+    return out;
+  }();
   return formats;
 }
 
