@@ -1,7 +1,8 @@
 // `saltus export --format opensim` read back by an independent reader (OpenSim is not packaged
 // for Debian): tests/support/opensim_pose.py, Python with xml.etree and numpy and nothing of
 // Saltus's, reads model.osim, coordinates.mot and inverse_dynamics.sto as OpenSim 4 defines them,
-// rebuilds every body's pose at every row and finds it where `saltus evaluate` puts the segment
+// takes each coordinate's motion type as OpenSim 4.0 does (slope +1 or not a rotation), rebuilds
+// every body's pose at every row and finds it where `saltus evaluate` puts the segment
 // (its trajectory.csv at the same times) to 1 mm and 0.1°, every mass, CoM and inertia equal to
 // model.json's, and the root's six generalised forces equal to the CSV's root wrench. A tucked
 // somersault reads as a biomechanist expects: hips and knees flexed past 90°. The folder is
@@ -55,6 +56,11 @@ void expect_saltus_poses(const nlohmann::json& found) {
   EXPECT_LT(found["worst_root_force_error"].get<double>(),
             1e-6 * found["largest_root_force"].get<double>());
   EXPECT_EQ(found["bodies"].size(), 13u);
+  // OpenSim 4.0 takes a coordinate as a rotation (its .mot degrees converted, its force named
+  // _moment) only when its axis's function has slope +1: every angle here, and the three
+  // translations as translations.
+  EXPECT_EQ(found["motion_types"], nlohmann::json({{"Rotational", 39}, {"Translational", 3}}));
+  EXPECT_EQ(found["misnamed_forces"], nlohmann::json::array());
   std::printf(
       "OpenSim files read back: bodies within %.2g m and %.2g deg, root forces within %.2g "
       "N\n",

@@ -6,8 +6,13 @@ defines its files, with nothing of Saltus's code: the .osim's bodies, PhysicalOf
 CustomJoints (a SpatialTransform: rotations about rotation1..3's axes applied body-fixed in
 order, R = R1(f1)·R2(f2)·R3(f3), then the translations along translation1..3's axes in the parent
 frame; each function a LinearFunction "slope intercept" or a Constant), the .mot's coordinates
-(degrees when inDegrees=yes, for the coordinates a rotation uses) and the .sto's generalised
-forces. It rebuilds every body's pose at every row and compares it with Saltus's own
+(degrees when inDegrees=yes, for the coordinates OpenSim calls Rotational) and the .sto's
+generalised forces (named <coordinate>_moment for a Rotational coordinate, _force otherwise, as
+OpenSim's Inverse Dynamics tool names them). A coordinate's motion type follows OpenSim 4.0's
+CustomJoint::constructCoordinates: Rotational (or Translational) only when a rotation (or
+translation) axis is a LinearFunction of it with slope exactly +1; anything else is Coupled and
+its .mot values are taken as they are, not as degrees. Later releases also accept slope -1
+(opensim-core issue #2062), so files that pass here read the same in every 4.x. It rebuilds every body's pose at every row and compares it with Saltus's own
 trajectory.csv (from `saltus evaluate` at the same times), each body's mass, CoM and inertia
 with Saltus's model.json, and the root's six generalised forces with the CSV's root wrench (the
 force turned into the world; the moment's components that do work on each rotation, by the
@@ -54,6 +59,7 @@ class Function:
     def __init__(self, axis_element):
         linear = axis_element.find("LinearFunction")
         constant = axis_element.find("Constant")
+        self.linear = linear is not None
         if linear is not None:
             self.slope, self.intercept = numbers(linear.find("coefficients").text)
         elif constant is not None:
@@ -65,6 +71,20 @@ class Function:
 
     def value(self, q):
         return self.intercept + (self.slope * q[self.coordinate] if self.coordinate else 0.0)
+
+
+def motion_types(joints):
+    """Each coordinate's motion type as OpenSim 4.0 assigns it (see the module's docstring)."""
+    types = {}
+    for j in joints:
+        for index, (_, f) in enumerate(j.rotations + j.translations):
+            if not f.coordinate:
+                continue
+            if f.linear and f.slope == 1.0:
+                types[f.coordinate] = "Rotational" if index < 3 else "Translational"
+            else:
+                types.setdefault(f.coordinate, "Coupled")
+    return types
 
 
 class Joint:
@@ -121,7 +141,8 @@ def main(folder, trajectory_csv, model_json):
     model = ET.parse(folder + "/model.osim").getroot().find("Model")
     bodies = {b.get("name"): b for b in model.find("BodySet").find("objects").findall("Body")}
     joints = [Joint(j) for j in model.find("JointSet").find("objects").findall("CustomJoint")]
-    rotational = {f.coordinate for j in joints for _, f in j.rotations if f.coordinate}
+    types = motion_types(joints)
+    rotational = {name for name, kind in types.items() if kind == "Rotational"}
 
     header, columns, rows = read_storage(folder + "/coordinates.mot")
     degrees = header["inDegrees"].strip() == "yes"
@@ -176,6 +197,12 @@ def main(folder, trajectory_csv, model_json):
 
     # The root's generalised forces against the CSV's root wrench (root frame, root origin).
     _, force_columns, forces = read_storage(folder + "/inverse_dynamics.sto")
+    expected_columns = [name + ("_moment" if name in rotational else "_force")
+                        for name in columns[1:]]
+    misnamed = [a for a, b in zip(force_columns[1:], expected_columns) if a != b]
+    if len(force_columns) != len(columns):
+        misnamed.append("%d columns for %d coordinates" % (len(force_columns) - 1,
+                                                           len(columns) - 1))
     root = next(j for j in joints if j.parent == "ground")
     worst_force = 0.0
     scale = 0.0
@@ -197,6 +224,9 @@ def main(folder, trajectory_csv, model_json):
     print(json.dumps({
         "rows": len(rows), "matched_rows": matched, "bodies": sorted(bodies),
         "coordinates": columns[1:], "in_degrees": degrees,
+        "motion_types": {kind: sum(1 for t in types.values() if t == kind)
+                         for kind in sorted(set(types.values()))},
+        "misnamed_forces": misnamed,
         "worst_position_m": worst_position, "worst_rotation_deg": worst_rotation,
         "worst_mass_property_error": worst_mass,
         "worst_root_force_error": worst_force, "largest_root_force": scale}))

@@ -28,8 +28,15 @@ JointCoordinates coordinates_of(const BodyModel& model, int segment) {
   return segment == 0 ? root_coordinates() : joint_coordinates(model, segment);
 }
 
-const char* axis_text(CardanAxis axis) {
-  return axis == CardanAxis::x ? "1 0 0" : axis == CardanAxis::z ? "0 0 1" : "0 1 0";
+/// The axis a coordinate turns about, reversed for a coordinate that reads against the Cardan
+/// angle (sign −1), so that every rotation is a LinearFunction of slope +1: OpenSim 4.0 took
+/// only slope +1 as a rotation (later releases ±1; opensim-core issue #2062) and read any other
+/// coordinate's degrees in a .mot as radians.
+std::string axis_text(CardanAxis axis, double sign) {
+  const std::string one = sign < 0 ? "-1" : "1";
+  return axis == CardanAxis::x   ? one + " 0 0"
+         : axis == CardanAxis::z ? "0 0 " + one
+                                 : "0 " + one + " 0";
 }
 
 std::string os_numbers(const Eigen::Vector3d& v) {
@@ -138,11 +145,11 @@ std::string custom_joint(const BodyModel& model, int k, const std::string& inden
                    k == 0 ? Eigen::Vector3d::Zero() : s.joint_position) +
       offset_frame(in + "  ", s.name + "_offset", "/bodyset/" + s.name, Eigen::Vector3d::Zero()) +
       in + "</frames>\n" + in + "<SpatialTransform>\n";
-  // angle = sign·(value − offset), sign = ±1: slope sign, intercept −sign·offset.
+  // angle = sign·(value − offset) about the axis: value − offset about sign·axis.
   for (int i = 0; i < 3; ++i) {
     const JointCoordinate& c = jc.coordinates[i];
-    xml += transform_axis(in + "  ", "rotation" + std::to_string(i + 1), c.name, axis_text(c.axis),
-                          linear(c.sign, -c.sign * c.offset_rad));
+    xml += transform_axis(in + "  ", "rotation" + std::to_string(i + 1), c.name,
+                          axis_text(c.axis, c.sign), linear(1.0, -c.offset_rad));
   }
   const char* axes[3] = {"1 0 0", "0 1 0", "0 0 1"};
   const char* translations[3] = {"root_tx", "root_ty", "root_tz"};

@@ -10,7 +10,8 @@
 ///
 /// Every joint's coordinates are body/joint_coordinates.h's, the one definition the strength
 /// report uses: rotations about the segment's x, z, y axes in that order (OpenSim's rotation1,
-/// 2, 3, body-fixed), each a LinearFunction of its coordinate (angle = sign·(value − offset)). The
+/// 2, 3, body-fixed), each a LinearFunction of slope +1 of its coordinate about sign·axis
+/// (OpenSim 4.0 takes no other slope as a rotation: its .mot degrees would be read as radians). The
 /// root is a free joint of six coordinates, `somersault`, `tilt`, `twist` (Yeadon's angles,
 /// R = Rx·Rz·Ry, evaluation/yeadon_angles.h) and `root_tx`, `root_ty`, `root_tz` (the root origin
 /// in the world, m): a CustomJoint, as OpenSim's gait models give the pelvis, rather than

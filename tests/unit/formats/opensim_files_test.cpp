@@ -70,6 +70,14 @@ TEST(OpensimFiles, GeneralisedForcesDoTheWorkOfTheWrenches) {
   }
 }
 
+/// How many times `piece` occurs in `text`.
+std::size_t osim_occurrences(const std::string& text, const std::string& piece) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(piece); at != std::string::npos; at = text.find(piece, at + 1))
+    ++n;
+  return n;
+}
+
 /// The rows of a storage file after its header: the column names, then the numbers.
 std::vector<std::vector<std::string>> storage_rows(const std::string& text) {
   std::istringstream in(text);
@@ -152,15 +160,8 @@ TEST(OpensimFiles, TheModelHoldsABodyAndACustomJointPerSegment) {
                        0),
             0u);
   EXPECT_NE(osim.find("<gravity>0 -9.81 0</gravity>"), std::string::npos);
-  std::size_t bodies = 0, joints = 0;
-  for (std::size_t at = osim.find("<Body "); at != std::string::npos;
-       at = osim.find("<Body ", at + 1))
-    ++bodies;
-  for (std::size_t at = osim.find("<CustomJoint "); at != std::string::npos;
-       at = osim.find("<CustomJoint ", at + 1))
-    ++joints;
-  EXPECT_EQ(bodies, static_cast<std::size_t>(model.size()));
-  EXPECT_EQ(joints, static_cast<std::size_t>(model.size()));
+  EXPECT_EQ(osim_occurrences(osim, "<Body "), static_cast<std::size_t>(model.size()));
+  EXPECT_EQ(osim_occurrences(osim, "<CustomJoint "), static_cast<std::size_t>(model.size()));
   const Segment& s = model.segments[thigh];
   const std::size_t body = osim.find("<Body name=\"" + s.name + "\">");
   ASSERT_NE(body, std::string::npos);
@@ -168,13 +169,18 @@ TEST(OpensimFiles, TheModelHoldsABodyAndACustomJointPerSegment) {
             osim.find("</Body>", body));
   EXPECT_NE(osim.find("<inertia>0.2 0.041 0.19 0 0 -0.002</inertia>", body), std::string::npos)
       << "Ixx Iyy Izz Ixy Ixz Iyz, the matrix's entries";
-  // The hip's flexion turns about the thigh's x axis, against the angle's sign.
+  // The hip's flexion turns against the Cardan angle: about the thigh's −x axis, slope +1.
   const std::size_t hip = osim.find("<CustomJoint name=\"hip_l\">");
   ASSERT_NE(hip, std::string::npos);
-  EXPECT_NE(osim.find("<TransformAxis name=\"rotation1\">\n", hip), std::string::npos);
-  EXPECT_LT(osim.find("<coordinates>hip_flexion_l</coordinates>", hip),
-            osim.find("</CustomJoint>", hip));
-  EXPECT_NE(osim.find("<coefficients>-1 0</coefficients>", hip), std::string::npos);
+  const std::size_t flexion = osim.find("<TransformAxis name=\"rotation1\">\n", hip);
+  ASSERT_NE(flexion, std::string::npos);
+  EXPECT_EQ(osim.find("<coordinates>hip_flexion_l</coordinates>", hip),
+            osim.find("<coordinates>", flexion));
+  EXPECT_EQ(osim.find("<axis>-1 0 0</axis>", hip), osim.find("<axis>", flexion));
+  // Every function of a coordinate has slope +1: OpenSim 4.0 reads no other as a rotation.
+  const std::size_t linear_functions = osim_occurrences(osim, "<LinearFunction ");
+  EXPECT_EQ(linear_functions, static_cast<std::size_t>(3 * model.size() + 3));
+  EXPECT_EQ(osim_occurrences(osim, "<coefficients>1 "), linear_functions);
 }
 
 }  // namespace
