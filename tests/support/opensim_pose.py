@@ -3,20 +3,21 @@
 
 OpenSim is not packaged for Debian, so the export is checked by reading it the way OpenSim 4
 defines its files, with nothing of Saltus's code: the .osim's bodies, PhysicalOffsetFrames and
-CustomJoints (a SpatialTransform: rotations about rotation1..3's axes applied body-fixed in
-order, R = R1(f1)·R2(f2)·R3(f3), then the translations along translation1..3's axes in the parent
-frame; each function a LinearFunction "slope intercept" or a Constant), the .mot's coordinates
-(degrees when inDegrees=yes, for the coordinates OpenSim calls Rotational) and the .sto's
-generalised forces (named <coordinate>_moment for a Rotational coordinate, _force otherwise, as
-OpenSim's Inverse Dynamics tool names them). A coordinate's motion type follows OpenSim 4.0's
+CustomJoints (a SpatialTransform: rotations about rotation1..3's axes applied body-fixed in order,
+R = R1(f1)·R2(f2)·R3(f3), then the translations along translation1..3's axes in the parent frame,
+as Simbody's MobilizedBody::FunctionBased computes X_FM for OpenSim's CustomJoint; each function a
+LinearFunction "slope intercept" or a Constant), the .mot's coordinates (degrees when
+inDegrees=yes, for the coordinates OpenSim calls Rotational) and the .sto's generalised forces
+(named <coordinate>_moment for a Rotational coordinate, _force otherwise, as OpenSim's Inverse
+Dynamics tool names them). A coordinate's motion type follows OpenSim 4.0's
 CustomJoint::constructCoordinates: Rotational (or Translational) only when a rotation (or
-translation) axis is a LinearFunction of it with slope exactly +1; anything else is Coupled and
-its .mot values are taken as they are, not as degrees. Later releases also accept slope -1
-(opensim-core issue #2062), so files that pass here read the same in every 4.x. It rebuilds every body's pose at every row and compares it with Saltus's own
-trajectory.csv (from `saltus evaluate` at the same times), each body's mass, CoM and inertia
-with Saltus's model.json, and the root's six generalised forces with the CSV's root wrench (the
-force turned into the world; the moment's components that do work on each rotation, by the
-transform's own angular-velocity Jacobian).
+translation) axis is a LinearFunction of it with slope exactly +1; anything else is Coupled and its
+.mot values are taken as they are, not as degrees. Later releases also accept slope -1
+(opensim-core issue #2062), so files that pass here read the same in every 4.x. It rebuilds every
+body's pose at every row and compares it with Saltus's own trajectory.csv (from `saltus evaluate`
+at the same times), each body's mass, CoM and inertia with Saltus's model.json, and the root's six
+generalised forces with the CSV's root wrench (the force turned into the world; the moment's
+components that do work on each rotation, by the transform's own angular-velocity Jacobian).
 
 Usage: opensim_pose.py EXPORT_FOLDER TRAJECTORY_CSV MODEL_JSON
 Prints one line of JSON with the worst differences found.
