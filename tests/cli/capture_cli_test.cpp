@@ -16,6 +16,7 @@
 
 #include "saltus/evaluation/joint_loads.h"
 #include "saltus/formats/motion_file.h"
+#include "saltus/formats/output_kind.h"
 #include "saltus/formats/trajectory_csv.h"
 #include "saltus/math/quaternion.h"
 #include "saltus/optim/optimize.h"
@@ -63,7 +64,7 @@ TEST(CaptureCli, ImportWritesTheDocumentedOutputs) {
   EXPECT_EQ(folder_contents(dir.path()), std::set<std::string>{"out"});
   EXPECT_EQ(folder_contents(dir.path() / "out"),
             (std::set<std::string>{"result.json", "capture.motion.json", "keyframes.motion.json",
-                                   "trajectory.csv", "model.json"}));
+                                   "trajectory.csv", "model.json", kFolderRecordName}));
   const nlohmann::json r = read_json(dir / "out/result.json");
   EXPECT_EQ(r["status"], "imported");
   EXPECT_EQ(r["source"]["frames"], 29);

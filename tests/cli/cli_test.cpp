@@ -12,6 +12,7 @@
 
 #include "saltus/evaluation/apparatus.h"
 #include "saltus/formats/model_file.h"
+#include "saltus/formats/output_kind.h"
 #include "saltus/formats/trajectory_csv.h"
 #include "support/cli_runner.h"
 
@@ -67,7 +68,8 @@ TEST(Cli, EvaluateWritesTheDocumentedOutputs) {
   ASSERT_EQ(run.status, 0) << run.output;
   EXPECT_NE(run.output.find("average root force"), std::string::npos) << run.output;
   expect_folder_holds_only(dir.path(), {"out"});
-  expect_folder_holds_only(dir.path() / "out", {"result.json", "trajectory.csv", "model.json"});
+  expect_folder_holds_only(dir.path() / "out",
+                           {"result.json", "trajectory.csv", "model.json", kFolderRecordName});
   const auto result = read_json(dir / "out/result.json");
   for (const char* key :
        {"status", "iterations", "solve_seconds", "variables", "constraints", "before", "after",

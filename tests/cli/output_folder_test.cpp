@@ -17,6 +17,7 @@
 #include <set>
 #include <thread>
 
+#include "saltus/formats/output_kind.h"
 #include "support/cli_runner.h"
 
 namespace saltus {
@@ -37,7 +38,8 @@ std::set<std::string> hidden_in(const fs::path& folder) {
   return found;
 }
 
-const std::set<std::string> kEvaluateFiles = {"result.json", "trajectory.csv", "model.json"};
+const std::set<std::string> kEvaluateFiles = {"result.json", "trajectory.csv", "model.json",
+                                              kFolderRecordName};
 
 std::string evaluate(const std::string& out, int samples, const std::string& extra = "") {
   return "evaluate " + test::m1_path() + " --out " + out + " --samples " + std::to_string(samples) +

@@ -121,6 +121,11 @@ std::string xml_text(const std::string& text) {
   return out;
 }
 
+std::string with_article(const std::string& noun) {
+  if (noun.empty()) return noun;
+  return (std::string("aeiouAEIOU").find(noun.front()) != std::string::npos ? "an " : "a ") + noun;
+}
+
 std::string message_text(const std::string& text, std::size_t max_bytes) {
   std::string out = printable(text);
   if (out.size() <= max_bytes) return out;

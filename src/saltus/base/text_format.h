@@ -32,6 +32,9 @@ std::string printable(const std::string& text);
 /// & < > " ' as entities.
 std::string xml_text(const std::string& text);
 
+/// `noun` after "a" or "an" by its first letter ("an import", "a body model"); "" stays "".
+std::string with_article(const std::string& noun);
+
 /// The most bytes of a user string message_text keeps: a joint name or a token is a few dozen.
 inline constexpr std::size_t kMaxMessageTextBytes = 80;
 

@@ -33,6 +33,12 @@ std::string rise_words(const AthleteOutcome& o) {
 
 }  // namespace
 
+const FolderKind& athletes_folder_kind() {
+  static const FolderKind kind =
+      study_folder_kind("study athletes", {"result.json", "athletes.csv", "athletes.md"});
+  return kind;
+}
+
 nlohmann::json athletes_definition(const std::string& motion_label, const MotionFile& own,
                                    const std::string& takeoff_rule,
                                    const std::vector<AthleteEntry>& athletes,

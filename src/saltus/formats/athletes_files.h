@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "saltus/formats/output_kind.h"
 #include "saltus/formats/study_case_file.h"
 #include "saltus/motion/motion.h"
 #include "saltus/optim/optimize.h"
@@ -19,6 +20,9 @@ struct AthleteEntry {
   std::string name;
   std::string digest;  ///< motion_digest of the motion on this athlete (model and take-off)
 };
+
+/// What an athletes study's folder holds (output_kind.h).
+const FolderKind& athletes_folder_kind();
 
 /// What decides the study's results: the motion (label and digest on its own model), the
 /// take-off rule, the athletes (the motion's own model first) and every optimiser setting.

@@ -408,8 +408,13 @@ std::string bvh_text(const MocapClip& clip) {
   return out;
 }
 
+const FileKind& bvh_file_kind() {
+  static const FileKind kind = FileKind::unmarked("BVH capture");
+  return kind;
+}
+
 void save_bvh_file(const std::string& path, const MocapClip& clip) {
-  write_new_file(path, bvh_text(clip));
+  write_output_file(path, bvh_text(clip), bvh_file_kind());
 }
 
 }  // namespace saltus

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "saltus/capture/mocap_clip.h"
+#include "saltus/formats/output_kind.h"
 
 namespace saltus {
 
@@ -48,9 +49,13 @@ MocapClip load_bvh_file(const std::string& path, BvhSourceLines* lines = nullptr
 /// Throws std::invalid_argument if the clip is not valid (validate_clip).
 std::string bvh_text(const MocapClip& clip);
 
-/// Writes bvh_text(clip) as the new file `path` (write_new_file: never over an existing file,
-/// complete or absent at every instant). Throws InputError if `path` exists, OutputError if the
-/// system refuses.
+/// A BVH file as Saltus writes it (output_kind.h): the format has no room for a mark, so Saltus
+/// cannot tell its own from a user's and never replaces one.
+const FileKind& bvh_file_kind();
+
+/// Writes bvh_text(clip) as the new file `path` (write_output_file with bvh_file_kind(): never
+/// over an existing file, complete or absent at every instant). Throws InputError if `path` exists,
+/// OutputError if the system refuses.
 void save_bvh_file(const std::string& path, const MocapClip& clip);
 
 }  // namespace saltus

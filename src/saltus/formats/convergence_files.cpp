@@ -267,6 +267,12 @@ nlohmann::json convergence_definition(const std::vector<LabelledMotion>& motions
           {"optimize", result_deciding_settings(options.optimize)}};
 }
 
+const FolderKind& convergence_folder_kind() {
+  static const FolderKind kind =
+      study_folder_kind("study convergence", {"result.json", "convergence.csv", "convergence.md"});
+  return kind;
+}
+
 nlohmann::json write_convergence_files(const std::string& dir,
                                        const std::vector<StudyOutcome>& outcomes,
                                        const nlohmann::json& definition) {

@@ -46,6 +46,9 @@ std::string convergence_csv(const std::vector<StudyOutcome>& outcomes);
 nlohmann::json convergence_definition(const std::vector<LabelledMotion>& motions,
                                       const ConvergenceStudyOptions& options);
 
+/// What a convergence study's folder holds (output_kind.h), also as a report's convergence/.
+const FolderKind& convergence_folder_kind();
+
 /// DIR/{result.json, convergence.csv, convergence.md} from the outcomes in case order and the
 /// study's definition (convergence_definition). Returns result.json.
 nlohmann::json write_convergence_files(const std::string& dir,

@@ -1,7 +1,5 @@
 #include "saltus/formats/flight_page.h"
 
-#include <sys/stat.h>
-
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -25,8 +23,6 @@ constexpr const char* kDataPlaceholder = "/*SALTUS_DATA*/";
 constexpr const char* kVersionPlaceholder = "SALTUS_VERSION";
 /// How the data's script element opens, in the template and so in every page.
 constexpr const char* kDataOpening = "<script id=\"flight-data\" type=\"application/json\">";
-/// A page names its generator within this many bytes of its start.
-constexpr std::size_t kHeadBytes = 4096;
 
 void replace_once(std::string& text, const std::string& placeholder, const std::string& value) {
   const std::size_t at = text.find(placeholder);
@@ -103,23 +99,13 @@ nlohmann::json read_flight_page_data(const std::string& path) {
   }
 }
 
-bool is_flight_page(const std::string& path) {
-  struct stat info {};
-  if (::lstat(path.c_str(), &info) != 0 || !S_ISREG(info.st_mode)) return false;
-  std::ifstream in(path, std::ios::binary);
-  std::string head(kHeadBytes, '\0');
-  in.read(head.data(), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(in.gcount()));
-  return head.find(std::string("<meta name=\"generator\" content=\"") + kFlightPageGenerator) !=
-         std::string::npos;
+const FileKind& flight_page_kind() {
+  static const FileKind kind = FileKind::commented("flight page", "<!--", "-->");
+  return kind;
 }
 
-void save_flight_page(const std::string& path, const std::string& html) {
-  write_output_file(path, html, [](const std::string& existing) -> std::string {
-    return is_flight_page(existing) ? ""
-                                    : "exists and is not a flight page Saltus wrote; it is left as "
-                                      "it is (remove it or choose another --out)";
-  });
+std::size_t save_flight_page(const std::string& path, const std::string& html) {
+  return write_output_file(path, html, flight_page_kind());
 }
 
 }  // namespace saltus

@@ -8,10 +8,11 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "saltus/formats/output_kind.h"
+
 namespace saltus {
 
-/// The data's "format" tag, and the generator named in every page's head, by which Saltus
-/// recognises a page it wrote (and may replace).
+/// The data's "format" tag, and the generator named in every page's head.
 inline constexpr const char* kFlightPageFormat = "saltus-flight-page/1";
 inline constexpr const char* kFlightPageGenerator = "saltus flight page";
 
@@ -24,14 +25,16 @@ std::string flight_page_html(const nlohmann::json& data);
 /// naming `path` when the file is no such page.
 nlohmann::json read_flight_page_data(const std::string& path);
 
-/// True when `path` is a regular file whose head names kFlightPageGenerator.
-bool is_flight_page(const std::string& path);
+/// A flight page as Saltus writes it (output_kind.h): marked by a last HTML comment, so that
+/// only a page Saltus wrote, unchanged since, is ever replaced.
+const FileKind& flight_page_kind();
 
 /// Writes `html` to `path` through write_output_file (output_folder.h): at every instant absent,
 /// the old or the new page; missing parent folders are created. Refuses (InputError naming
 /// `path`, nothing written) a folder, a link, or an existing file that is not a page Saltus
-/// wrote (is_flight_page); throws OutputError naming `path` when the system refuses (disk full,
-/// no permission).
-void save_flight_page(const std::string& path, const std::string& html);
+/// wrote (flight_page_kind()); throws OutputError naming `path` when the system refuses (disk
+/// full, no permission).
+/// Returns the bytes written (the page and its mark).
+std::size_t save_flight_page(const std::string& path, const std::string& html);
 
 }  // namespace saltus

@@ -353,22 +353,35 @@ nlohmann::json read_glb_json(const std::string& bytes, const std::string& file) 
   return json;
 }
 
+bool glb_names_saltus(const std::string& bytes) {
+  if (bytes.size() < 20 || read_u32(bytes, 0) != kGlbMagic || read_u32(bytes, 4) != 2) return false;
+  const std::uint32_t json_length = read_u32(bytes, 12);
+  if (read_u32(bytes, 16) != kJsonChunk || json_length > kMaxGlbJsonBytes ||
+      json_length > bytes.size() - 20)
+    return false;
+  const nlohmann::json json = nlohmann::json::parse(bytes.substr(20, json_length), nullptr, false);
+  if (!json.is_object() || !json.contains("asset") || !json["asset"].is_object()) return false;
+  const nlohmann::json& asset = json["asset"];
+  return asset.contains("generator") && asset["generator"] == kGltfGenerator;
+}
+
+const FileKind& gltf_file_kind() {
+  static const FileKind kind = FileKind::by_writer("glTF file", glb_names_saltus);
+  return kind;
+}
+
 bool gltf_written_by_saltus(const std::string& path) {
   // Only the header and the JSON chunk are read: a large file of someone else's is not loaded.
   std::error_code ec;
   if (!std::filesystem::is_regular_file(std::filesystem::symlink_status(path, ec))) return false;
   std::ifstream in(path, std::ios::binary);
   std::string head(20, '\0');
-  if (!in.read(&head[0], 20) || read_u32(head, 0) != kGlbMagic || read_u32(head, 4) != 2)
-    return false;
+  if (!in.read(&head[0], 20)) return false;
   const std::uint32_t json_length = read_u32(head, 12);
-  if (read_u32(head, 16) != kJsonChunk || json_length > kMaxGlbJsonBytes) return false;
+  if (json_length > kMaxGlbJsonBytes) return false;
   std::string json_text(json_length, '\0');
   if (!in.read(&json_text[0], json_length)) return false;
-  const nlohmann::json json = nlohmann::json::parse(json_text, nullptr, false);
-  if (!json.is_object() || !json.contains("asset") || !json["asset"].is_object()) return false;
-  const nlohmann::json& asset = json["asset"];
-  return asset.contains("generator") && asset["generator"] == kGltfGenerator;
+  return glb_names_saltus(head + json_text);
 }
 
 }  // namespace saltus

@@ -15,6 +15,7 @@
 
 #include "saltus/body/body_model.h"
 #include "saltus/dynamics/body_state.h"
+#include "saltus/formats/output_kind.h"
 
 namespace saltus {
 
@@ -37,6 +38,14 @@ std::string gltf_binary(const BodyModel& model, const std::string& title,
 /// The JSON chunk of GLB bytes, parsed, after checking the container (the header's magic,
 /// version 2 and length, the chunks' types and lengths). InputError naming `file` otherwise.
 nlohmann::json read_glb_json(const std::string& bytes, const std::string& file);
+
+/// True when `bytes` are a .glb whose asset.generator is kGltfGenerator: the mark of
+/// gltf_file_kind().
+bool glb_names_saltus(const std::string& bytes);
+
+/// A .glb as Saltus writes it (output_kind.h): marked by its writer in asset.generator, so that
+/// only a .glb Saltus wrote is ever replaced.
+const FileKind& gltf_file_kind();
 
 /// True when `path` is a regular .glb whose asset.generator is kGltfGenerator.
 bool gltf_written_by_saltus(const std::string& path);

@@ -260,6 +260,8 @@ nlohmann::json strength_to_json(const StrengthSpec& spec) {
 }  // namespace
 
 BodyModel parse_body_model(const nlohmann::json& document, const std::string& file) {
+  // A model file Saltus wrote on its own carries its mark (model_file_kind()): read past it.
+  if (has_json_mark(document)) return parse_body_model(without_json_mark(document), file);
   const JsonNode root(document, file);
   root.require_object();
 
@@ -387,9 +389,13 @@ nlohmann::json body_model_to_json(const BodyModel& model) {
           {"strength", strength_to_json(model.strength)}};
 }
 
+const FileKind& model_file_kind() {
+  static const FileKind kind = FileKind::json("body model");
+  return kind;
+}
+
 void save_body_model_file(const std::string& path, const BodyModel& model) {
-  write_output_file(path, body_model_to_json(model).dump(2) + "\n",
-                    own_saltus_json_file(kModelFormat, "body model"));
+  write_output_file(path, body_model_to_json(model).dump(2) + "\n", model_file_kind());
 }
 
 nlohmann::json model_summary_to_json(const ModelSummary& summary) {

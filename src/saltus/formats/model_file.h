@@ -8,11 +8,17 @@
 
 #include "saltus/body/body_model.h"
 #include "saltus/body/mass_properties.h"
+#include "saltus/formats/output_kind.h"
 
 namespace saltus {
 
 /// The file's "format".
 inline constexpr const char* kModelFormatTag = "saltus-model/1";
+
+/// A model file Saltus writes on its own (`saltus model`, the app's Save model): a JSON kind,
+/// marked (output_kind.h), so that only such a file is ever replaced; the model.json of a
+/// result folder carries no mark.
+const FileKind& model_file_kind();
 
 /// Parses and validates a "saltus-model/1" document. `file` is used in error messages only.
 /// Validation: format tag, unique segment and joint names, root first with parent null and joint
@@ -32,10 +38,11 @@ nlohmann::json body_model_to_json(const BodyModel& model);
 
 /// Writes `model` to the file `path` through write_output_file (output_folder.h; missing parent
 /// folders are created), so `path` is at every instant absent, the old file or the new complete
-/// one. An existing `path` is replaced only when it is a Saltus body
-/// model (a JSON file whose "format" is "saltus-model/1"); anything else (another file, a folder,
-/// a symbolic link) is refused with InputError naming `path`. OutputError when the system
-/// refuses (no permission, disk full); nothing is changed then.
+/// one, with Saltus's mark (model_file_kind()). An existing `path` is replaced only when it is a
+/// model file Saltus wrote this way and nobody changed since; anything else (a model written by
+/// hand, a result folder's model.json, another file, a folder, a symbolic link) is refused with
+/// InputError naming `path`. OutputError when the system refuses (no permission, disk full);
+/// nothing is changed then.
 void save_body_model_file(const std::string& path, const BodyModel& model);
 
 /// "saltus-model-info/1": what `saltus model info --json` prints (docs/formats.md, "Model

@@ -480,6 +480,8 @@ ModelReference model_reference_for(const std::string& model_file, const std::str
 
 Motion parse_motion(const nlohmann::json& document, const std::string& file,
                     const BodyModel& model) {
+  // A motion file Saltus wrote on its own carries its mark (motion_file_kind()): read past it.
+  if (has_json_mark(document)) return parse_motion(without_json_mark(document), file, model);
   const JsonNode root(document, file);
   check_format_tag(root);
   root.require_keys_within(
@@ -499,9 +501,13 @@ Motion parse_motion(const nlohmann::json& document, const std::string& file,
   return motion;
 }
 
+const FileKind& motion_file_kind() {
+  static const FileKind kind = FileKind::json("motion");
+  return kind;
+}
+
 void save_motion_file(const std::string& path, const Motion& motion, const BodyModel& model) {
-  write_output_file(path, motion_to_json(motion, model).dump(2) + "\n",
-                    own_saltus_json_file(kMotionFormatTag, "motion"));
+  write_output_file(path, motion_to_json(motion, model).dump(2) + "\n", motion_file_kind());
 }
 
 std::string read_motion_model_field(const nlohmann::json& document, const std::string& file) {

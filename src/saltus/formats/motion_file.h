@@ -6,12 +6,18 @@
 #include <nlohmann/json_fwd.hpp>
 #include <string>
 
+#include "saltus/formats/output_kind.h"
 #include "saltus/motion/motion.h"
 
 namespace saltus {
 
 /// The file's "format".
 inline constexpr const char* kMotionFormatTag = "saltus-motion/1";
+
+/// A motion file Saltus writes on its own (the app's Save motion): a JSON kind, marked
+/// (output_kind.h), so that only such a file is ever replaced; the motions inside result
+/// folders carry no mark.
+const FileKind& motion_file_kind();
 
 /// Parses and validates a "saltus-motion/1" document against `model` (every keyframe must give
 /// every joint of the model, no unknown joints). `file` is used in messages. Normalises
@@ -39,9 +45,10 @@ ModelReference model_reference_for(const std::string& model_file, const std::str
 nlohmann::json motion_to_json(const Motion& motion, const BodyModel& model);
 
 /// Writes motion_to_json(motion, model) to `path` through write_output_file (output_folder.h):
-/// at every instant `path` is absent, the old file or the new complete one; an existing `path`
-/// is replaced only when it is a Saltus motion file, anything else is refused with InputError
-/// naming it. OutputError when the system refuses.
+/// at every instant `path` is absent, the old file or the new complete one, with Saltus's mark
+/// (motion_file_kind()); an existing `path` is replaced only when it is a motion file Saltus
+/// wrote this way and nobody changed since, anything else is refused with InputError naming it.
+/// OutputError when the system refuses.
 void save_motion_file(const std::string& path, const Motion& motion, const BodyModel& model);
 
 /// The "model" field of a motion file, read without validating the rest (to find the model).

@@ -18,123 +18,12 @@
 #include <mutex>
 
 #include "saltus/base/input_error.h"
+#include "saltus/base/input_file.h"
 #include "saltus/base/json_reader.h"
 
 namespace saltus {
 
 namespace fs = std::filesystem;
-
-const std::vector<ResultKind>& result_kinds() {
-  // Kinds of one format with specific values first; an empty value list matches the rest.
-  static const std::vector<ResultKind> kinds = {
-      {"evaluate",
-       "saltus-result/1",
-       "status",
-       {"evaluated"},
-       {"result.json", "trajectory.csv", "model.json"},
-       {},
-       {},
-       false},
-      {"simulate",
-       "saltus-result/1",
-       "status",
-       {"simulated"},
-       {"result.json", "trajectory.csv", "model.json"},
-       {},
-       {},
-       false},
-      {"optimize",
-       "saltus-result/1",
-       "status",
-       {},
-       {"result.json", "trajectory_before.csv", "trajectory_after.csv", "model.json",
-        "optimized.motion.json"},
-       {},
-       {},
-       false},
-      {"study convergence",
-       "saltus-study/1",
-       "study",
-       {"convergence"},
-       {"result.json", "convergence.csv", "convergence.md", "study.json"},
-       {},
-       {"cases"},
-       false},
-      {"study mass",
-       "saltus-study/1",
-       "study",
-       {"mass"},
-       {"result.json", "mass.csv", "mass.md", "model.json", "model_scaled.json"},
-       {},
-       {},
-       false},
-      {"study athletes",
-       "saltus-study/1",
-       "study",
-       {"athletes"},
-       {"result.json", "athletes.csv", "athletes.md", "study.json"},
-       {},
-       {"cases"},
-       false},
-      // saltus paper: report.md, one result folder per run (M1/, mass/, convergence/, ...) and
-      // the app's figures (saltus-gui --export-figures DIR/figures ...).
-      {"paper",
-       "saltus-report/1",
-       "",
-       {},
-       {"result.json", "report.md", "study.json"},
-       {"figures"},
-       {"cases"},
-       true},
-      // saltus analyse twist.
-      {"analyse twist",
-       "saltus-analysis/1",
-       "analysis",
-       {"twist"},
-       {"result.json", "twist.csv", "twist.md"},
-       {},
-       {},
-       false},
-      // A shard of a study (--shard I/N): its records and, for the report, its runs' folders.
-      {"study shard",
-       "saltus-study-shard/1",
-       "",
-       {},
-       {"result.json", "study.json"},
-       {},
-       {"cases"},
-       true},
-      // saltus export --format mujoco (use_cases/motion_exports).
-      {"export mujoco",
-       "saltus-export/1",
-       "export",
-       {"mujoco"},
-       {"result.json", "model.xml", "trajectory.csv"},
-       {},
-       {},
-       false},
-      // saltus export --format opensim (use_cases/motion_exports).
-      {"export opensim",
-       "saltus-export/1",
-       "export",
-       {"opensim"},
-       {"result.json", "model.osim", "coordinates.mot", "inverse_dynamics.sto"},
-       {},
-       {},
-       false},
-      // saltus import (use_cases/captures).
-      {"import",
-       "saltus-result/1",
-       "status",
-       {"imported"},
-       {"result.json", "capture.motion.json", "keyframes.motion.json", "trajectory.csv",
-        "model.json"},
-       {},
-       {},
-       false},
-  };
-  return kinds;
-}
 
 namespace {
 
@@ -167,26 +56,6 @@ std::string some_names(const std::vector<std::string>& names) {
   return out;
 }
 
-const ResultKind* kind_of(const nlohmann::json& result) {
-  if (!result.is_object() || !result.contains("format") || !result["format"].is_string())
-    return nullptr;
-  const std::string format = result["format"].get<std::string>();
-  const ResultKind* fallback = nullptr;
-  for (const ResultKind& kind : result_kinds()) {
-    if (kind.format != format) continue;
-    if (kind.field.empty() || kind.values.empty()) {
-      if (!fallback) fallback = &kind;
-      continue;
-    }
-    const auto it = result.find(kind.field);
-    if (it != result.end() && it->is_string() &&
-        std::find(kind.values.begin(), kind.values.end(), it->get<std::string>()) !=
-            kind.values.end())
-      return &kind;
-  }
-  return fallback;
-}
-
 /// Whether `folder` holds regular files only, each passing `wanted`.
 bool holds_only(const fs::path& folder, const std::function<bool(const fs::path&)>& wanted) {
   std::error_code ec;
@@ -203,6 +72,18 @@ bool is_case_record_name(const fs::path& file) {
   return std::all_of(name.begin(), name.end() - 5, [](char c) { return c >= '0' && c <= '9'; });
 }
 
+/// Whether `folder`'s result.json carries a Saltus format tag: a result written before Saltus
+/// recorded what it writes (kFolderRecordName), for the message.
+bool has_saltus_result_tag(const fs::path& folder) {
+  try {
+    const nlohmann::json result = read_json_file((folder / "result.json").string());
+    return result.is_object() && result.contains("format") && result["format"].is_string() &&
+           result["format"].get<std::string>().rfind("saltus-", 0) == 0;
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
 std::string foreign_content_at(const fs::path& folder, int depth) {
   std::error_code ec;
   // An empty folder holds nothing to lose; inside a result, every sub-folder must be a result.
@@ -212,36 +93,36 @@ std::string foreign_content_at(const fs::path& folder, int depth) {
     entries.push_back(it->path().filename().string());
   if (ec) return "it cannot be read (" + ec.message() + ")";
   std::sort(entries.begin(), entries.end());
-  const fs::path result_path = folder / "result.json";
-  if (!fs::is_regular_file(fs::symlink_status(result_path, ec)))
-    return "it holds " + some_names(entries) + " and no Saltus result.json";
-  nlohmann::json result;
-  try {
-    result = read_json_file(result_path.string());
-  } catch (const InputError&) {
-    return "its result.json is not a Saltus result (not a JSON file Saltus wrote)";
+  std::string why_not;
+  const FolderKind kind = read_folder_record(folder.string(), why_not);
+  if (!why_not.empty()) {
+    if (has_saltus_result_tag(folder))
+      return "its result.json is Saltus's, but " + why_not +
+             ": it is from a Saltus that kept no record (or the record was removed), so Saltus "
+             "cannot tell its files from yours";
+    std::vector<std::string> shown;
+    for (const std::string& name : entries)
+      if (name != kFolderRecordName) shown.push_back(name);
+    return "it holds " + some_names(shown) + " and " + why_not;
   }
-  const ResultKind* kind = kind_of(result);
-  if (!kind) return "its result.json is not a Saltus result (no Saltus \"format\")";
   std::vector<std::string> foreign;
   for (const std::string& name : entries) {
+    if (name == kFolderRecordName) continue;
     const fs::path entry = folder / name;
     const fs::file_status status = fs::symlink_status(entry, ec);
-    if (fs::is_regular_file(status) &&
-        std::find(kind->files.begin(), kind->files.end(), name) != kind->files.end())
-      continue;
     const auto listed = [&](const std::vector<std::string>& names) {
       return std::find(names.begin(), names.end(), name) != names.end();
     };
-    if (fs::is_directory(status) && listed(kind->image_folders)) {
+    if (fs::is_regular_file(status) && listed(kind.files)) continue;
+    if (fs::is_directory(status) && listed(kind.image_folders)) {
       if (holds_only(entry, [](const fs::path& f) { return f.extension() == ".png"; })) continue;
       return "its " + printable(name) + "/ holds files other than the PNG figures Saltus writes";
     }
-    if (fs::is_directory(status) && listed(kind->record_folders)) {
+    if (fs::is_directory(status) && listed(kind.record_folders)) {
       if (holds_only(entry, is_case_record_name)) continue;
       return "its " + printable(name) + "/ holds files other than the case records Saltus writes";
     }
-    if (fs::is_directory(status) && kind->holds_results && depth < kMaxResultDepth) {
+    if (fs::is_directory(status) && kind.holds_results && depth < kMaxResultDepth) {
       const std::string inner = foreign_content_at(entry, depth + 1);
       if (inner.empty()) continue;
       return "its sub-folder " + printable(name) + "/ is not a Saltus result: " + inner;
@@ -250,8 +131,7 @@ std::string foreign_content_at(const fs::path& folder, int depth) {
   }
   if (foreign.empty()) return "";
   return "it holds " + some_names(foreign) + ", which Saltus does not write in " +
-         (std::string("aeiou").find(kind->name.front()) != std::string::npos ? "an " : "a ") +
-         kind->name + " result";
+         with_article(printable(kind.name)) + " result";
 }
 
 /// The InputError for a folder Saltus will not replace, with what to do instead.
@@ -615,7 +495,7 @@ void check_output_folder(const std::string& final_path) {
   check_target(target, target.string());
 }
 
-OutputFolder::OutputFolder(std::string final_path) {
+OutputFolder::OutputFolder(std::string final_path, FolderKind kind) : kind_(std::move(kind)) {
   const fs::path target = target_of(final_path);
   final_path_ = target.string();
   const fs::path parent = target.parent_path();
@@ -676,6 +556,12 @@ void OutputFolder::write(const std::string& name, const std::string& text) const
 
 void OutputFolder::commit() {
   if (committed_) return;
+  // The record of what Saltus wrote, read by the next run of any verb; what the writer wrote
+  // must be what it declared, or that run would refuse the folder as the user's.
+  write_folder_record(temporary_path_, kind_);
+  if (const std::string undeclared = foreign_content_at(temporary_path_, 0); !undeclared.empty())
+    throw std::logic_error("the writer of " + kind_.name + " results wrote what its FolderKind " +
+                           "does not declare: " + undeclared);
   const fs::path target(final_path_);
   const bool working_in_target = same_file(".", final_path_.c_str());
   bool exchanged = false;
@@ -745,6 +631,10 @@ void OutputFolder::commit() {
   release();
 }
 
+void write_folder_record(const std::string& dir, const FolderKind& kind) {
+  write_text((fs::path(dir) / kFolderRecordName).string(), folder_record_text(kind));
+}
+
 void write_text(const std::string& path, const std::string& text) {
   const auto fail = [&](int error) {
     return OutputError("cannot write " + display_path(path) + ": " + system_reason(error) +
@@ -772,6 +662,22 @@ void write_text(const std::string& path, const std::string& text) {
 
 namespace {
 
+/// Why the existing regular file `path` may not be replaced by a file of `kind`: "" when it is
+/// one Saltus wrote (unmarked_reason), else the problem for an InputError.
+std::string existing_file_refusal(const std::string& path, const FileKind& kind) {
+  std::string text;
+  try {
+    text = read_input_file(path, kMaxJsonFileBytes, "files Saltus writes");
+  } catch (const InputError& e) {
+    return "exists and cannot be read to tell whether Saltus wrote it (" + e.problem() +
+           "); it is left as it is";
+  }
+  const std::string why = unmarked_reason(kind, text);
+  if (why.empty()) return "";
+  return "exists and " + why + "; Saltus replaces only " + with_article(kind.name) +
+         " it wrote, unchanged since: give a new file name or move this one away";
+}
+
 /// Writes all of `text` to `fd`; false with errno set on failure.
 bool write_all(int fd, const std::string& text) {
   std::size_t done = 0;
@@ -788,16 +694,19 @@ bool write_all(int fd, const std::string& text) {
 
 }  // namespace
 
-void write_output_file(const std::string& path, const std::string& text, const OwnFileCheck& own) {
+std::size_t write_output_file(const std::string& path, const std::string& plain_text,
+                              const FileKind& kind) {
   if (path.empty()) throw InputError("--out", "", "the output file path is empty");
   std::error_code ec;
   const fs::path target = fs::absolute(path, ec).lexically_normal();
   if (ec) throw OutputError("cannot resolve " + path + ": " + ec.message(), false);
   if (target.filename().empty() || target.filename() == "." || target.filename() == "..")
     throw InputError(path, "", "names no file Saltus can write");
-  const std::string never =
-      "exists; Saltus writes this file only where there is none (it cannot tell a file it wrote "
-      "from one it did not): remove it or choose another name";
+  const std::string text = marked_text(kind, plain_text);
+  const bool own = kind.mark != FileMark::kNone;
+  const std::string never = "exists and " + unmarked_reason(kind, "") +
+                            ", so it writes one only where there is none: remove it or choose "
+                            "another name";
   // Why the entry now at `target` may not be replaced; "" when there is none or it is Saltus's.
   const auto refusal = [&]() -> std::string {
     struct stat info {};
@@ -806,7 +715,7 @@ void write_output_file(const std::string& path, const std::string& text, const O
     if (S_ISLNK(info.st_mode)) return "is a symbolic link; Saltus writes only to a file of its own";
     if (S_ISDIR(info.st_mode)) return "is a folder, not a file Saltus wrote: give a file name";
     if (!S_ISREG(info.st_mode)) return "is not a file Saltus wrote; it is left as it is";
-    return own(target.string());
+    return existing_file_refusal(target.string(), kind);
   };
   if (const std::string why = refusal(); !why.empty()) throw InputError(path, "", why);
   const fs::path parent = target.parent_path();
@@ -841,61 +750,35 @@ void write_output_file(const std::string& path, const std::string& text, const O
     throw fail(error, "cannot write");
   }
   if (::close(fd) != 0) throw fail(errno, "cannot write");
-  if (own) {
-    // The entry may have changed while the text was written.
+  // The entry may have changed while the text was written: asked again. Where there is none,
+  // the move must not replace one that appears meanwhile (RENAME_NOREPLACE); where there is one
+  // of Saltus's, a plain rename replaces it.
+  for (int attempt = 0;; ++attempt) {
     if (const std::string why = refusal(); !why.empty()) {
       discard();
       throw InputError(path, "", why);
     }
-    if (::rename(temporary.c_str(), target.c_str()) != 0)
-      throw fail(errno, "cannot move into place");
-    unregister_slot(slot);
-    return;
-  }
-  if (::renameat2(AT_FDCWD, temporary.c_str(), AT_FDCWD, target.c_str(), RENAME_NOREPLACE) != 0) {
-    int error = errno;
+    struct stat info {};
+    if (::lstat(target.c_str(), &info) == 0) {
+      if (::rename(temporary.c_str(), target.c_str()) != 0)
+        throw fail(errno, "cannot move into place");
+      break;
+    }
+    int error =
+        ::renameat2(AT_FDCWD, temporary.c_str(), AT_FDCWD, target.c_str(), RENAME_NOREPLACE) == 0
+            ? 0
+            : errno;
     if (error == EINVAL || error == ENOSYS) {
       // No RENAME_NOREPLACE here: a hard link fails as well when the name is taken.
       error = ::link(temporary.c_str(), target.c_str()) == 0 ? 0 : errno;
-      ::unlink(temporary.c_str());
+      if (error == 0) ::unlink(temporary.c_str());
     }
-    if (error == EEXIST) {
-      discard();
-      throw InputError(path, "", never);
-    }
-    if (error != 0) throw fail(error, "cannot move into place");
+    if (error == 0) break;
+    if (error != EEXIST || attempt >= 3) throw fail(error, "cannot move into place");
+    // Created meanwhile: the next round asks whether it may be replaced.
   }
   unregister_slot(slot);
-}
-
-OwnFileCheck own_saltus_json_file(const std::string& format, const std::string& what) {
-  return [format, what](const std::string& path) -> std::string {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    const fs::file_status status = fs::symlink_status(path, ec);
-    std::string reason;
-    if (fs::is_symlink(status))
-      reason = "is a symbolic link";
-    else if (fs::is_directory(status))
-      reason = "is a folder";
-    else if (!fs::is_regular_file(status))
-      reason = "is not a regular file";
-    if (reason.empty()) {
-      try {
-        const nlohmann::json document = read_json_file(path);
-        if (document.is_object() && document.contains("format") && document["format"] == format)
-          return "";
-      } catch (const InputError&) {
-      }
-      reason = "exists and is not a Saltus " + what + " (\"format\": \"" + format + "\")";
-    }
-    return reason + "; Saltus replaces only " + what +
-           " files it wrote: give a new file name or move this one away";
-  };
-}
-
-void write_new_file(const std::string& path, const std::string& text) {
-  write_output_file(path, text);
+  return text.size();
 }
 
 }  // namespace saltus

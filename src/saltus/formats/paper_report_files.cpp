@@ -130,12 +130,19 @@ ReportSettings read_report_settings(const nlohmann::json& definition) {
 
 }  // namespace
 
+const FolderKind& paper_report_folder_kind() {
+  static const FolderKind kind{
+      "paper", {"result.json", "report.md", "study.json"}, {"figures"}, {"cases"}, true};
+  return kind;
+}
+
 nlohmann::json write_paper_report_files(const OutputFolder& folder,
                                         const nlohmann::json& definition, const PaperReport& report,
                                         int failed_cases) {
   const ReportSettings settings = read_report_settings(definition);
   write_convergence_files(folder.file("convergence"), report.convergence,
                           definition.at("convergence"));
+  write_folder_record(folder.file("convergence"), convergence_folder_kind());
 
   std::string mass_md = report.mass_markdown;
   if (report.has_mass)

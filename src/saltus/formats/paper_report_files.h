@@ -15,6 +15,10 @@
 
 namespace saltus {
 
+/// What a report's folder holds (output_kind.h): its own files, the app's figures/, the records'
+/// cases/, and the runs' result folders (M1/, mass/, convergence/, ...).
+const FolderKind& paper_report_folder_kind();
+
 /// DIR/{report.md, result.json, convergence/} of a whole report, from the study's definition
 /// and its runs; `failed_cases` counts the cases whose process did not finish. Returns
 /// result.json.

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "saltus/base/digest.h"
 #include "saltus/base/input_error.h"
 #include "saltus/base/json_reader.h"
 #include "saltus/formats/model_file.h"
@@ -39,13 +40,17 @@ std::string first_difference(const nlohmann::json& a, const nlohmann::json& b,
   return path.empty() ? "/" : path;
 }
 
-std::string hex64(std::uint64_t value) {
-  char text[17];
-  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
-  return text;
+}  // namespace
+
+FolderKind study_folder_kind(std::string name, std::vector<std::string> outputs) {
+  outputs.push_back("study.json");
+  return FolderKind{std::move(name), std::move(outputs), {}, {"cases"}, false};
 }
 
-}  // namespace
+const FolderKind& study_shard_folder_kind() {
+  static const FolderKind kind{"study shard", {"result.json", "study.json"}, {}, {"cases"}, true};
+  return kind;
+}
 
 StudyShard parse_study_shard(const std::string& text, const std::string& option) {
   const std::size_t slash = text.find('/');
@@ -152,14 +157,8 @@ void write_study_folder(const std::string& folder, const StudyManifest& manifest
 std::string motion_digest(const MotionFile& file) {
   // FNV-1a over the motion and the model as Saltus reads them: the same inputs give the same
   // digest wherever the files lie and however they are formatted.
-  const std::string text =
-      motion_to_json(file.motion, file.model).dump() + body_model_to_json(file.model).dump();
-  std::uint64_t hash = 14695981039346656037ull;
-  for (unsigned char c : text) {
-    hash ^= c;
-    hash *= 1099511628211ull;
-  }
-  return hex64(hash);
+  return text_digest(motion_to_json(file.motion, file.model).dump() +
+                     body_model_to_json(file.model).dump());
 }
 
 nlohmann::json checkpoints_json(const std::vector<FeasibilityCheckpoint>& checkpoints) {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "saltus/formats/motion_file.h"
+#include "saltus/formats/output_kind.h"
 #include "saltus/formats/study_case_file.h"
 #include "saltus/optim/solve_policy.h"
 
@@ -30,6 +31,14 @@ struct StudyShard {
 
 /// "I/N" with 1 <= I <= N. Throws InputError naming `option` otherwise.
 StudyShard parse_study_shard(const std::string& text, const std::string& option = "--shard");
+
+/// The FolderKind of a whole study's folder named `name` ("study convergence"): its own
+/// `outputs` (result.json, tables) with study.json and the records' cases/.
+FolderKind study_folder_kind(std::string name, std::vector<std::string> outputs);
+
+/// The folder of one shard (--shard I/N): result.json, study.json, cases/, and the folders its
+/// cases wrote (a report's runs).
+const FolderKind& study_shard_folder_kind();
 
 /// study.json.
 struct StudyManifest {

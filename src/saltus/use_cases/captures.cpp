@@ -402,8 +402,12 @@ nlohmann::json capture_result_json(const CaptureFile& capture) {
 }
 
 nlohmann::json write_capture_outputs(const std::string& out_dir, const CaptureFile& capture) {
+  // What an import writes (output_kind.h), recorded in the folder for the next run to read.
+  static const FolderKind kImportFolder{"import",
+                                        {"result.json", "capture.motion.json",
+                                         "keyframes.motion.json", "trajectory.csv", "model.json"}};
   const nlohmann::json result = capture_result_json(capture);
-  OutputFolder folder(out_dir);
+  OutputFolder folder(out_dir, kImportFolder);
   write_text(folder.file("capture.motion.json"),
              captured_motion_json(capture, "model.json").dump(2) + "\n");
   write_text(folder.file("keyframes.motion.json"),

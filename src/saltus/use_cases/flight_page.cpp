@@ -426,13 +426,13 @@ FlightPageSummary export_flight_page(const std::string& source, const std::strin
   const nlohmann::json data = flight_page_data(source, today_utc(), capture);
   require_finite(data, source);
   const std::string html = flight_page_html(data);
-  save_flight_page(out_path, html);
+  const std::size_t bytes = save_flight_page(out_path, html);
   FlightPageSummary summary;
   summary.motion = data["motion"].get<std::string>();
   summary.model = data["model"]["name"].get<std::string>();
   summary.optimised = data["stages"].size() > 1;
   summary.frames = static_cast<int>(data["stages"][0]["t"].size());
-  summary.bytes = html.size();
+  summary.bytes = bytes;
   if (data.contains("capture")) summary.capture = data["capture"]["source"].get<std::string>();
   return summary;
 }

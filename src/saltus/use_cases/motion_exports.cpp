@@ -115,15 +115,16 @@ std::vector<ExportFile> opensim_files(const MotionFile& motion, const ExportSamp
           {"result.json", result_text(result, source)}};
 }
 
-/// A sampled format: its files for a motion, its description for people, and for a format
-/// written as one file, how Saltus knows a file of that format it wrote (and may replace).
+/// A sampled format: its files for a motion, its description for people, and what it writes
+/// (output_kind.h): a folder format's FolderKind, recorded in the folder for the next run, or a
+/// single-file format's FileKind.
 struct SampledExport {
   std::function<std::vector<ExportFile>(const MotionFile&, const ExportSamples&,
                                         const std::string&)>
       files;
   std::function<std::string(const MotionFile&, const ExportSamples&)> description;
-  std::function<bool(const std::string&)> written_by_saltus;
-  std::string file_kind;  ///< "glTF file", for the message when a file is not Saltus's
+  FolderKind folder;
+  FileKind file;
 };
 
 std::string frames_words(const ExportSamples& samples) {
@@ -149,8 +150,8 @@ const std::vector<FormatEntry>& format_table() {
                  "), a free joint and " + std::to_string(m.model.size() - 1) +
                  " ball joints, z up; " + frames_words(s) + " as keys and qpos, qvel, qacc";
         },
-        {},
-        ""}},
+        {"export mujoco", {"result.json", "model.xml", "trajectory.csv"}},
+        {}}},
       {{"gltf", "glTF 2.0 (.glb for Blender, three.js and web viewers)", ".glb", true},
        {gltf_files,
         [](const MotionFile& m, const ExportSamples& s) {
@@ -158,7 +159,8 @@ const std::vector<FormatEntry>& format_table() {
                  m.model.name + "), one animation of " + frames_words(s) +
                  ", the CoM's path; metres, y up";
         },
-        gltf_written_by_saltus, "glTF file"}},
+        {},
+        gltf_file_kind()}},
       {{"opensim", "OpenSim 4 (.osim model, .mot coordinates, .sto joint moments)", "", true},
        {opensim_files,
         [](const MotionFile& m, const ExportSamples& s) {
@@ -167,8 +169,9 @@ const std::vector<FormatEntry>& format_table() {
                  " coordinates (the root free, every joint three rotations); " + frames_words(s) +
                  " in degrees, and the forces that drive them";
         },
-        {},
-        ""}},
+        {"export opensim",
+         {"result.json", "model.osim", "coordinates.mot", "inverse_dynamics.sto"}},
+        {}}},
   };
   return table;
 }
@@ -209,19 +212,14 @@ ExportSummary export_sampled(const MotionFile& motion, const ExportFormat& forma
   s.frame_time = samples.frame_time;
   s.description = exporter->description(motion, samples);
   if (format.extension.empty()) {
-    OutputFolder folder(out);
+    OutputFolder folder(out, exporter->folder);
     for (const ExportFile& f : files) {
       folder.write(f.name, f.contents);
       s.files.push_back((fs::path(out) / f.name).string());
     }
     folder.commit();
   } else {
-    write_output_file(out, files.front().contents, [exporter](const std::string& existing) {
-      return exporter->written_by_saltus(existing)
-                 ? std::string()
-                 : "exists and is not a " + exporter->file_kind +
-                       " Saltus wrote; it is left as it is (remove it or choose another --out)";
-    });
+    write_output_file(out, files.front().contents, exporter->file);
     s.files = {out};
   }
   return s;

@@ -18,6 +18,19 @@ namespace saltus {
 
 namespace {
 
+// What each writer here writes (output_kind.h): the rule that guards output folders reads these
+// declarations, recorded in every folder written, and nothing else.
+const FolderKind kEvaluateFolder{"evaluate", {"result.json", "trajectory.csv", "model.json"}};
+const FolderKind kSimulateFolder{"simulate", {"result.json", "trajectory.csv", "model.json"}};
+const FolderKind kOptimizeFolder{"optimize",
+                                 {"result.json", "trajectory_before.csv", "trajectory_after.csv",
+                                  "model.json", "optimized.motion.json"}};
+const FolderKind kTwistFolder{"analyse twist", {"result.json", "twist.csv", "twist.md"}};
+const FolderKind kWhatIfFolder{"analyse what-if",
+                               {"result.json", "what_if.csv", "trajectory.csv", "model.json"}};
+const FolderKind kMassFolder{
+    "study mass", {"result.json", "mass.csv", "mass.md", "model.json", "model_scaled.json"}};
+
 /// Composes a file in memory, then writes it (write_text: the message of a failed write names
 /// DIR/file and the system's reason, e.g. a full disk).
 void write_composed(const std::string& path, const std::function<void(std::ostream&)>& body) {
@@ -39,11 +52,12 @@ void write_csv(OutputFolder& folder, const std::string& name, const BodyModel& m
                  [&](std::ostream& o) { write_trajectory_csv(o, model, samples); });
 }
 
-nlohmann::json write_outputs(const std::string& out_dir, const MotionFile& file,
-                             const std::vector<SampleRecord>& samples, nlohmann::json result) {
+nlohmann::json write_outputs(const std::string& out_dir, const FolderKind& kind,
+                             const MotionFile& file, const std::vector<SampleRecord>& samples,
+                             nlohmann::json result) {
   require_finite(result, file.path);
   require_finite(samples, file.path, "trajectory.csv");
-  OutputFolder folder(out_dir);
+  OutputFolder folder(out_dir, kind);
   write_csv(folder, "trajectory.csv", file.model, samples);
   write_common_files(folder, file, result);
   folder.commit();
@@ -55,14 +69,14 @@ nlohmann::json write_outputs(const std::string& out_dir, const MotionFile& file,
 nlohmann::json write_evaluation_outputs(const std::string& out_dir, const MotionFile& file,
                                         const MotionEvaluation& evaluation,
                                         const EvaluateOptions& options) {
-  return write_outputs(out_dir, file, evaluation.samples,
+  return write_outputs(out_dir, kEvaluateFolder, file, evaluation.samples,
                        evaluation_result_json(file, evaluation, options));
 }
 
 nlohmann::json write_simulation_outputs(const std::string& out_dir, const MotionFile& file,
                                         const SimulationResult& simulation,
                                         const EvaluateOptions& options) {
-  return write_outputs(out_dir, file, simulation.samples,
+  return write_outputs(out_dir, kSimulateFolder, file, simulation.samples,
                        simulation_result_json(file, simulation, options));
 }
 
@@ -87,7 +101,7 @@ nlohmann::json write_optimization_outputs(const std::string& out_dir, const Moti
                      std::string("its optimised motion would be refused by Saltus's own reader (") +
                          e.what() + "); nothing was written");
   }
-  OutputFolder folder(out_dir);
+  OutputFolder folder(out_dir, kOptimizeFolder);
   write_csv(folder, "trajectory_before.csv", file.model, result.before.samples);
   write_csv(folder, "trajectory_after.csv", file.model, result.after.samples);
   write_composed(folder.file("optimized.motion.json"),
@@ -101,7 +115,7 @@ nlohmann::json write_twist_outputs(const std::string& out_dir, const MotionFile&
                                    const TwistSources& sources) {
   const nlohmann::json result = twist_result_json(file, sources);
   require_finite(result, file.path);
-  OutputFolder folder(out_dir);
+  OutputFolder folder(out_dir, kTwistFolder);
   write_text(folder.file("twist.csv"), twist_csv(sources));
   write_text(folder.file("twist.md"), twist_markdown(file, sources));
   write_text(folder.file("result.json"), result.dump(2) + "\n");
@@ -114,7 +128,7 @@ nlohmann::json write_what_if_outputs(const std::string& out_dir, const MotionFil
   const nlohmann::json r = what_if_result_json(file, prepared, result);
   require_finite(r, file.path);
   require_finite(result.flight.samples, file.path, "trajectory.csv");
-  OutputFolder folder(out_dir);
+  OutputFolder folder(out_dir, kWhatIfFolder);
   write_text(folder.file("what_if.csv"), what_if_csv(prepared, result));
   write_csv(folder, "trajectory.csv", file.model, result.flight.samples);
   write_common_files(folder, file, r);
@@ -125,7 +139,7 @@ nlohmann::json write_what_if_outputs(const std::string& out_dir, const MotionFil
 nlohmann::json write_mass_outputs(const std::string& out_dir, const MotionFile& file,
                                   const MassStudyResult& study, const MassStudyOptions& options) {
   const nlohmann::json result = mass_result_json(file, study, options);
-  OutputFolder folder(out_dir);
+  OutputFolder folder(out_dir, kMassFolder);
   write_text(folder.file("mass.csv"), mass_study_csv(study));
   write_text(folder.file("mass.md"),
              "# Mass study: " + file.motion.name + "\n\n" + mass_study_markdown(study));

@@ -1,6 +1,9 @@
 #include "saltus/use_cases/study_kinds.h"
 
 #include "saltus/base/input_error.h"
+#include "saltus/formats/athletes_files.h"
+#include "saltus/formats/convergence_files.h"
+#include "saltus/formats/paper_report_files.h"
 #include "saltus/use_cases/athletes_run.h"
 #include "saltus/use_cases/convergence_run.h"
 #include "saltus/use_cases/paper_report_run.h"
@@ -9,9 +12,9 @@ namespace saltus {
 
 const std::vector<StudyKind>& study_kinds() {
   static const std::vector<StudyKind> kinds = {
-      {kConvergenceStudy, write_convergence_study_outputs},
-      {kPaperReportStudy, write_paper_report_outputs},
-      {kAthletesStudy, write_athletes_study_outputs},
+      {kConvergenceStudy, convergence_folder_kind, write_convergence_study_outputs},
+      {kPaperReportStudy, paper_report_folder_kind, write_paper_report_outputs},
+      {kAthletesStudy, athletes_folder_kind, write_athletes_study_outputs},
   };
   return kinds;
 }

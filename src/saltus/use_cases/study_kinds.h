@@ -16,6 +16,8 @@ namespace saltus {
 
 struct StudyKind {
   std::string name;  ///< study.json's "study"
+  /// What a whole study's folder holds (output_kind.h): its writer's declaration.
+  const FolderKind& (*folder)();
   /// Writes the whole study's own outputs (convergence.csv, report.md, ...) into `folder` from
   /// the study's definition and its records in case order; returns result.json.
   std::function<nlohmann::json(const OutputFolder& folder, const nlohmann::json& definition,

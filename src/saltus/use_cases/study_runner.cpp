@@ -60,7 +60,7 @@ StudyRunResult run_study(const StudyJob& job, const std::string& out_dir,
   fs::path out = fs::absolute(out_dir).lexically_normal();
   if (out.filename().empty()) out = out.parent_path();
   const fs::path partial = out.string() + ".partial";
-  study_kind(job.study);  // a study of an unknown kind could never be assembled
+  const StudyKind& kind = study_kind(job.study);  // an unknown kind could never be assembled
   StudyManifest manifest;
   manifest.study = job.study;
   manifest.cases = cases;
@@ -88,7 +88,8 @@ StudyRunResult run_study(const StudyJob& job, const std::string& out_dir,
     return result;
   }
   // Checks DIR before any case runs (an hour of work must not end in "not overwriting it").
-  OutputFolder folder(out.string());
+  OutputFolder folder(out.string(),
+                      options.shard.whole() ? kind.folder() : study_shard_folder_kind());
   write_study_folder(partial.string(), manifest, {});
 
   std::map<int, CaseRecord> records = read_case_records(partial.string(), cases, &job.case_names);
@@ -197,7 +198,7 @@ nlohmann::json merge_study_folders(const std::vector<std::string>& inputs,
                          list + (missing.size() > 5 ? ", ..." : "") +
                          "): run the shards that hold them (with --resume) and merge again");
   }
-  OutputFolder folder(out_dir);
+  OutputFolder folder(out_dir, study_kind(first.study).folder());
   for (const auto& [index, record] : records)
     if (!record.folder.empty())
       fs::copy(fs::path(source[index]) / record.folder, folder.file(record.folder),

@@ -49,6 +49,13 @@ TEST(MessageNumber, GivesSixSignificantDigitsLikePercentG) {
   EXPECT_EQ(message_number(1.4), "1.4");
 }
 
+TEST(WithArticle, PicksAOrAnByTheFirstLetter) {
+  EXPECT_EQ(with_article("import"), "an import");
+  EXPECT_EQ(with_article("body model"), "a body model");
+  EXPECT_EQ(with_article("Evaluate"), "an Evaluate");
+  EXPECT_EQ(with_article(""), "");
+}
+
 TEST(MessageText, KeepsAMessageOnOneLineAndShort) {
   EXPECT_EQ(message_text("Left Up Leg"), "Left Up Leg");
   EXPECT_EQ(message_text("caf\xC3\xA9"), "caf\xC3\xA9");  // UTF-8 stays as it is

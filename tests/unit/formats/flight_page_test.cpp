@@ -41,7 +41,7 @@ TEST(FlightPage, DataReadsBackEqualAndCannotEndItsScript) {
   const fs::path path = test::temp_path("data.html");
   save_flight_page(path.string(), html);
   EXPECT_EQ(read_flight_page_data(path.string()), small_page_data());
-  EXPECT_TRUE(is_flight_page(path.string()));
+  EXPECT_EQ(unmarked_reason(flight_page_kind(), page_file_text(path)), "");
 }
 
 TEST(FlightPage, NonFiniteNumbersAreRefused) {
@@ -64,7 +64,12 @@ TEST(FlightPage, ReplacesItsOwnPageButNoOtherFile) {
   const fs::path page = dir / "flight.html";
   save_flight_page(page.string(), html);
   save_flight_page(page.string(), html + "<!-- again -->");
-  EXPECT_EQ(page_file_text(page), html + "<!-- again -->");
+  EXPECT_EQ(page_file_text(page), marked_text(flight_page_kind(), html + "<!-- again -->"));
+  // A page the user edited since is theirs now.
+  std::ofstream(page, std::ios::app) << "<!-- my note -->\n";
+  EXPECT_THROW(save_flight_page(page.string(), html), InputError);
+  fs::remove(page);
+  save_flight_page(page.string(), html);
 
   const fs::path other = dir / "notes.html";
   std::ofstream(other) << "<html>my own notes</html>";
@@ -83,7 +88,7 @@ TEST(FlightPage, ReplacesItsOwnPageButNoOtherFile) {
   EXPECT_THROW(save_flight_page((dir / "folder.html").string(), html), InputError);
   // A missing folder is created, as for every --out.
   save_flight_page((dir / "missing" / "x.html").string(), html);
-  EXPECT_EQ(page_file_text(dir / "missing" / "x.html"), html);
+  EXPECT_EQ(page_file_text(dir / "missing" / "x.html"), marked_text(flight_page_kind(), html));
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 5)
       << "flight.html, notes.html, link.html, folder.html, missing/: no temporary left";
 }
@@ -91,9 +96,12 @@ TEST(FlightPage, ReplacesItsOwnPageButNoOtherFile) {
 TEST(FlightPage, OnlyAPageSaltusWroteIsRecognised) {
   const fs::path path = test::temp_path("plain.html");
   std::ofstream(path) << "<html><head><meta name=\"generator\" content=\"other\"></head></html>";
-  EXPECT_FALSE(is_flight_page(path.string()));
-  EXPECT_FALSE(is_flight_page(test::temp_path("absent.html").string()));
-  EXPECT_THROW(read_flight_page_data(path.string()), InputError);
+  EXPECT_NE(unmarked_reason(flight_page_kind(), page_file_text(path)), "");
+  // A page that names Saltus's generator but carries no mark (written by hand, or by a Saltus
+  // that did not mark its pages) is not replaced either.
+  std::ofstream(path) << flight_page_html(small_page_data());
+  EXPECT_THROW(save_flight_page(path.string(), "<html></html>"), InputError);
+  EXPECT_THROW(read_flight_page_data(test::temp_path("absent.html").string()), InputError);
 }
 
 }  // namespace

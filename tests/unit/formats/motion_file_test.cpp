@@ -576,11 +576,16 @@ TEST(Motion, SaveMotionFileReplacesOnlyMotionFiles) {
     save_motion_file(foreign, motion, model);
     ADD_FAILURE() << "a foreign file was replaced";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("not a Saltus motion"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("not a motion Saltus wrote"), std::string::npos)
+        << e.what();
     EXPECT_NE(std::string(e.what()).find("notes.json"), std::string::npos) << e.what();
   }
   std::ifstream kept(foreign);
   EXPECT_EQ(nlohmann::json::parse(kept)["format"], "something-else");
+  // A motion written by hand (the bundled M1's text, no mark) is the user's too.
+  const std::string by_hand = (folder / "notes.json").string();
+  std::ofstream(by_hand) << motion_to_json(motion, model).dump(2);
+  EXPECT_THROW(save_motion_file(by_hand, renamed, model), InputError);
   // Nothing left behind but the two files.
   int entries = 0;
   for ([[maybe_unused]] const auto& e : fs::directory_iterator(folder))

@@ -1,9 +1,9 @@
 // All-or-nothing output folders (formats/output_folder.h): nothing appears until commit, nothing
 // is left when there is no commit, an earlier Saltus result is replaced whole, and a folder or
-// file that Saltus did not write is never touched. Which folders are Saltus's own (every kind of
-// result, one table), the lock that lets one run at a time write a folder, the clean-up of what
-// dead runs left, and the messages of failed writes (issue 16 items 1-3, 6). The CLI-level fault
-// tests are in tests/cli/output_folder_test.cpp.
+// file that Saltus did not write is never touched. Which folders are Saltus's own (what the record
+// of their writer's declaration says, output_kind.h), the lock that lets one run at a time write a
+// folder, the clean-up of what dead runs left, and the messages of failed writes (issue 16 items
+// 1-3, 6). The CLI-level fault tests are in tests/cli/output_folder_test.cpp.
 
 #include "saltus/formats/output_folder.h"
 
@@ -28,15 +28,21 @@ namespace {
 namespace fs = std::filesystem;
 using test::names_in;
 
+/// A writer's declaration, as a verb would make it.
+const FolderKind kRun{"evaluate", {"result.json", "trajectory.csv", "model.json"}};
+/// What a committed folder holds besides the files written: the record of its kind.
+const std::string kRecord = kFolderRecordName;
+
 TEST(OutputFolder, PublishesEveryFileAtOnceOnCommit) {
   test::TempDir dir;
   const fs::path target = dir.path() / "new" / "out";  // the parent does not exist yet either
-  OutputFolder folder(target.string());
+  OutputFolder folder(target.string(), kRun);
   write_text(folder.file("result.json"), "{}\n");
   write_text(folder.file("trajectory.csv"), "t\n0\n");
   EXPECT_FALSE(fs::exists(target));
   folder.commit();
-  EXPECT_EQ(names_in(target), (std::set<std::string>{"result.json", "trajectory.csv"}));
+  EXPECT_EQ(names_in(target), (std::set<std::string>{"result.json", "trajectory.csv", kRecord}));
+  EXPECT_EQ(test::read_text((target / kRecord).string()), folder_record_text(kRun));
   EXPECT_EQ(test::read_text((target / "trajectory.csv").string()), "t\n0\n");
   EXPECT_EQ(names_in(target.parent_path()), (std::set<std::string>{"out"}));  // no leftovers
   EXPECT_EQ(fs::path(folder.final_path()), fs::absolute(target));
@@ -45,7 +51,7 @@ TEST(OutputFolder, PublishesEveryFileAtOnceOnCommit) {
 TEST(OutputFolder, LeavesNothingWithoutACommit) {
   test::TempDir dir;
   {
-    OutputFolder folder(dir / "out");
+    OutputFolder folder(dir / "out", kRun);
     write_text(folder.file("result.json"), "{}\n");
   }
   EXPECT_TRUE(names_in(dir.path()).empty());
@@ -54,19 +60,21 @@ TEST(OutputFolder, LeavesNothingWithoutACommit) {
 TEST(OutputFolder, ReplacesAnEarlierResultWhole) {
   test::TempDir dir;
   fs::create_directories(dir.path() / "out");
-  // An earlier `saltus evaluate` result (issue 16: only Saltus's own results are replaced).
+  // An earlier result of another verb (issue 16: only Saltus's own results are replaced).
+  const FolderKind earlier{"simulate", {"result.json", "trajectory.csv"}};
+  write_folder_record(dir / "out", earlier);
   test::write_text(dir / "out/result.json",
-                   "{\"format\": \"saltus-result/1\", \"status\": \"evaluated\"}\n");
+                   "{\"format\": \"saltus-result/1\", \"status\": \"simulated\"}\n");
   test::write_text(dir / "out/trajectory.csv", "old\n");
-  OutputFolder folder(dir / "out");
+  OutputFolder folder(dir / "out", kRun);
   write_text(folder.file("result.json"), "{\"new\": true}\n");
   folder.commit();
-  EXPECT_EQ(names_in(dir.path() / "out"), (std::set<std::string>{"result.json"}));
+  EXPECT_EQ(names_in(dir.path() / "out"), (std::set<std::string>{"result.json", kRecord}));
   EXPECT_EQ(test::read_text(dir / "out/result.json"), "{\"new\": true}\n");
   EXPECT_EQ(names_in(dir.path()), (std::set<std::string>{"out"}));
   // An empty folder is taken too.
   fs::create_directories(dir.path() / "empty");
-  OutputFolder empty(dir / "empty");
+  OutputFolder empty(dir / "empty", kRun);
   empty.commit();
   EXPECT_TRUE(fs::is_directory(dir.path() / "empty"));
 }
@@ -75,12 +83,12 @@ TEST(OutputFolder, NeverTouchesWhatSaltusDidNotWrite) {
   test::TempDir dir;
   fs::create_directories(dir.path() / "thesis");
   test::write_text(dir / "thesis/chapter1.tex", "precious");
-  EXPECT_THROW(OutputFolder(dir / "thesis"), InputError);
+  EXPECT_THROW(OutputFolder(dir / "thesis", kRun), InputError);
   EXPECT_EQ(names_in(dir.path() / "thesis"), (std::set<std::string>{"chapter1.tex"}));
   test::write_text(dir / "notes.txt", "precious");
-  EXPECT_THROW(OutputFolder(dir / "notes.txt"), InputError);
+  EXPECT_THROW(OutputFolder(dir / "notes.txt", kRun), InputError);
   EXPECT_EQ(test::read_text(dir / "notes.txt"), "precious");
-  EXPECT_THROW(OutputFolder(""), InputError);
+  EXPECT_THROW(OutputFolder("", kRun), InputError);
   EXPECT_EQ(names_in(dir.path()), (std::set<std::string>{"thesis", "notes.txt"}));
 }
 
@@ -97,20 +105,22 @@ TEST(WriteText, WritesTheBytesOrNamesTheFile) {
 }
 
 // Hardening (issue 16).
-// write_new_file, the single file of export --out: new files only, nothing left behind.
-TEST(WriteNewFile, WritesANewFileAndNeverReplacesOne) {
+// write_output_file of a kind without a mark (BVH): new files only, nothing left behind.
+const FileKind kBvh = FileKind::unmarked("BVH capture");
+
+TEST(WriteOutputFile, WritesANewFileAndNeverReplacesOne) {
   test::TempDir dir;
   const std::string path = dir / "sub/flight.bvh";
-  write_new_file(path, "first\n");
+  write_output_file(path, "first\n", kBvh);
   EXPECT_EQ(test::read_text(path), "first\n");
   EXPECT_EQ(names_in(dir / "sub"), std::set<std::string>{"flight.bvh"});
   // Saltus cannot tell its own file from a user's thesis: an existing file is never replaced.
-  EXPECT_THROW(write_new_file(path, "second\n"), InputError);
+  EXPECT_THROW(write_output_file(path, "second\n", kBvh), InputError);
   EXPECT_EQ(test::read_text(path), "first\n");
   const std::string thesis = dir / "thesis.tex";
   test::write_text(thesis, "\\chapter{Mine}\n");
   try {
-    write_new_file(thesis, "HIERARCHY\n");
+    write_output_file(thesis, "HIERARCHY\n", kBvh);
     ADD_FAILURE() << "replaced";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("exists"), std::string::npos) << e.what();
@@ -119,29 +129,29 @@ TEST(WriteNewFile, WritesANewFileAndNeverReplacesOne) {
   EXPECT_EQ(names_in(dir / "sub"), std::set<std::string>{"flight.bvh"});
 }
 
-TEST(WriteNewFile, FollowsNoPlantedLink) {
+TEST(WriteOutputFile, FollowsNoPlantedLink) {
   test::TempDir dir;
   const std::string victim = dir / "victim.txt";
   test::write_text(victim, "keep");
   // A link at the output name, even a dangling one, is an existing entry.
   std::filesystem::create_symlink(dir / "nowhere", dir / "dangling.bvh");
-  EXPECT_THROW(write_new_file(dir / "dangling.bvh", "x"), InputError);
+  EXPECT_THROW(write_output_file(dir / "dangling.bvh", "x", kBvh), InputError);
   EXPECT_FALSE(std::filesystem::exists(dir / "nowhere"));
   // Links at the temporary names an earlier version used, and at the next ones this process
   // would pick, are not written through: each temporary is created with O_EXCL | O_NOFOLLOW.
   std::filesystem::create_symlink(victim, dir / ".out.bvh.saltus-tmp");
-  write_new_file(dir / "out.bvh", "new");
+  write_output_file(dir / "out.bvh", "new", kBvh);
   EXPECT_EQ(test::read_text(dir / "out.bvh"), "new");
   EXPECT_EQ(test::read_text(victim), "keep");
   EXPECT_EQ(names_in(dir.path()), (std::set<std::string>{".out.bvh.saltus-tmp", "dangling.bvh",
                                                          "out.bvh", "victim.txt"}));
 }
 
-TEST(WriteNewFile, ASystemRefusalIsAnOutputError) {
+TEST(WriteOutputFile, ASystemRefusalIsAnOutputError) {
   test::TempDir dir;
   test::write_text(dir / "plain", "a file, not a folder");
-  EXPECT_THROW(write_new_file(dir / "plain/flight.bvh", "x"), OutputError);
-  EXPECT_THROW(write_new_file("", "x"), InputError);
+  EXPECT_THROW(write_output_file(dir / "plain/flight.bvh", "x", kBvh), OutputError);
+  EXPECT_THROW(write_output_file("", "x", kBvh), InputError);
   EXPECT_EQ(test::read_text(dir / "plain"), "a file, not a folder");
 }
 
@@ -149,14 +159,11 @@ namespace hardening {
 
 namespace fs = std::filesystem;
 
-/// A folder holding what Saltus writes for `kind`, with a result.json that identifies it.
-void make_result(const fs::path& folder, const ResultKind& kind) {
+/// A folder holding what a writer of `kind` writes, and the record of its declaration.
+void make_result(const fs::path& folder, const FolderKind& kind) {
   fs::create_directories(folder);
-  nlohmann::json result = {{"format", kind.format}};
-  if (!kind.field.empty())
-    result[kind.field] = kind.values.empty() ? std::string("solved") : kind.values.front();
   for (const std::string& name : kind.files)
-    test::write_text((folder / name).string(), name == "result.json" ? result.dump() : "x");
+    test::write_text((folder / name).string(), "x");
   for (const std::string& images : kind.image_folders) {
     fs::create_directories(folder / images);
     test::write_text((folder / images / "M1_root_force.png").string(), "png");
@@ -165,22 +172,24 @@ void make_result(const fs::path& folder, const ResultKind& kind) {
     fs::create_directories(folder / records);
     test::write_text((folder / records / "0007.json").string(), "{}");
   }
+  write_folder_record(folder.string(), kind);
 }
 
-TEST(OutputFolder, EveryKindOfResultIsRecognisedAndAnyOtherFileMakesItForeign) {
-  ASSERT_GE(result_kinds().size(), 7u);
-  std::set<std::string> names;
-  for (const ResultKind& kind : result_kinds())
-    names.insert(kind.name);
-  for (const char* expected : {"evaluate", "simulate", "optimize", "study convergence",
-                               "study mass", "study athletes", "paper", "study shard", "import"})
-    EXPECT_EQ(names.count(expected), 1u) << expected;
+/// Declarations that exercise each of the rule's clauses: plain files, a folder of images, a
+/// folder of case records, sub-folders that are results themselves. (The verbs' own are tested
+/// where they write: tests/cli/repeat_test.cpp runs every verb into its own output.)
+const std::vector<FolderKind> kClauses = {
+    kRun,
+    {"study convergence", {"result.json", "convergence.csv", "study.json"}, {}, {"cases"}},
+    {"paper", {"result.json", "report.md"}, {"figures"}, {"cases"}, true},
+};
 
-  for (const ResultKind& kind : result_kinds()) {
+TEST(OutputFolder, AFolderIsSaltusAsItsRecordSaysAndAnyOtherEntryMakesItTheUsers) {
+  for (const FolderKind& kind : kClauses) {
     test::TempDir dir;
     const fs::path folder = dir.path() / "r";
     make_result(folder, kind);
-    if (kind.holds_results) make_result(folder / "M1", result_kinds().front());
+    if (kind.holds_results) make_result(folder / "M1", kRun);
     EXPECT_EQ(foreign_content(folder.string()), "") << kind.name;
     test::write_text((folder / "thesis.tex").string(), "mine");
     EXPECT_NE(foreign_content(folder.string()).find("thesis.tex"), std::string::npos) << kind.name;
@@ -190,6 +199,11 @@ TEST(OutputFolder, EveryKindOfResultIsRecognisedAndAnyOtherFileMakesItForeign) {
     fs::remove(folder / "src");
     fs::create_symlink("/etc/passwd", folder / "link");
     EXPECT_NE(foreign_content(folder.string()), "") << kind.name << ": a link";
+    fs::remove(folder / "link");
+    // A declared name as a folder, not a file, is not what the writer wrote.
+    fs::remove(folder / kind.files.front());
+    fs::create_directories(folder / kind.files.front());
+    EXPECT_NE(foreign_content(folder.string()), "") << kind.name << ": a folder named as a file";
   }
 }
 
@@ -199,19 +213,28 @@ TEST(OutputFolder, WhatIsNotASaltusResult) {
   fs::create_directories(folder);
   EXPECT_EQ(foreign_content(folder.string()), "") << "an empty folder holds nothing to lose";
   test::write_text((folder / "result.json").string(), R"({"format": "other-tool/2"})");
-  EXPECT_NE(foreign_content(folder.string()).find("not a Saltus result"), std::string::npos);
-  test::write_text((folder / "result.json").string(), "not json");
-  EXPECT_NE(foreign_content(folder.string()).find("not a Saltus result"), std::string::npos);
-  fs::remove(folder / "result.json");
-  test::write_text((folder / "notes.txt").string(), "x");
-  EXPECT_NE(foreign_content(folder.string()).find("no Saltus result.json"), std::string::npos);
+  EXPECT_NE(foreign_content(folder.string()).find("no record of what Saltus wrote"),
+            std::string::npos);
+  // A result of a Saltus that kept no record: its files cannot be told from the user's.
+  test::write_text((folder / "result.json").string(),
+                   R"({"format": "saltus-result/1", "status": "evaluated"})");
+  EXPECT_NE(foreign_content(folder.string()).find("kept no record"), std::string::npos)
+      << foreign_content(folder.string());
+  // A record that is not Saltus's, or names entries outside the folder.
+  for (const char* record :
+       {"not json", R"({"format": "saltus-folder/1"})",
+        R"({"format": "saltus-folder/1", "kind": "evaluate", "files": ["../thesis.tex"],
+            "image_folders": [], "record_folders": [], "holds_results": false})",
+        R"({"format": "saltus-folder/1", "kind": "", "files": [], "image_folders": [],
+            "record_folders": [], "holds_results": false})"}) {
+    test::write_text((folder / kFolderRecordName).string(), record);
+    EXPECT_NE(foreign_content(folder.string()).find("not a record Saltus wrote"), std::string::npos)
+        << record << ": " << foreign_content(folder.string());
+  }
   // The paper report's figures hold images only; its runs must themselves be results.
-  const ResultKind* paper = nullptr;
-  for (const ResultKind& kind : result_kinds())
-    if (kind.name == "paper") paper = &kind;
-  ASSERT_NE(paper, nullptr);
+  const FolderKind& paper = kClauses.back();
   const fs::path report = dir.path() / "report";
-  make_result(report, *paper);
+  make_result(report, paper);
   test::write_text((report / "figures/notes.txt").string(), "x");
   EXPECT_NE(foreign_content(report.string()).find("figures/"), std::string::npos);
   fs::remove(report / "figures/notes.txt");
@@ -225,11 +248,28 @@ TEST(OutputFolder, WhatIsNotASaltusResult) {
   EXPECT_NE(foreign_content(report.string()).find("M1/"), std::string::npos);
 }
 
+TEST(OutputFolder, AWriterThatWritesWhatItDidNotDeclareFailsAtCommitAndChangesNothing) {
+  // The declaration and the writer cannot drift apart unseen: the first run of a writer that
+  // writes an undeclared file fails (a bug, exit 1), before DIR is touched.
+  test::TempDir dir;
+  const std::string out = dir / "out";
+  OutputFolder folder(out, kRun);
+  folder.write("result.json", "{}");
+  folder.write("what_if.csv", "t\n");
+  try {
+    folder.commit();
+    ADD_FAILURE() << "committed an undeclared file";
+  } catch (const std::logic_error& e) {
+    EXPECT_NE(std::string(e.what()).find("what_if.csv"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(out));
+}
+
 TEST(OutputFolder, CommitsAllOrNothingAndReplacesOnlyItsOwn) {
   test::TempDir dir;
   const std::string out = dir / "out";
   {
-    OutputFolder folder(out);
+    OutputFolder folder(out, kRun);
     folder.write("result.json", R"({"format": "saltus-result/1", "status": "evaluated"})");
     folder.write("trajectory.csv", "t\n0\n");
     EXPECT_FALSE(fs::exists(out)) << "nothing at DIR before commit";
@@ -237,33 +277,33 @@ TEST(OutputFolder, CommitsAllOrNothingAndReplacesOnlyItsOwn) {
   }
   EXPECT_EQ(names_in(dir.path()), std::set<std::string>{});
   {
-    OutputFolder folder(out);
+    OutputFolder folder(out, kRun);
     folder.write("result.json", R"({"format": "saltus-result/1", "status": "evaluated"})");
     folder.commit();
   }
-  EXPECT_EQ(names_in(out), std::set<std::string>{"result.json"});
+  EXPECT_EQ(names_in(out), (std::set<std::string>{"result.json", kRecord}));
   {
-    OutputFolder folder(out);
+    OutputFolder folder(out, kRun);
     folder.write("result.json", R"({"format": "saltus-result/1", "status": "simulated"})");
     folder.write("model.json", "{}");
     folder.commit();
   }
-  EXPECT_EQ(names_in(out), (std::set<std::string>{"result.json", "model.json"}));
+  EXPECT_EQ(names_in(out), (std::set<std::string>{"result.json", "model.json", kRecord}));
   EXPECT_EQ(names_in(dir.path()), std::set<std::string>{"out"});
   test::write_text(out + "/thesis.tex", "mine");
-  EXPECT_THROW(OutputFolder{out}, InputError);
+  EXPECT_THROW((OutputFolder{out, kRun}), InputError);
   EXPECT_THROW(check_output_folder(out), InputError);
   EXPECT_EQ(names_in(dir.path()), std::set<std::string>{"out"});
-  EXPECT_THROW(OutputFolder{out + "/thesis.tex"}, InputError) << "a file";
-  EXPECT_THROW(OutputFolder{"/"}, InputError);
+  EXPECT_THROW((OutputFolder{out + "/thesis.tex", kRun}), InputError) << "a file";
+  EXPECT_THROW((OutputFolder{"/", kRun}), InputError);
 }
 
 TEST(OutputFolder, OneWriterAtATime) {
   test::TempDir dir;
   const std::string out = dir / "out";
-  OutputFolder first(out);
+  OutputFolder first(out, kRun);
   try {
-    OutputFolder second(out);
+    OutputFolder second(out, kRun);
     ADD_FAILURE() << "two writers of one folder";
   } catch (const OutputError& e) {
     EXPECT_TRUE(e.busy());
@@ -273,7 +313,7 @@ TEST(OutputFolder, OneWriterAtATime) {
   }
   first.write("result.json", R"({"format": "saltus-result/1", "status": "evaluated"})");
   first.commit();
-  OutputFolder third(out);  // free again once committed
+  OutputFolder third(out, kRun);  // free again once committed
 }
 
 TEST(OutputFolder, RemovesWhatDeadRunsLeftAndRestoresAMovedAwayFolder) {
@@ -294,10 +334,11 @@ TEST(OutputFolder, RemovesWhatDeadRunsLeftAndRestoresAMovedAwayFolder) {
   fs::create_directories(dir.path() / ".out.old-4242-1");
   test::write_text((dir.path() / ".out.old-4242-1/result.json").string(),
                    R"({"format": "saltus-result/1", "status": "evaluated"})");
+  write_folder_record(dir / ".out.old-4242-1", kRun);
   // What the dead runs recorded before they created those folders.
   test::write_text((dir.path() / ".out.lock").string(),
                    "4242\ntmp .out.tmp-4242-0\nold .out.old-4242-1\ntmp .out.tmp-77-3\n");
-  { OutputFolder folder(out.string()); }  // not committed
+  { OutputFolder folder(out.string(), kRun); }  // not committed
   EXPECT_EQ(names_in(dir.path()), (std::set<std::string>{"out", ".out.tmp-backup", ".outer.tmp-1-1",
                                                          ".out.tmp-1-0", ".out.old-2-0"}));
   EXPECT_TRUE(fs::exists(out / "result.json")) << "the old folder is back";
@@ -316,7 +357,7 @@ TEST(OutputFolder, AKilledRunsForkedChildrenDoNotKeepItsLock) {
   ASSERT_GE(run, 0);
   if (run == 0) {
     ::close(ready[0]);
-    OutputFolder folder(out);
+    OutputFolder folder(out, kRun);
     // The case process says when it runs: fork's child handlers (which close the copies) have
     // run by then, however late the scheduler starts it on a loaded machine.
     int started[2];
@@ -342,7 +383,7 @@ TEST(OutputFolder, AKilledRunsForkedChildrenDoNotKeepItsLock) {
   ::kill(run, SIGKILL);
   ::waitpid(run, nullptr, 0);
   EXPECT_EQ(::kill(case_process, 0), 0) << "the case process outlives the run";
-  EXPECT_NO_THROW(OutputFolder again(out));
+  EXPECT_NO_THROW(OutputFolder again(out, kRun));
   ::kill(case_process, SIGKILL);
 }
 
@@ -350,7 +391,7 @@ TEST(OutputFolder, LeavesAUsersFileWithTheLocksName) {
   test::TempDir dir;
   const std::string out = dir / "out";
   test::write_text(dir / ".out.lock", "my notes\n");
-  EXPECT_THROW(OutputFolder folder(out), InputError);
+  EXPECT_THROW(OutputFolder folder(out, kRun), InputError);
   EXPECT_EQ(test::read_text(dir / ".out.lock"), "my notes\n");
   EXPECT_EQ(names_in(dir.path()), std::set<std::string>{".out.lock"});
 }
@@ -362,23 +403,23 @@ TEST(OutputFolder, RefusesAReadOnlyFolderBeforeAnyWork) {
   test::TempDir dir;
   const std::string out = dir / "out";
   {
-    OutputFolder first(out);
+    OutputFolder first(out, kRun);
     first.write("result.json", R"({"format": "saltus-result/1", "status": "evaluated"})");
     first.commit();
   }
   fs::permissions(out, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
                            fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
   EXPECT_THROW(check_output_folder(out), OutputError);
-  EXPECT_THROW(OutputFolder again(out), OutputError);
+  EXPECT_THROW(OutputFolder again(out, kRun), OutputError);
   fs::permissions(out, fs::perms::owner_write, fs::perm_options::add);
   EXPECT_EQ(names_in(dir.path()), std::set<std::string>{"out"});
-  EXPECT_EQ(names_in(out), std::set<std::string>{"result.json"});
+  EXPECT_EQ(names_in(out), (std::set<std::string>{"result.json", kRecord}));
 }
 
 TEST(OutputFolder, FailedWritesNameTheFinalPathAndTheReason) {
   test::TempDir dir;
   const std::string out = dir / "out";
-  OutputFolder folder(out);
+  OutputFolder folder(out, kRun);
   try {
     folder.write("missing-sub-folder/result.json", "{}");
     ADD_FAILURE() << "no error";
@@ -393,7 +434,7 @@ TEST(OutputFolder, FailedWritesNameTheFinalPathAndTheReason) {
     EXPECT_EQ(message.find(".tmp-"), std::string::npos) << message;
   }
   // A nested folder (the paper report's runs) maps through both temporaries.
-  OutputFolder inner(folder.file("M1"));
+  OutputFolder inner(folder.file("M1"), kRun);
   try {
     write_text(inner.file("x/y.csv"), "");
     ADD_FAILURE() << "no error";

@@ -45,7 +45,7 @@ TEST(PaperReportFiles, TheReportAndResultJsonCarryTheSameFigures) {
   report.skills.push_back({"M1", a_run("solved", 0.0123), std::nullopt});
   report.skills.push_back({"M2", a_run("crashed", 0.0), std::nullopt});
   report.mass_markdown = "No M7 among the motions.\n";
-  OutputFolder folder(dir / "report");
+  OutputFolder folder(dir / "report", paper_report_folder_kind());
   const nlohmann::json result = write_paper_report_files(folder, a_definition(), report, 1);
   folder.commit();
   const std::string md = test::read_text(dir / "report/report.md");

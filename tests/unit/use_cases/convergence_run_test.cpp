@@ -56,7 +56,7 @@ TEST(ConvergenceRun, OutputsAreRefusedForRecordsOfAnotherKind) {
   test::TempDir dir;
   CaseRecord other;
   other.kind = CaseKind::kOptimization;
-  OutputFolder folder(dir / "c");
+  OutputFolder folder(dir / "c", convergence_folder_kind());
   EXPECT_THROW(
       write_convergence_study_outputs(folder, convergence_definition({}, small_design()), {other}),
       InputError);

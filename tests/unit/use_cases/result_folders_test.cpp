@@ -11,6 +11,7 @@
 #include <set>
 
 #include "saltus/base/input_error.h"
+#include "saltus/formats/output_kind.h"
 #include "saltus/formats/result_json.h"
 #include "support/cli_runner.h"
 
@@ -38,17 +39,18 @@ TEST(ResultFolders, EachVerbWritesExactlyItsFiles) {
   test::TempDir dir;
   write_evaluation_outputs(dir / "e", file, evaluate_motion(file.motion, file.model, options),
                            options);
-  EXPECT_EQ(names_in_folder(dir / "e"),
-            (std::set<std::string>{"result.json", "trajectory.csv", "model.json"}));
+  EXPECT_EQ(names_in_folder(dir / "e"), (std::set<std::string>{"result.json", "trajectory.csv",
+                                                               "model.json", kFolderRecordName}));
   write_simulation_outputs(dir / "s", file, simulate_motion(file.motion, file.model, options),
                            options);
-  EXPECT_EQ(names_in_folder(dir / "s"),
-            (std::set<std::string>{"result.json", "trajectory.csv", "model.json"}));
+  EXPECT_EQ(names_in_folder(dir / "s"), (std::set<std::string>{"result.json", "trajectory.csv",
+                                                               "model.json", kFolderRecordName}));
 
   const WhatIf prepared(file.motion, file.model, options);
   write_what_if_outputs(dir / "w", file, prepared, prepared.fly(WhatIfChange{}));
   EXPECT_EQ(names_in_folder(dir / "w"),
-            (std::set<std::string>{"result.json", "what_if.csv", "trajectory.csv", "model.json"}));
+            (std::set<std::string>{"result.json", "what_if.csv", "trajectory.csv", "model.json",
+                                   kFolderRecordName}));
 
   OptimizeOptions optimize;
   optimize.nlp.samples = 21;
@@ -57,7 +59,7 @@ TEST(ResultFolders, EachVerbWritesExactlyItsFiles) {
   write_optimization_outputs(dir / "o", file, result, optimize);
   EXPECT_EQ(names_in_folder(dir / "o"),
             (std::set<std::string>{"result.json", "trajectory_before.csv", "trajectory_after.csv",
-                                   "model.json", "optimized.motion.json"}));
+                                   "model.json", "optimized.motion.json", kFolderRecordName}));
   // The optimised motion names the model beside it and reloads to the returned motion.
   const MotionFile back = load_motion_file(dir / "o/optimized.motion.json");
   EXPECT_EQ(back.motion.model, "model.json");
