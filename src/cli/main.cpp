@@ -32,6 +32,7 @@
 #include "saltus/formats/result_json.h"
 #include "saltus/motion/motion.h"
 #include "saltus/optim/optimize.h"
+#include "saltus/optim/result_standing.h"
 #include "saltus/optim/solver_memory.h"
 #include "saltus/use_cases/athlete_models.h"
 #include "saltus/use_cases/captures.h"
@@ -392,17 +393,8 @@ int run_optimize(const CommonArgs& args) {
       std::printf("  joint loads: %s; largest rise at %s\n",
                   saltus::joint_load_verdict_words(rise).c_str(),
                   saltus::joint_load_rise_words(rise, saltus::body_weight_N(file.model)).c_str());
-    const auto& polish = result.joint_load_polish;
-    if (polish && polish->bounded_alternative && rise.ratio() > saltus::kJointLoadRiseLimit &&
-        polish->bounded_alternative->landing_drift_deg >
-            saltus::AutomaticResolution{}.max_landing_drift_deg)
-      std::printf(
-          "  with human joints instead: the polish's bounded try closest to flying as shown "
-          "(every joint within %.2fx its input peak, %.3g N) has a free flight that lands %.0f "
-          "deg from it: with the joints its input needs, this body does not fly these "
-          "keyframes\n",
-          polish->bounded_alternative->joint_rise, polish->bounded_alternative->avg_root_force,
-          polish->bounded_alternative->landing_drift_deg);
+    const std::string human_joints = saltus::human_joints_warning(result, rise);
+    if (!human_joints.empty()) std::printf("  %s\n", human_joints.c_str());
     print_strength(file.model, result.after.check);
     std::printf(
         "  wrote %s/{result.json, trajectory_before.csv, trajectory_after.csv, model.json, "

@@ -489,6 +489,7 @@ Motion parse_motion(const nlohmann::json& document, const std::string& file,
   Motion motion;
   motion.name = default_name(file);
   if (auto name = root.find("name")) motion.name = name->as_string();
+  if (auto description = root.find("description")) motion.description = description->as_string();
   // Optional here so a caller that supplies the model (load_motion_file's override) may omit it.
   motion.model = model.name;
   if (auto field = root.find("model")) motion.model = field->as_string();
@@ -557,6 +558,7 @@ nlohmann::json motion_to_json(const Motion& motion, const BodyModel& model) {
   nlohmann::json out;
   out["format"] = kMotionFormat;
   out["name"] = motion.name;
+  if (!motion.description.empty()) out["description"] = motion.description;
   out["model"] = motion.model.empty() ? model.name : motion.model;
 
   nlohmann::json takeoff;

@@ -49,6 +49,9 @@ struct StoredSpline {
 
 struct Motion {
   std::string name;
+  /// Free text for people (the file's "description"): kept through edits and optimisation and
+  /// written back, so a saved or optimised motion still says what it is.
+  std::string description;
   std::string model;  ///< the "model" field as written (name or relative path)
   Takeoff takeoff;
   Tolerances tolerances;

@@ -300,12 +300,16 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
     nlp_options.given_keyframe_times.push_back(k.time);
   int iterations = 0, restarts = 0;
   double seconds = 0.0;
+  // The solve under way, for the caller's progress (ProgressInfo::stage); set before each solve.
+  SolveStage stage;
+  bool landing_pass = false;
   // Each level's solver counts from 0: the caller sees one count and one clock over the levels
   // (an app's iteration counter never goes backwards).
   const ProgressCallback counted = progress ? ProgressCallback([&](const ProgressInfo& info) {
     ProgressInfo over_levels = info;
     over_levels.iteration += iterations;
     over_levels.elapsed_seconds += seconds;
+    over_levels.stage = stage;
     progress(over_levels);
   })
                                             : ProgressCallback();
@@ -354,6 +358,8 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       if (coarse)
         level_solver.objective_change_tolerance =
             std::max(solver.objective_change_tolerance, rules.coarse_objective_change);
+      stage = {SolveStage::Kind::kLevel, level + 1, automatic ? rules.max_refinements + 1 : 1,
+               landing_pass};
       Solved solved = solve_level(motion, at_start, model, start_trajectory, level_options,
                                   level_solver, counted, cancel);
       count(solved.solve);
@@ -534,6 +540,7 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
         // Only where the resolution is the optimiser's to choose.
         const std::vector<double> times = keyframe_times_of(over_limit->motion.optimized);
         std::vector<int> spans = pass.subdivisions;
+        stage = {SolveStage::Kind::kJoints, over_limit->step + 1, kPolishAttempts, landing_pass};
         if (refine(spans, residual_per_interval(over_limit->check, times), times, rules)) {
           Motion at_start = over_limit->motion.optimized;
           at_start.spline.reset();
@@ -561,6 +568,7 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
         continue;
       }
       const MotionNlpOptions step_options = try_options(attempt, pass.subdivisions);
+      stage = {SolveStage::Kind::kJoints, step + 1, kPolishAttempts, landing_pass};
       const bool from_bounded = !attempt.from_levels && bounded_start;
       Solved polished =
           solve_level(motion, from_bounded ? bounded_start->optimized : pass.best.optimized, model,
@@ -634,6 +642,7 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
   if (automatic && levels.best.solve.solved && levels.flown &&
       levels.flown->drift_deg > rules.max_landing_drift_deg &&
       nlp_options.root_moment_weight < kLandingRootMomentWeight && !(cancel && cancel->load())) {
+    landing_pass = true;
     Levels weighed = run_levels(kLandingRootMomentWeight);
     polish(weighed);
     if (weighed.best.solve.solved && weighed.flown &&
@@ -667,6 +676,12 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
         evaluate_motion(best.optimized, model, evaluate_options(options.nlp.samples, {}));
   }
   result.optimized_motion = with_own_flight_state(best.optimized, result.after);
+  // A run stopped by its cancel flag did not finish the optimiser's policy (the finer levels,
+  // the joints' tries): whatever a solve before the stop reached, it is called cancelled.
+  if (cancel && cancel->load()) {
+    result.solve.status = "cancelled";
+    result.solve.solved = false;
+  }
   return result;
 }
 

@@ -278,6 +278,9 @@ bool optimizer_agrees_with_check(const OptimizationResult& result);
 
 /// Throws std::invalid_argument for options out of range; solver failures are reported in
 /// result.solve (the result is still complete, from the best feasible or the last iterate).
+/// Progress comes once per iteration with the stage it belongs to (ProgressInfo::stage). Once
+/// `cancel` is set the run stops at the next iteration and reports "cancelled", not solved,
+/// whatever the solves before the stop reached: it did not finish the optimiser's policy.
 ///
 /// Cumulative quaternion splines turn by ω_j = log(q_{j−1}⁻¹ q_j) between control points, less
 /// than 180°. Where consecutive keyframes are far apart in rotation over uneven intervals (a

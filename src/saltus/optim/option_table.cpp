@@ -101,6 +101,10 @@ std::vector<OptionSpec> make_table() {
   // "knots_per_interval" records the K used, which may be finer (optimize_motion), and
   // "resolution" whether it was automatic; this key keeps the number as it always did.
   record(o, "knots_per_interval_requested", ResultRecord::kOptimization);
+  o.costly_above = 8;
+  o.cost =
+      "the optimiser's variables grow with the knots and its time and memory faster still: "
+      "at K = 50 a run takes minutes and gigabytes";
   o.read = [](const OptimizeOptions& x) -> OptionValue {
     if (x.automatic_resolution) return std::string("auto");
     return x.nlp.knots_per_interval;
@@ -122,6 +126,10 @@ std::vector<OptionSpec> make_table() {
   range(o, OptionKind::kInteger, 2, 100000);
   o.use = OptionUse::kEvaluation;
   record(o, "samples", ResultRecord::kEveryResult);
+  o.costly_above = 2001;
+  o.cost =
+      "every evaluation's time and memory grow with the samples: at 100000 an optimisation "
+      "holds 1.6 GB and writes two 200 MB trajectories";
   bind(o, nlp, &MotionNlpOptions::samples);
   t.push_back(o);
 
@@ -129,6 +137,8 @@ std::vector<OptionSpec> make_table() {
             "Ipopt's iteration limit (0: only the starting point is evaluated)");
   range(o, OptionKind::kInteger, 0, 100000);
   bind(o, solver, &SolverOptions::max_iterations);
+  o.costly_above = 3000;
+  o.cost = "a run that does not converge goes on for that many iterations: minutes to hours";
   t.push_back(o);
 
   o = entry("tolerance", "--tol", "Tolerance", "",

@@ -8,6 +8,7 @@
 /// (MotionNlpOptions, SolverOptions, kDefaultSamples), read through each entry: stated once.
 
 #include <functional>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
@@ -74,6 +75,11 @@ struct OptionSpec {
   std::optional<OptionValue> value_when_inactive;
   /// What result.json records when that differs from `read`; null = `read`.
   std::function<OptionValue(const OptimizeOptions&)> recorded_value;
+  /// Numbers: a value above this costs minutes or gigabytes where the default costs a second
+  /// or two (the app asks before keeping one); +inf: no value does.
+  double costly_above = std::numeric_limits<double>::infinity();
+  /// What such a value costs, in words ("" when none does).
+  std::string cost;
 
   /// The default of an optimisation, or (kEvaluation) of `saltus evaluate` and `simulate`:
   /// read from with_evaluation_options(EvaluateOptions{}).

@@ -53,6 +53,9 @@ class RunWatch {
       info.objective = it.objective;
       info.constraint_violation = it.constraint_violation;
       info.elapsed_seconds = std::chrono::duration<double>(Clock::now() - start_).count();
+      info.stage_iteration = iterations;
+      info.objective_change_tolerance = options_.objective_change_tolerance;
+      info.acceptable_iterations = options_.acceptable_iterations;
       progress_(info);
     }
     if (cancel_ && cancel_->load()) return false;
@@ -103,6 +106,32 @@ IpoptSettings ipopt_settings(const SolverOptions& o) {
 }
 
 }  // namespace
+
+std::string solve_stage_words(const SolveStage& stage) {
+  if (stage.kind == SolveStage::Kind::kSolve) return "solving";
+  std::string out = stage.landing_pass ? "second pass for the landing, " : "";
+  const std::string of =
+      std::to_string(stage.step) + " of at most " + std::to_string(stage.max_steps);
+  if (stage.kind == SolveStage::Kind::kLevel) {
+    if (stage.max_steps <= 1) return out + "the least root force on the knots asked for";
+    return out + "level " + of +
+           (stage.step == 1 ? ": the least root force on knots chosen from how far the body turns"
+                            : ": the least root force on knots refined where it lives");
+  }
+  return out + "joints, try " + of +
+         ": least joint effort at the keyframe times found, the root force held";
+}
+
+std::string objective_meaning_words(const SolveStage& stage) {
+  if (stage.kind == SolveStage::Kind::kJoints)
+    return "The objective now adds least joint effort (every joint's moment squared over the "
+           "flight, weighted) to the root force and moment: a new problem, so its value starts "
+           "higher than the level's and falls as the joints work less.";
+  return "The objective is the root force and moment squared over the flight plus small terms "
+         "that keep the keyframes and the joints near the given motion. Each stage is a new "
+         "problem on other knots or terms: it starts again from its own value, so a jump "
+         "between stages is no failure.";
+}
 
 SolveReport solve_nlp(Nlp& nlp, const SolverOptions& options, const ProgressCallback& progress,
                       const std::atomic<bool>* cancel) {

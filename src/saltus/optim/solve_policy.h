@@ -61,11 +61,44 @@ struct SolverOptions {
   std::string derivative_test_file;
 };
 
+/// Which solve of a run an iteration belongs to: optimize_motion's levels (the root force on
+/// knots refined level by level) and least joint effort's tries; solve_nlp on its own reports
+/// kSolve. Each is a problem of its own, with an objective of its own (solve_stage_words).
+struct SolveStage {
+  enum class Kind { kSolve, kLevel, kJoints };
+  Kind kind = Kind::kSolve;
+  int step = 1;       ///< 1-based: the level, or the joints' try (kPolishTries)
+  int max_steps = 1;  ///< the most a run can have of this kind
+  /// The run's second pass: the levels and the joints again with the root moment weighed for
+  /// the landing (kLandingRootMomentWeight in optimize.h).
+  bool landing_pass = false;
+  bool operator==(const SolveStage& o) const {
+    return kind == o.kind && step == o.step && max_steps == o.max_steps &&
+           landing_pass == o.landing_pass;
+  }
+  bool operator!=(const SolveStage& o) const { return !(*this == o); }
+};
+
+/// The stage in words: "level 2 of at most 3: the root force on knots refined where it lives",
+/// "joints, try 2 of at most 5: least joint effort at the keyframe times found", prefixed with
+/// "second pass for the landing, " in the landing pass; "solving" for kSolve.
+std::string solve_stage_words(const SolveStage& stage);
+
+/// What the objective of a stage's problem is, for a reader watching it: its terms and that it
+/// starts again with each stage (a new problem), so that a jump between stages is not a failure.
+std::string objective_meaning_words(const SolveStage& stage);
+
 struct ProgressInfo {
-  int iteration = 0;
+  int iteration = 0;                  ///< over the run (optimize_motion counts across solves)
   double objective = 0.0;             ///< of the NLP being solved
   double constraint_violation = 0.0;  ///< Ipopt's inf_pr
-  double elapsed_seconds = 0.0;
+  double elapsed_seconds = 0.0;       ///< over the run
+  SolveStage stage;
+  int stage_iteration = 0;  ///< this solve's own count (restarts included)
+  /// The solve's acceptable exit (SolverOptions::objective_change_tolerance): it stops once the
+  /// objective changes by less than this fraction for SolverOptions::acceptable_iterations.
+  double objective_change_tolerance = 0.0;
+  int acceptable_iterations = 0;
 };
 
 using ProgressCallback = std::function<void(const ProgressInfo&)>;

@@ -156,10 +156,11 @@ TakeoffRule parse_takeoff_rule(const std::string& text, const std::string& field
 }
 
 MotionFile load_motion_for_athlete(const std::string& path, const std::string& model_override,
-                                   TakeoffRule rule) {
-  MotionFile athlete = load_motion_or_capture(path, model_override);
+                                   TakeoffRule rule, const CaptureFileOptions& capture_options) {
+  MotionFile athlete = load_motion_or_capture(path, model_override, capture_options);
   if (model_override.empty()) return athlete;
-  return adapt_takeoff_to_athlete(load_motion_or_capture(path, ""), std::move(athlete), rule);
+  return adapt_takeoff_to_athlete(load_motion_or_capture(path, "", capture_options),
+                                  std::move(athlete), rule);
 }
 
 MotionFile adapt_takeoff_to_athlete(const MotionFile& own, MotionFile athlete, TakeoffRule rule) {

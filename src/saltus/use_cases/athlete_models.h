@@ -11,6 +11,7 @@
 #include "saltus/body/mass_properties.h"
 #include "saltus/body/yeadon_model.h"
 #include "saltus/motion/motion.h"
+#include "saltus/use_cases/captures.h"
 
 namespace saltus {
 
@@ -62,9 +63,12 @@ TakeoffRule parse_takeoff_rule(const std::string& text, const std::string& field
 /// take-off CoM position and velocity, and the take-off angular momentum by `rule`, from the
 /// motion's own (its file's, or the constant nearest its L(t) on its own model): same spin,
 /// L' = I'·I⁻¹·L with I, I' the whole-body inertias about the CoM in the first keyframe's pose.
-/// The result's takeoff_adaptation says what was done (result.json "takeoff_adaptation").
+/// The result's takeoff_adaptation says what was done (result.json "takeoff_adaptation"). A
+/// capture is imported with `capture_options` on both models (the defaults of `saltus import`
+/// unless given).
 MotionFile load_motion_for_athlete(const std::string& path, const std::string& model_override,
-                                   TakeoffRule rule);
+                                   TakeoffRule rule,
+                                   const CaptureFileOptions& capture_options = {});
 
 /// load_motion_for_athlete's step after reading: `athlete`, the motion of `own` on another
 /// athlete's model (the same keyframes, checked against that model), gets its take-off angular

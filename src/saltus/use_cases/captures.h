@@ -72,8 +72,10 @@ nlohmann::json write_capture_outputs(const std::string& out_dir, const CaptureFi
 /// True for a path the motion verbs read as a capture (".bvh", any case).
 bool is_capture_path(const std::string& path);
 
-/// A motion file, or a capture imported with the defaults (its picked keyframes), with its model.
-MotionFile load_motion_or_capture(const std::string& path, const std::string& model_override = "");
+/// A motion file, or a capture imported with `capture_options` (its picked keyframes; the
+/// defaults of `saltus import` unless given; their model is `model_override`), with its model.
+MotionFile load_motion_or_capture(const std::string& path, const std::string& model_override = "",
+                                  const CaptureFileOptions& capture_options = {});
 
 /// What `saltus export` reads: a motion file, a capture, or a result folder of `optimize`
 /// (optimized.motion.json) or `import` (capture.motion.json). InputError when a folder holds

@@ -58,7 +58,7 @@ nlohmann::json good_motion_document() {
     "format": "saltus-motion/1",
     "name": "test tuck",
     "model": "tiny-4",
-    "description": "free text, the one top-level key that is not read",
+    "description": "free text for people, kept and written back",
     "takeoff": { "com_position": [0, 1, 0], "com_velocity": [0.15, 10.0, 0.15],
                  "angular_momentum": [-40, 0, 0] },
     "tolerances": { "translation_m": 0.2, "quaternion": 0.04 },
@@ -251,6 +251,8 @@ TEST(Motion, RoundTripReproducesMotion) {
   const Motion b = parse_motion(nlohmann::json::parse(written.dump(2)), kFile, model);
 
   EXPECT_EQ(b.name, a.name);
+  EXPECT_EQ(a.description, "free text for people, kept and written back");
+  EXPECT_EQ(b.description, a.description);
   EXPECT_EQ(b.model, a.model);
   EXPECT_EQ(written["keyframes"][1]["rotations"]["root"].size(), 4u);  // written as [w,x,y,z]
   EXPECT_LE((b.takeoff.com_position - a.takeoff.com_position).norm(), 1e-15);
@@ -295,8 +297,10 @@ TEST(Motion, RoundTripWithoutOptionalParts) {
   doc.erase("spline");
   doc["takeoff"].erase("angular_momentum");
   doc["keyframes"][1].erase("root_position");
+  doc.erase("description");
   const BodyModel model = tiny_model();
   const nlohmann::json written = motion_to_json(parse_motion(doc, kFile, model), model);
+  EXPECT_FALSE(written.contains("description"));
   EXPECT_FALSE(written.contains("spline"));
   EXPECT_FALSE(written["takeoff"].contains("angular_momentum"));
   EXPECT_FALSE(written["keyframes"][1].contains("root_position"));

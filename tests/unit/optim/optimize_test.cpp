@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -100,6 +101,40 @@ TEST(OptimizeMotion, BuildsTheLayoutsProblemAndReloadsToItsAfter) {
     EXPECT_TRUE(moved);
     EXPECT_NE(r.after.metrics.objective, r.before.metrics.objective);
   }
+}
+
+TEST(OptimizeMotion, ReportsItsStagesAndACancelAfterASolvedLevelIsCalledCancelled) {
+  // The progress names each solve's stage, levels first; a cancel once the first level has
+  // solved stops the run, which is then "cancelled", not solved: it did not finish the policy.
+  const BodyModel model = test::bundled_model();
+  const Motion motion = test::tuck_motion(model);
+  OptimizeOptions options;
+  options.nlp.samples = 31;
+  std::vector<ProgressInfo> seen;
+  std::atomic<bool> cancel{false};
+  const OptimizationResult r = optimize_motion(
+      motion, model, options,
+      [&](const ProgressInfo& p) {
+        seen.push_back(p);
+        cancel = cancel || p.stage != seen.front().stage;
+      },
+      &cancel);
+  ASSERT_FALSE(seen.empty());
+  EXPECT_EQ(seen.front().stage.kind, SolveStage::Kind::kLevel);
+  EXPECT_EQ(seen.front().stage.step, 1);
+  EXPECT_EQ(seen.front().stage.max_steps, AutomaticResolution{}.max_refinements + 1);
+  EXPECT_FALSE(seen.front().stage.landing_pass);
+  ASSERT_GE(r.levels.size(), 1u);
+  EXPECT_EQ(r.levels.front().status, "solved");
+  ASSERT_NE(seen.back().stage, seen.front().stage);  // it went on to another stage
+  EXPECT_EQ(r.solve.status, "cancelled");
+  EXPECT_FALSE(r.solve.solved);
+  // The run's count goes on across solves; each solve counts its own from 1.
+  for (std::size_t i = 1; i < seen.size(); ++i) {
+    EXPECT_GE(seen[i].iteration, seen[i - 1].iteration) << i;
+    EXPECT_LE(seen[i].stage_iteration, seen[i].iteration) << i;
+  }
+  EXPECT_EQ(seen.back().stage_iteration, 0);  // its first report stopped it
 }
 
 /// A straight body somersaulting at `rate` (rad/s), keyframed every `step` seconds over `duration`.

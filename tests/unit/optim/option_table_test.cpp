@@ -75,6 +75,21 @@ TEST(OptionTable, EveryEntryIsComplete) {
     }
     // The default is a value of the option.
     EXPECT_NO_THROW(checked_option_value(spec, spec.default_value()));
+    // A costly value lies inside the range, above the default, and says what it costs.
+    if (std::isfinite(spec.costly_above)) {
+      EXPECT_TRUE(spec.kind == OptionKind::kInteger || spec.kind == OptionKind::kReal);
+      EXPECT_LT(spec.costly_above, spec.max);
+      EXPECT_FALSE(spec.cost.empty());
+      const OptionValue d = spec.default_value();
+      if (std::holds_alternative<int>(d)) {
+        EXPECT_LT(std::get<int>(d), spec.costly_above);
+      }
+      if (std::holds_alternative<double>(d)) {
+        EXPECT_LT(std::get<double>(d), spec.costly_above);
+      }
+    } else {
+      EXPECT_TRUE(spec.cost.empty());
+    }
   }
 }
 

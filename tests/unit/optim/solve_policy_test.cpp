@@ -505,6 +505,38 @@ TEST(SolvePolicy, CancelOnAStallIterationCancelsInsteadOfRestarting) {
   EXPECT_EQ(s.report.iterations, 4);
 }
 
+TEST(SolvePolicy, ProgressCarriesTheSolvesOwnCountAndItsAcceptableExit) {
+  Hs71 nlp;
+  SolverOptions options;
+  options.objective_change_tolerance = 2e-3;
+  options.acceptable_iterations = 4;
+  std::vector<ProgressInfo> seen;
+  solve(nlp, options, [&](const ProgressInfo& p) { seen.push_back(p); });
+  ASSERT_FALSE(seen.empty());
+  for (const ProgressInfo& p : seen) {
+    EXPECT_EQ(p.stage_iteration, p.iteration);  // a solve on its own: its count is the run's
+    EXPECT_EQ(p.objective_change_tolerance, 2e-3);
+    EXPECT_EQ(p.acceptable_iterations, 4);
+    EXPECT_EQ(p.stage.kind, SolveStage::Kind::kSolve);
+  }
+}
+
+TEST(SolveStage, WordsNameTheStageItsStepAndWhatTheObjectiveIs) {
+  EXPECT_EQ(solve_stage_words({}), "solving");
+  const SolveStage level2{SolveStage::Kind::kLevel, 2, 3, false};
+  EXPECT_EQ(solve_stage_words(level2),
+            "level 2 of at most 3: the least root force on knots refined where it lives");
+  EXPECT_EQ(solve_stage_words({SolveStage::Kind::kLevel, 1, 1, false}),
+            "the least root force on the knots asked for");
+  const SolveStage joints{SolveStage::Kind::kJoints, 2, 5, true};
+  EXPECT_EQ(solve_stage_words(joints),
+            "second pass for the landing, joints, try 2 of at most 5: least joint effort at the "
+            "keyframe times found, the root force held");
+  EXPECT_NE(objective_meaning_words(level2).find("a jump between stages is no failure"),
+            std::string::npos);
+  EXPECT_NE(objective_meaning_words(joints).find("least joint effort"), std::string::npos);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Options that reach Ipopt, and the ones that must not.
 
