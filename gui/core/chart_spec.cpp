@@ -29,7 +29,13 @@ AxisRange y_range(const ChartSpec& chart, bool right_axis) {
 }
 
 namespace {
-constexpr double kMaxLogDecades = 4.0;
+/// The widest a logarithmic axis gets below its largest value, decades.
+constexpr double kMaxLogDecades = 6.0;
+/// A line's floor on a logarithmic axis: this quantile of its positive values, so that its bulk
+/// shows and only its dips towards zero are cut.
+constexpr double kLogFloorQuantile = 0.1;
+/// The most labelled powers of ten on a logarithmic axis (more: every other one).
+constexpr std::size_t kMaxLogLabels = 6;
 }  // namespace
 
 AxisRange log_y_range(const ChartSpec& chart) {
@@ -37,15 +43,19 @@ AxisRange log_y_range(const ChartSpec& chart) {
   double hi = 0.0;
   for (const LineSpec& line : chart.lines) {
     if (line.right_axis) continue;
-    for (double y : line.y) {
-      if (!std::isfinite(y) || y <= 0) continue;
-      lo = std::min(lo, y);
-      hi = std::max(hi, y);
-    }
+    std::vector<double> positive;
+    for (double y : line.y)
+      if (std::isfinite(y) && y > 0) positive.push_back(y);
+    if (positive.empty()) continue;
+    const std::size_t floor_index = static_cast<std::size_t>(
+        std::floor(kLogFloorQuantile * static_cast<double>(positive.size() - 1)));
+    std::nth_element(positive.begin(), positive.begin() + floor_index, positive.end());
+    lo = std::min(lo, positive[floor_index]);
+    hi = std::max(hi, *std::max_element(positive.begin(), positive.end()));
   }
   if (!(hi > 0)) return {1.0, 10.0};
-  // At most kMaxDecades below the largest value: a curve that touches zero must not spend the
-  // axis on its dips.
+  // The floor follows the data (each curve's low values, so that a small "after" keeps its
+  // shape), at most kMaxLogDecades below the largest value.
   lo = std::max(lo, hi * std::pow(10.0, -kMaxLogDecades));
   // A little room above the largest value and below the smallest, in log space (5 %), and at
   // least one decade so that a flat curve still gets an axis with a label.
@@ -72,11 +82,40 @@ std::vector<double> log_ticks(const AxisRange& range) {
   };
   for (int e = first; e <= last; ++e)
     if (inside(std::pow(10.0, e))) ticks.push_back(std::pow(10.0, e));
+  if (ticks.size() > kMaxLogLabels) {
+    // Every other power, keeping the largest.
+    std::vector<double> fewer;
+    for (std::size_t i = ticks.size() % 2 == 0 ? 1 : 0; i < ticks.size(); i += 2)
+      fewer.push_back(ticks[i]);
+    return fewer;
+  }
   if (ticks.size() >= 3) return ticks;
   ticks.clear();
   for (int e = first; e <= last; ++e)
     for (double m : {1.0, 2.0, 5.0})
       if (inside(m * std::pow(10.0, e))) ticks.push_back(m * std::pow(10.0, e));
+  return ticks;
+}
+
+std::vector<double> linear_ticks(const AxisRange& range, std::size_t max_labels) {
+  std::vector<double> ticks;
+  const double span = range.max - range.min;
+  if (!(span > 0) || !std::isfinite(span) || max_labels < 5) return ticks;
+  // The smallest 1-2-5 step with at most max_labels multiples inside the range.
+  double step = std::pow(10.0, std::floor(std::log10(span / static_cast<double>(max_labels))));
+  for (int guard = 0; guard < 8; ++guard) {
+    for (double m : {1.0, 2.0, 5.0}) {
+      const double candidate = m * step;
+      const double first = std::ceil(range.min / candidate - 1e-9);
+      const double last = std::floor(range.max / candidate + 1e-9);
+      if (last - first + 1 <= static_cast<double>(max_labels)) {
+        for (double k = first; k <= last; k += 1.0)
+          ticks.push_back(k * candidate == 0.0 ? 0.0 : k * candidate);  // no "-0"
+        return ticks;
+      }
+    }
+    step *= 10.0;
+  }
   return ticks;
 }
 

@@ -62,15 +62,22 @@ struct AxisRange {
   double min = 0.0, max = 1.0;
 };
 AxisRange y_range(const ChartSpec& chart, bool right_axis);
-/// The left axis for a logarithmic scale: the positive values' range, at most four decades
-/// below the largest value and at least one decade wide, padded 5 % in log space; {1, 10} when
-/// nothing is positive.
+/// The left axis for a logarithmic scale: from the lowest of the lines' floors (each line's 10th
+/// percentile of its positive values: its bulk shows, its dips towards zero are cut) to the
+/// largest value, at most six decades wide and at least one, padded 5 % in log space; {1, 10}
+/// when nothing is positive. The floor follows the data: a small "after" curve keeps its shape
+/// beside a large "before" or a capture's.
 AxisRange log_y_range(const ChartSpec& chart);
 /// Where a logarithmic axis over `range` (both ends > 0) puts its labelled ticks: the powers of
-/// ten inside it, and also 2× and 5× each power when fewer than three powers fall inside (a
-/// short range). At most about six labels over the four decades log_y_range allows, so that
+/// ten inside it (every other one beyond six, the largest kept), and also 2× and 5× each power
+/// when fewer than three powers fall inside (a short range). At most about six labels, so that
 /// they do not overlap on a plot 120 pixels high (1-2-5 steps over four decades gave twelve).
 std::vector<double> log_ticks(const AxisRange& range);
+/// Where a linear axis over `range` puts its labelled ticks: multiples of the smallest 1-2-5
+/// step (…, 0.1, 0.2, 0.5, 1, 2, 5, 10, …) that puts at most `max_labels` of them inside it, so
+/// that every axis has at least two labels (a short plot's axis with one label could not be
+/// read) and none overlap. `max_labels` at least 5, which guarantees the two (fewer: empty).
+std::vector<double> linear_ticks(const AxisRange& range, std::size_t max_labels = 5);
 /// A tick's label: "0.01", "0.5", "20", "1000", "1e+05".
 std::string tick_label(double value);
 

@@ -95,9 +95,10 @@ std::unique_ptr<CLI::App> make_app(CommandLine& c, cli::OptionFlags& flags,
       ->check(CLI::IsMember({"side", "front", "top", "follow"}).description(""));
   app->add_option("--panel", c.panel,
                   "bring a panel to the front for the screenshot: twist (where the twist comes "
-                  "from, its analysis finished) or teaching (why it spins)")
-      ->type_name("twist|teaching")
-      ->check(CLI::IsMember({"twist", "teaching"}).description(""));
+                  "from, its analysis finished), teaching (why it spins), joints (the joint "
+                  "loads) or model (the Model panel: can this athlete land it?)")
+      ->type_name("twist|teaching|joints|model")
+      ->check(CLI::IsMember({"twist", "teaching", "joints", "model"}).description(""));
   app->add_option_function<std::string>(
          "--size",
          [&c](const std::string& v) {

@@ -28,13 +28,18 @@ Document::Dense Document::dense_of(const MotionFile& file, const MotionEvaluatio
   return out;
 }
 
-void Document::load(const std::string& motion_path, const std::string& model_override,
-                    int samples) {
+std::string somersault_direction(double now, double flight) {
+  const double sign = std::abs(now) >= 0.005 ? now : flight;
+  return sign < 0 ? "backward" : "forward";
+}
+
+void Document::load(const std::string& motion_path, const std::string& model_override, int samples,
+                    const CaptureFileOptions& capture_options) {
   MotionFile file;
   std::shared_ptr<const CaptureFile> capture;
   if (is_capture_path(motion_path)) {
     // As load_motion_or_capture reads a capture, keeping the import for the views.
-    CaptureFileOptions options;
+    CaptureFileOptions options = capture_options;
     options.model = model_override;
     auto imported = std::make_shared<CaptureFile>(import_capture_file(motion_path, options));
     file.path = motion_path;
@@ -46,8 +51,8 @@ void Document::load(const std::string& motion_path, const std::string& model_ove
   if (!model_override.empty()) {
     // Another athlete: the take-off carried over by the CLI's rule (for a capture, its picked
     // keyframes with that take-off; the import above stays for the views).
-    MotionFile athlete =
-        load_motion_for_athlete(motion_path, model_override, TakeoffRule::kSameSpin);
+    MotionFile athlete = load_motion_for_athlete(motion_path, model_override,
+                                                 TakeoffRule::kSameSpin, capture_options);
     if (capture) {
       file.motion.takeoff = athlete.motion.takeoff;
       file.takeoff_adaptation = athlete.takeoff_adaptation;
@@ -65,6 +70,8 @@ void Document::load(const std::string& motion_path, const std::string& model_ove
   // Only now that everything succeeded does the document change.
   file_ = std::move(file);
   model_override_ = model_override;
+  capture_options_ = capture ? capture_options : CaptureFileOptions{};
+  capture_options_.model.clear();
   evaluate_options_ = options;
   evaluation_ = std::move(evaluation);
   dense_ = std::move(dense);

@@ -35,18 +35,24 @@ struct GlyphTypicals {
   GlyphTypicals max(const GlyphTypicals& other) const;
 };
 
+/// "forward" or "backward" for a somersault count so far, `now` (revolutions, > 0 forward):
+/// its own sign, or, before it shows (below 0.005, which reads "0.00"), the whole flight's
+/// (`flight`): M2 at take-off reads "0.00 somersaults backward", as it will turn.
+std::string somersault_direction(double now, double flight);
+
 class Document {
  public:
   /// Loads a motion file and the model it names and evaluates it with `samples` time samples.
   /// With `model_override` (a name or path) the motion is flown by that athlete as the CLI's
   /// `--model` flies it (load_motion_for_athlete, its default take-off rule: the same take-off
   /// spin; file().takeoff_adaptation says so). A motion capture (a .bvh path, is_capture_path)
-  /// is imported onto the model (import_capture_file, the defaults of `saltus import`): the
-  /// motion is its picked keyframes, and the capture stays (capture()). Throws InputError for
+  /// is imported onto the model (import_capture_file with `capture_options`: the defaults of
+  /// `saltus import` unless given; their model is the override): the motion is its picked
+  /// keyframes, and the capture stays (capture()). Throws InputError for
   /// bad files and std::invalid_argument for bad options; on failure the document keeps what it
   /// had.
   void load(const std::string& motion_path, const std::string& model_override = "",
-            int samples = kDefaultSamples);
+            int samples = kDefaultSamples, const CaptureFileOptions& capture_options = {});
   bool loaded() const { return file_.has_value(); }
   /// Replaces the loaded motion by an edited one (same model, file path and samples) and
   /// evaluates it; drops the optimisation. Requires loaded(); on failure nothing changes.
@@ -108,6 +114,8 @@ class Document {
   /// The motion capture the motion was imported from, null for a motion file. Its frames can be
   /// picked as keyframes (core/capture_keyframes.h); it is drawn beside the motion.
   const CaptureFile* capture() const { return capture_.get(); }
+  /// The options the capture was imported with (its frame time, flight, keyframes, mapping).
+  const CaptureFileOptions& capture_options() const { return capture_options_; }
   /// The captured flight's length (s): its own trajectory is defined on [0, capture_duration()].
   double capture_duration() const;
   /// The capture's own motion on the dense plot grid, with the model in use (a mass edit
@@ -143,6 +151,7 @@ class Document {
   MotionEvaluation evaluation_;
   Dense dense_;
   std::shared_ptr<const CaptureFile> capture_;  ///< immutable: shared by copies and snapshots
+  CaptureFileOptions capture_options_;
   std::vector<SampleRecord> capture_samples_;
   std::optional<OptimizationResult> optimization_;
   OptimizeOptions optimize_options_;

@@ -43,6 +43,26 @@ std::string first_changed_option(const OptimizeSettings& before, const OptimizeS
   return "";
 }
 
+namespace {
+
+bool costly(const OptionSpec& spec, const OptionValue& value) {
+  if (const int* i = std::get_if<int>(&value)) return *i > spec.costly_above;
+  if (const double* d = std::get_if<double>(&value)) return *d > spec.costly_above;
+  return false;  // a word ("auto") or a switch
+}
+
+}  // namespace
+
+std::vector<std::string> newly_costly_settings(const OptimizeSettings& before,
+                                               const OptimizeSettings& after) {
+  std::vector<std::string> out;
+  for (const OptionSpec& spec : option_table())
+    if (costly(spec, after.get(spec.name)) && !costly(spec, before.get(spec.name)))
+      out.push_back(spec.label + " = " + option_value_text(after.get(spec.name)) + ": " +
+                    spec.cost);
+  return out;
+}
+
 std::string option_tooltip(const OptionSpec& spec) {
   std::string out = option_description(spec);
   if (!out.empty()) out[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(out[0])));
@@ -165,13 +185,6 @@ std::vector<ResultRow> result_table(const OptimizationResult& r, const OptimizeO
                   format_number("%.3g", r.before.keyframe_errors.max_rotation_error_deg),
                   format_number("%.3g", r.after.keyframe_errors.max_rotation_error_deg)});
   return rows;
-}
-
-std::string progress_text(const ProgressInfo& p) {
-  char buffer[160];
-  std::snprintf(buffer, sizeof buffer, "iteration %d   objective %.4e   violation %.1e   %.1f s",
-                p.iteration, p.objective, p.constraint_violation, p.elapsed_seconds);
-  return buffer;
 }
 
 }  // namespace saltus::gui

@@ -2,7 +2,7 @@
 /// @file
 /// The optimisation panel's values (one per option of the library's option table, so the panel,
 /// saltus-gui's command line and `saltus optimize` share names, ranges and defaults), how they
-/// are stored between sessions, the rows of the result table and the progress line.
+/// are stored between sessions and the rows of the result table (the progress: run_progress.h).
 
 #include <functional>
 #include <optional>
@@ -25,6 +25,12 @@ OptimizeOptions to_optimize_options(const OptimizeSettings& settings);
 /// The label of the first option (table order) whose value differs, "" when none: what an undo
 /// step names.
 std::string first_changed_option(const OptimizeSettings& before, const OptimizeSettings& after);
+
+/// The options `after` sets to a value that costs minutes or gigabytes (OptionSpec::
+/// costly_above) where `before` did not, each in words: "Samples = 100000: every evaluation's
+/// time and memory grow with the samples: …". The app asks before keeping such a value.
+std::vector<std::string> newly_costly_settings(const OptimizeSettings& before,
+                                               const OptimizeSettings& after);
 
 /// A form's tooltip for an option: its help, then unit and range, then the CLI flag.
 std::string option_tooltip(const OptionSpec& spec);
@@ -51,8 +57,5 @@ struct ResultRow {
 /// keyframe times and errors.
 std::vector<ResultRow> result_table(const OptimizationResult& result,
                                     const OptimizeOptions& options);
-
-/// One line of live progress, e.g. "iteration 12   objective 3.41e+01   violation 2.0e-05   3.2 s".
-std::string progress_text(const ProgressInfo& progress);
 
 }  // namespace saltus::gui

@@ -215,42 +215,6 @@ ChartSpec root_wrench_chart(bool moment, const WrenchSeries& before, const Wrenc
   return root_chart(style, before, after, keyframes_before, keyframes_after);
 }
 
-ChartSpec joint_load_chart(const BodyModel& model, int segment,
-                           const std::vector<SampleRecord>& before,
-                           const std::vector<SampleRecord>* after) {
-  if (segment < 0 || segment >= model.size()) throw std::out_of_range("joint load segment");
-  const Segment& s = model.segments[static_cast<std::size_t>(segment)];
-  ChartSpec chart;
-  chart.title = segment == 0 ? "Loads the world must supply at the " + segment_label(s.name)
-                             : "Loads at the " + joint_label(s.joint) + " (on the " +
-                                   segment_label(s.name) + ")";
-  chart.x_title = "time (s)";
-  chart.y_title = "force |F| (N)";
-  chart.y2_title = "moment |M| (N·m)";
-  const bool comparing = after != nullptr;
-  for (int stage = 0; stage < 2; ++stage) {
-    const std::vector<SampleRecord>* samples = stage == 0 ? &before : after;
-    if (!samples) continue;
-    LineSpec force, torque;
-    force.label = "|F|" + stage_suffix(stage, comparing);
-    torque.label = "|M|" + stage_suffix(stage, comparing);
-    force.colour = magnitude_curve_colour(false);
-    torque.colour = magnitude_curve_colour(true);
-    torque.right_axis = true;
-    for (const SampleRecord& r : *samples) {
-      force.x.push_back(r.time);
-      torque.x.push_back(r.time);
-      force.y.push_back(force_magnitude(r.joint_wrench.at(static_cast<std::size_t>(segment))));
-      torque.y.push_back(moment_magnitude(r.joint_wrench.at(static_cast<std::size_t>(segment))));
-    }
-    style_compared_line(force, stage == 1, comparing);
-    style_compared_line(torque, stage == 1, comparing);
-    chart.lines.push_back(std::move(force));
-    chart.lines.push_back(std::move(torque));
-  }
-  return chart;
-}
-
 std::vector<std::string> rotation_quantity_names() {
   return {"Moment of inertia and somersault rate", "Angular momentum about the CoM",
           "Somersault and twist rates", "Somersaults and twists counted",

@@ -100,14 +100,6 @@ ChartSpec root_wrench_chart(bool moment, const WrenchSeries& before, const Wrenc
                             const ComponentMask& shown, const std::vector<double>& keyframes_before,
                             const std::vector<double>& keyframes_after);
 
-/// Size of the force (N, left axis) and moment (N·m, right axis) transmitted across the joint
-/// that attaches `segment` to its parent (segment 0: the root, i.e. the residual the world must
-/// supply), before and (if `after` is not null) after optimisation. Named as people name them:
-/// "Loads at the right knee".
-ChartSpec joint_load_chart(const BodyModel& model, int segment,
-                           const std::vector<SampleRecord>& before,
-                           const std::vector<SampleRecord>* after);
-
 enum class RotationQuantity {
   kInertiaAndRate,   ///< I_xx (left) and |somersault rate| (right): the tuck's teaching plot
   kAngularMomentum,  ///< L_x, L_y, L_z about the CoM: constant in a valid flight

@@ -1,5 +1,6 @@
 #include "core/run_list.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
 #include <variant>
@@ -7,14 +8,6 @@
 #include "saltus/base/text_format.h"
 
 namespace saltus::gui {
-
-namespace {
-
-double after_force(const RunRecord& run) {
-  return run.result->after.metrics.avg_root_force;
-}
-
-}  // namespace
 
 std::string status_text(const std::string& status) {
   static const std::map<std::string, std::string> kWords = {
@@ -32,8 +25,9 @@ std::string status_text(const std::string& status) {
   return it == kWords.end() ? status : it->second;
 }
 
-int RunList::add(RunRecord run) {
+int RunList::add(RunRecord run, const BodyModel& model) {
   run.number = next_number_++;
+  if (run.result) run.standing = result_standing(*run.result, model);
   runs_.push_back(std::move(run));
   return size() - 1;
 }
@@ -46,19 +40,25 @@ bool RunList::showable(int index) const {
   return index >= 0 && index < size() && at(index).result != nullptr;
 }
 
+std::vector<int> RunList::ranking() const {
+  std::vector<int> order(runs_.size());
+  for (int i = 0; i < size(); ++i)
+    order[static_cast<std::size_t>(i)] = i;
+  std::stable_sort(order.begin(), order.end(), [this](int a, int b) {
+    if (showable(a) != showable(b)) return showable(a);
+    return showable(a) && ranks_above(at(a).standing, at(b).standing);
+  });
+  return order;
+}
+
 std::optional<int> RunList::preferred() const {
-  std::optional<int> best_solved, best_improved;
-  for (int i = 0; i < size(); ++i) {
-    const RunRecord& run = at(i);
-    if (!run.result) continue;
-    const double after = after_force(run);
-    if (run.result->solve.solved) {
-      if (!best_solved || after < after_force(at(*best_solved))) best_solved = i;
-    } else if (after < run.result->before.metrics.avg_root_force) {
-      if (!best_improved || after < after_force(at(*best_improved))) best_improved = i;
-    }
-  }
-  return best_solved ? best_solved : best_improved;
+  const std::vector<int> order = ranking();
+  if (order.empty() || !showable(order.front())) return std::nullopt;
+  const RunRecord& best = at(order.front());
+  if (best.standing.solved ||
+      best.standing.avg_root_force < best.result->before.metrics.avg_root_force)
+    return order.front();
+  return std::nullopt;
 }
 
 int RunList::unsaved() const {
@@ -74,13 +74,17 @@ void RunList::mark_saved(int index) {
 
 std::string RunList::label(int index) const {
   const RunRecord& run = at(index);
-  std::string out = "Run " + std::to_string(run.number) + " · ";
+  std::string out =
+      (preferred() == index ? "Best · Run " : "Run ") + std::to_string(run.number) + " · ";
   if (!run.result) return out + "failed: " + run.error;
   const OptimizationResult& r = *run.result;
+  // The joints in the words of `saltus optimize` (joint_load_verdict_words).
+  const JointLoadRise& rise = run.standing.largest_rise;
+  const std::string joints = rise.joint.empty() ? "" : joint_load_verdict_words(rise);
   out += status_text(r.solve.status) + " after " + std::to_string(r.solve.iterations) +
          " iterations · " + format_number("%.3g", r.before.metrics.avg_root_force) + " → " +
          format_number("%.3g", r.after.metrics.avg_root_force) + " N · " +
-         settings_summary(run.settings);
+         (joints.empty() ? "" : joints + " · ") + settings_summary(run.settings);
   return out;
 }
 

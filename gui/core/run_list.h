@@ -1,10 +1,11 @@
 #pragma once
 /// @file
-/// Every optimisation run of the open motion, kept: the result list. Which run the views show by
-/// default follows one rule, so that no run can hide a better one: the solved run with the
-/// smallest average root force; without a solved run, the finished run that improved most on
-/// the interpolation; a cancelled, failed or worse run is listed but never shown in place of a
-/// solved one unless the user picks it.
+/// Every optimisation run of the open motion, kept: the result list. Runs rank as the optimiser
+/// ranks its own solves (optim/result_standing.h): solved before not (a cancelled run is not
+/// solved), then the joints within the joint policy, then the least average root force. The run
+/// the views show by default is the best of that ranking, if it solved or improved on the
+/// interpolation; a cancelled, failed or worse run is listed but never shown in place of a
+/// better one unless the user picks it.
 
 #include <memory>
 #include <optional>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "core/optimize_settings.h"
+#include "saltus/optim/result_standing.h"
 
 namespace saltus::gui {
 
@@ -22,7 +24,8 @@ struct RunRecord {
   /// Null when optimize_motion threw (then `error` says why).
   std::shared_ptr<const OptimizationResult> result;
   std::string error;
-  bool saved = false;  ///< written to a result folder since it finished
+  ResultStanding standing;  ///< of `result` on the model it ran on (RunList::add)
+  bool saved = false;       ///< written to a result folder since it finished
 };
 
 /// A status word of SolveReport for users: "solved", "stopped at the iteration limit",
@@ -31,8 +34,9 @@ std::string status_text(const std::string& status);
 
 class RunList {
  public:
-  /// Adds a finished run (its number is the next free one); returns its index.
-  int add(RunRecord run);
+  /// Adds a finished run that ran on `model` (its standing is worked out on it; its number is
+  /// the next free one); returns its index.
+  int add(RunRecord run, const BodyModel& model);
   const std::vector<RunRecord>& runs() const { return runs_; }
   const RunRecord& at(int index) const { return runs_.at(static_cast<std::size_t>(index)); }
   int size() const { return static_cast<int>(runs_.size()); }
@@ -41,7 +45,11 @@ class RunList {
   int next_number() const { return next_number_; }
   void clear();
 
-  /// The run to show by default (see the file comment), nullopt when none is worth showing.
+  /// Every run's index, best first (ranks_above); runs without a result (failed) last, in the
+  /// order they ran.
+  std::vector<int> ranking() const;
+  /// The run to show by default: the best of the ranking if it solved or improved on the
+  /// interpolation, else nullopt.
   std::optional<int> preferred() const;
   /// Whether a run can be shown at all (it has a result).
   bool showable(int index) const;
@@ -50,7 +58,9 @@ class RunList {
   int unsaved() const;
   void mark_saved(int index);
 
-  /// One line for the list: "Run 2 · solved · 118 → 11.2 N · relaxed, K = 1, 101 samples".
+  /// One line for the list: "Best · Run 2 · solved after 40 iterations · 118 → 11.2 N · every
+  /// joint within 1.27x of its peak load before · relaxed, K = 1, 101 samples" ("Best · " for
+  /// preferred() only; the joints in joint_load_verdict_words, as `saltus optimize` says them).
   std::string label(int index) const;
 
  private:

@@ -11,10 +11,10 @@ void Workspace::set_stage(Stage stage) {
   notify(WorkspaceChange::kStage);
 }
 
-void Workspace::open(const std::string& motion_path, const std::string& model_override,
-                     int samples) {
+void Workspace::open(const std::string& motion_path, const std::string& model_override, int samples,
+                     const CaptureFileOptions& capture_options) {
   Document loaded;
-  loaded.load(motion_path, model_override, samples);
+  loaded.load(motion_path, model_override, samples, capture_options);
   document_ = std::move(loaded);
   // Another motion's runs start again at run 1 (an edit keeps counting: undo may bring back
   // the runs before it).
@@ -49,7 +49,7 @@ void Workspace::set_model(const BodyModel& model) {
 
 int Workspace::add_run(RunRecord run) {
   const std::optional<int> before = runs_.preferred();
-  const int index = runs_.add(std::move(run));
+  const int index = runs_.add(std::move(run), document_.file().model);
   const std::optional<int> preferred = runs_.preferred();
   // A new run is shown only when it is now the one to show; the user's own choice of another
   // run stays otherwise.

@@ -38,7 +38,7 @@ class Workspace {
   /// Opens a motion file (see Document::load); runs and unsaved state start afresh. Throws
   /// like Document::load; on failure nothing changes.
   void open(const std::string& motion_path, const std::string& model_override = "",
-            int samples = kDefaultSamples);
+            int samples = kDefaultSamples, const CaptureFileOptions& capture_options = {});
 
   /// An edit of the motion or of the model (same segments): evaluated at once, the runs of the
   /// previous version leave the list (a snapshot taken before keeps them for undo). Throws

@@ -19,6 +19,23 @@ namespace {
 
 namespace fs = std::filesystem;
 
+TEST(Document, ASomersaultNotYetTurnedIsNamedByTheWholeFlightsDirection) {
+  // M2 at take-off: "0.00 somersaults backward", as it turns, not "forward" from the sign of 0.
+  EXPECT_EQ(somersault_direction(0.0, -1.0), "backward");
+  EXPECT_EQ(somersault_direction(0.004, -1.0), "backward");
+  EXPECT_EQ(somersault_direction(-0.3, -1.0), "backward");
+  EXPECT_EQ(somersault_direction(0.0, 2.0), "forward");
+  // Once it shows, its own sign (a flight may turn back a little at first).
+  EXPECT_EQ(somersault_direction(0.01, -1.0), "forward");
+  Document m2;
+  m2.load(std::string(SALTUS_EXAMPLES_DIR) + "/motions/M2-tucked-back-somersault.motion.json");
+  const std::vector<RotationSample>& turns = m2.rotation(Stage::kBefore);
+  const double forward = forward_somersault_sign(m2.plot_samples(Stage::kBefore).front());
+  EXPECT_EQ(
+      somersault_direction(forward * turns.front().somersaults, forward * turns.back().somersaults),
+      "backward");
+}
+
 TEST(Document, LoadsAndEvaluatesTheMotion) {
   Document d;
   EXPECT_FALSE(d.loaded());

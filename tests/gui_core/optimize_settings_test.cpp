@@ -113,14 +113,26 @@ TEST(OptimizeSettings, StoredSettingsReadBackAndOldKeysStillRead) {
   EXPECT_EQ(from(stored).get("knots_per_interval"), OptionValue(2));
 }
 
-TEST(OptimizeSettings, ProgressTextNamesIterationAndObjective) {
-  ProgressInfo p;
-  p.iteration = 12;
-  p.objective = 34.1;
-  p.elapsed_seconds = 3.21;
-  const std::string text = progress_text(p);
-  EXPECT_NE(text.find("iteration 12"), std::string::npos);
-  EXPECT_NE(text.find("3.4100e+01"), std::string::npos);
+TEST(OptimizeSettings, ACostlyValueIsSaidOnceWhenItIsSet) {
+  OptimizeSettings before;
+  OptimizeSettings after = before;
+  EXPECT_TRUE(newly_costly_settings(before, after).empty());
+  after.set("samples", 100000);
+  const std::vector<std::string> said = newly_costly_settings(before, after);
+  ASSERT_EQ(said.size(), 1u);
+  EXPECT_EQ(said[0].rfind("Samples = 100000: ", 0), 0u) << said[0];
+  EXPECT_NE(said[0].find("1.6 GB"), std::string::npos) << said[0];
+  // Already costly before: not said again; back to cheap: nothing to say.
+  OptimizeSettings more = after;
+  more.set("samples", 50000);
+  EXPECT_TRUE(newly_costly_settings(after, more).empty());
+  EXPECT_TRUE(newly_costly_settings(after, before).empty());
+  // At the threshold itself it is not costly; words ("auto") never are.
+  after = before;
+  after.set("samples", 2001);
+  EXPECT_TRUE(newly_costly_settings(before, after).empty());
+  after.set("knots_per_interval", 20);
+  EXPECT_EQ(newly_costly_settings(before, after).size(), 1u);
 }
 
 /// One short optimisation shared by the tests below (a few iterations on a coarse grid).

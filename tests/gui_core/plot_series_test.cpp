@@ -113,24 +113,6 @@ TEST_F(PlotSeriesTest, ComponentsOnDemandWithShortLegends) {
   EXPECT_EQ(moment.lines[1].y, w.component[5]);
 }
 
-TEST_F(PlotSeriesTest, JointLoadChartHasForceAndMomentMagnitudes) {
-  const BodyModel& model = document_.file().model;
-  const int knee = model.joint_index("knee_l");
-  const ChartSpec chart = joint_load_chart(model, knee, samples(), nullptr);
-  ASSERT_EQ(chart.lines.size(), 2u);
-  EXPECT_FALSE(chart.lines[0].right_axis);
-  EXPECT_TRUE(chart.lines[1].right_axis);
-  EXPECT_EQ(chart.y2_title, "moment |M| (N·m)");
-  // Named as people name it.
-  EXPECT_NE(chart.title.find("left knee"), std::string::npos) << chart.title;
-  EXPECT_EQ(chart.title.find("knee_l"), std::string::npos) << chart.title;
-  for (std::size_t k = 0; k < samples().size(); ++k) {
-    EXPECT_DOUBLE_EQ(chart.lines[0].y[k], samples()[k].joint_wrench[knee].head<3>().norm());
-    EXPECT_DOUBLE_EQ(chart.lines[1].y[k], samples()[k].joint_wrench[knee].tail<3>().norm());
-  }
-  EXPECT_THROW(joint_load_chart(model, 99, samples(), nullptr), std::out_of_range);
-}
-
 TEST_F(PlotSeriesTest, RotationChartsShowTheLibrarysRotationMetrics) {
   const auto& rotation = document_.rotation(Stage::kBefore);
   const ChartSpec inertia = rotation_chart(RotationQuantity::kInertiaAndRate, rotation, &rotation);

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
+
 #include "saltus/formats/motion_file.h"
 #include "saltus/motion/interpolate.h"
 #include "support/temp_path.h"
@@ -66,6 +68,64 @@ TEST(ShownMotion, ASavedTrajectoryIsCalledWhatTheReportMakesOfIt) {
   ASSERT_TRUE(redone);
   EXPECT_EQ(redone->description, "the interpolated keyframes");
   EXPECT_EQ(redone->key, flown->key) << "the same motion, whatever the report makes of it";
+}
+
+}  // namespace
+}  // namespace saltus::gui
+
+namespace saltus::gui {
+namespace {
+
+TEST(MotionToSave, IsTheOptimisedMotionOfTheRunShownElseTheKeyframesWithTheirDescription) {
+  Workspace ws;
+  EXPECT_FALSE(motion_to_save(ws));
+  ws.open(shown_motion_path("M7-double-front-one-and-a-half-twists.motion.json"), "", 21);
+  const Motion given = ws.document().file().motion;
+  ASSERT_FALSE(given.description.empty());
+  std::optional<MotionToSave> save = motion_to_save(ws);
+  ASSERT_TRUE(save);
+  EXPECT_FALSE(save->optimised);
+  EXPECT_EQ(save->what, "the keyframes as given");
+  EXPECT_EQ(save->motion.description, given.description);
+  EXPECT_EQ(save->file_name("M7"), "M7.motion.json");
+
+  // A run whose optimised motion has other keyframe times and a spline of its own.
+  auto result = std::make_shared<OptimizationResult>();
+  result->solve.status = "solved";
+  result->solve.solved = true;
+  result->before = ws.document().evaluation(Stage::kBefore);
+  result->after = result->before;
+  result->after.metrics.avg_root_force = 0.2;
+  result->optimized_motion = given;
+  result->optimized_motion.keyframes[1].time += 0.01;
+  result->optimized_motion.spline = to_stored_spline(
+      interpolate_keyframes(result->optimized_motion, ws.document().file().model, {}));
+  RunRecord run;
+  run.result = result;
+  ws.add_run(run);
+  ASSERT_EQ(ws.stage(), Stage::kAfter);
+  save = motion_to_save(ws);
+  ASSERT_TRUE(save);
+  EXPECT_TRUE(save->optimised);
+  EXPECT_EQ(save->run_number, 1);
+  EXPECT_EQ(save->what,
+            "the optimised motion of run 1 (keyframes at their optimised times, with its spline)");
+  EXPECT_EQ(save->motion.keyframes[1].time, given.keyframes[1].time + 0.01);
+  ASSERT_TRUE(save->motion.spline);
+  EXPECT_EQ(save->motion.spline->knots, result->optimized_motion.spline->knots);
+  EXPECT_EQ(save->motion.description, given.description);
+  EXPECT_EQ(save->file_name("M7"), "M7-run1-optimised.motion.json");
+  // The given keyframes stay one choice away.
+  EXPECT_EQ(given_keyframes_to_save(ws)->motion.keyframes[1].time, given.keyframes[1].time);
+  // Before: the keyframes are on screen.
+  ws.set_stage(Stage::kBefore);
+  EXPECT_FALSE(motion_to_save(ws)->optimised);
+  // Edited keyframes are called so.
+  Motion edited = given;
+  edited.keyframes[2].time += 0.01;
+  ws.set_motion(edited);
+  EXPECT_EQ(motion_to_save(ws)->what, "the keyframes as edited");
+  EXPECT_EQ(motion_to_save(ws)->file_name("M7"), "M7-edited.motion.json");
 }
 
 }  // namespace
