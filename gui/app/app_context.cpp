@@ -8,6 +8,8 @@
 #include <QStatusBar>
 #include <cstdio>
 
+#include "core/file_places.h"
+
 namespace saltus::gui {
 
 AppContext::AppContext(QMainWindow* window, bool interactive)
@@ -16,6 +18,22 @@ AppContext::AppContext(QMainWindow* window, bool interactive)
 void AppContext::set_last_dir_from(const QString& path) {
   const QFileInfo info(path);
   last_dir_ = info.isDir() ? info.absoluteFilePath() : info.absolutePath();
+}
+
+QString AppContext::save_dir() const {
+  const QString fallback = QDir::home().filePath("saltus");
+  const std::string folder = save_folder(last_saved_dir_.toStdString(), last_dir_.toStdString(),
+                                         fallback.toStdString(), [](const std::string& path) {
+                                           const QFileInfo info(QString::fromStdString(path));
+                                           return info.isDir() && info.isWritable();
+                                         });
+  if (folder == fallback.toStdString()) QDir().mkpath(fallback);
+  return QString::fromStdString(folder);
+}
+
+void AppContext::note_saved(const QString& path) {
+  set_last_dir_from(path);
+  last_saved_dir_ = last_dir_;
 }
 
 bool AppContext::fail(const QString& title, const QString& message, QString* error) const {

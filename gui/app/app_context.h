@@ -28,10 +28,17 @@ class AppContext {
   const Workspace& workspace() const { return workspace_; }
   bool interactive() const { return interactive_; }
 
-  /// Where file dialogs start: the folder of the last file opened or written.
+  /// Where open dialogs start: the folder of the last file opened or written.
   QString last_dir() const { return last_dir_; }
   void set_last_dir_from(const QString& path);
   void set_last_dir(const QString& dir) { last_dir_ = dir; }
+  /// Where save dialogs start (core/file_places.h): the folder last saved into, else the last
+  /// one opened from unless it is bundled with Saltus or read-only, else ~/saltus (made).
+  QString save_dir() const;
+  /// A file or folder was written at `path`: later saves start beside it.
+  void note_saved(const QString& path);
+  QString last_saved_dir() const { return last_saved_dir_; }
+  void set_last_saved_dir(const QString& dir) { last_saved_dir_ = dir; }
 
   /// Reports a failure: into `error` when given, else in a dialog (interactive) or on stderr.
   /// Always returns false, so operations can `return context.fail(...)`.
@@ -51,6 +58,7 @@ class AppContext {
   Workspace workspace_;
   bool interactive_;
   QString last_dir_;
+  QString last_saved_dir_;
   std::vector<QWidget*> scopes_;
 };
 

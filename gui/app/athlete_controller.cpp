@@ -36,7 +36,8 @@ AthleteController::AthleteController(AppContext& context, FileController& files,
 NewAthleteDialog* AthleteController::open_dialog(bool compare) {
   if (dialog_) dialog_->close();
   const Workspace& ws = context_.workspace();
-  dialog_ = new NewAthleteDialog(ws.loaded() ? &ws.document().file().model : nullptr, ws.loaded(),
+  dialog_ = new NewAthleteDialog(ws.loaded() ? &ws.document().file() : nullptr,
+                                 ws.loaded() ? ws.document().evaluate_options() : EvaluateOptions{},
                                  context_.window());
   dialog_->setAttribute(Qt::WA_DeleteOnClose);
   if (compare && ws.loaded()) dialog_->compare_button()->setDefault(true);
@@ -54,7 +55,7 @@ NewAthleteDialog* AthleteController::dialog() const {
 }
 
 bool AthleteController::save_and_use(const BodyModel& model, bool compare, QString* error) {
-  const QString suggestion = QDir(context_.last_dir()).filePath(qstr(model.name) + ".model.json");
+  const QString suggestion = QDir(context_.save_dir()).filePath(qstr(model.name) + ".model.json");
   const QString path = files_.choose_save_path(tr("Save the athlete's body model"), suggestion,
                                                qstr(save_dialog_filter(ReadableKind::kModel)));
   if (path.isEmpty()) {
@@ -71,7 +72,7 @@ bool AthleteController::save_and_use(const BodyModel& model, bool compare, QStri
     context_.status(tr("Not saved: %1: %2").arg(path, qstr(e.what())), 15000);
     return context_.fail(tr("Cannot save model"), path + ": " + qstr(e.what()), error);
   }
-  context_.set_last_dir_from(path);
+  context_.note_saved(path);
   if (compare) return compare_controller_.compare_with_model(path, error);
   return files_.open_model(path, error);
 }

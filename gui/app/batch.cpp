@@ -20,6 +20,7 @@
 #include "core/figures.h"
 #include "core/result_folder.h"
 #include "saltus/base/input_error.h"
+#include "saltus/evaluation/joint_loads.h"
 #include "scene/chart_view.h"
 
 namespace saltus::gui {
@@ -132,6 +133,20 @@ int show_motion(const CommandLine& c) {
     QApplication::processEvents();
   } else if (c.panel == "teaching") {
     window.plots().setCurrentWidget(window.plots().teaching());
+    QApplication::processEvents();
+  } else if (c.panel == "joints") {
+    // The joint the run shown raised most, else the plots' own choice.
+    int joint = window.plots().selected_joint();
+    const Document& d = window.document();
+    if (d.has_optimization()) {
+      const JointLoadRise rise = largest_joint_load_rise(
+          d.file().model, d.optimization().before.check, d.optimization().after.check);
+      if (!rise.joint.empty()) joint = d.file().model.joint_index(rise.joint);
+    }
+    window.plots().show_joint(joint);
+    QApplication::processEvents();
+  } else if (c.panel == "model") {
+    window.show_model_panel();
     QApplication::processEvents();
   }
 

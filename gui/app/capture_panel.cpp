@@ -14,6 +14,7 @@
 #include <cmath>
 
 #include "app/qt_text.h"
+#include "core/capture_fixes.h"
 #include "core/capture_keyframes.h"
 #include "core/document.h"
 #include "saltus/evaluation/force_metrics.h"
@@ -146,6 +147,17 @@ CapturePanel::CapturePanel(QWidget* parent) : QWidget(parent) {
   warnings_->setWordWrap(true);
   warnings_->setStyleSheet("color: #b35c00;");
   layout->addWidget(warnings_);
+  // The advice's fixes as buttons, the value the library suggests one click away, and every
+  // flag of `saltus import` the advice may name in the settings dialog.
+  fixes_ = new QVBoxLayout;
+  layout->addLayout(fixes_);
+  settings_ = new QPushButton(tr("Import settings…"), this);
+  settings_->setObjectName("capture_import_settings");
+  settings_->setToolTip(
+      tr("Import the capture again with other settings of `saltus import`: its frame time, "
+         "flight, keyframes and mapping file"));
+  connect(settings_, &QPushButton::clicked, this, &CapturePanel::import_settings_requested);
+  layout->addWidget(settings_);
   auto* strip_title = new QLabel(
       tr("<b>Keyframes on the capture's flight</b> (click a frame to add or remove it):"), this);
   strip_title->setWordWrap(true);
@@ -185,8 +197,29 @@ CapturePanel::CapturePanel(QWidget* parent) : QWidget(parent) {
 
 void CapturePanel::set_document(const Document* d) {
   const CaptureFile* capture = d && d->loaded() ? d->capture() : nullptr;
-  for (QWidget* w : std::initializer_list<QWidget*>{strip_, automatic_, every_})
+  for (QWidget* w : std::initializer_list<QWidget*>{strip_, automatic_, every_, settings_})
     w->setEnabled(capture != nullptr);
+  // Later: a fix's button may be the one whose click brought the new document.
+  while (QLayoutItem* item = fixes_->takeAt(0)) {
+    if (QWidget* w = item->widget()) {
+      w->hide();
+      w->deleteLater();
+    }
+    delete item;
+  }
+  if (capture) {
+    for (const CaptureFix& fix : capture_fixes(*capture, d->capture_options())) {
+      auto* button = new QPushButton(qstr(fix.label), this);
+      // A long label must not widen the panel's column.
+      button->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+      button->setObjectName("capture_fix");
+      button->setToolTip(qstr(fix.reason) + "\n(" + qstr(fix.flag) + ")");
+      const CaptureFileOptions options = fix.options;
+      connect(button, &QPushButton::clicked, this,
+              [this, options] { emit reimport_requested(options); });
+      fixes_->addWidget(button);
+    }
+  }
   if (!capture) {
     summary_->setText(
         tr("No motion capture: this motion was opened from a motion file. File > Import motion "
@@ -274,6 +307,14 @@ void CapturePanel::show_problem(const QString& message) {
 
 QString CapturePanel::problem() const {
   return problem_->text();
+}
+
+std::vector<QPushButton*> CapturePanel::fix_buttons() const {
+  std::vector<QPushButton*> out;
+  for (int i = 0; i < fixes_->count(); ++i)
+    if (auto* button = qobject_cast<QPushButton*>(fixes_->itemAt(i)->widget()))
+      out.push_back(button);
+  return out;
 }
 
 QString CapturePanel::summary() const {

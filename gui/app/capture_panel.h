@@ -10,8 +10,11 @@
 #include <QWidget>
 #include <vector>
 
+#include "saltus/use_cases/captures.h"
+
 class QLabel;
 class QPushButton;
+class QVBoxLayout;
 
 namespace saltus::gui {
 
@@ -67,16 +70,27 @@ class CapturePanel : public QWidget {
   CaptureFrameStrip* strip() const { return strip_; }
   /// The words shown about the import and the pick (tests read them).
   QString summary() const;
+  /// The fixes' buttons shown now (tests click them).
+  std::vector<QPushButton*> fix_buttons() const;
+  QPushButton* settings_button() const { return settings_; }
   QString pick_text() const;
 
  signals:
   void frame_toggled(int frame);
   void automatic_requested(bool every_frame);
   void seek_requested(double t);
+  /// A fix the import's advice names, one click away (core/capture_fixes.h): import the
+  /// capture again with these options.
+  void reimport_requested(const saltus::CaptureFileOptions& options);
+  /// "Import settings…": the import's options in a dialog.
+  void import_settings_requested();
 
  private:
   QLabel* summary_ = nullptr;
   QLabel* warnings_ = nullptr;
+  /// The fixes' buttons, rebuilt with each capture, and "Import settings…".
+  QVBoxLayout* fixes_ = nullptr;
+  QPushButton* settings_ = nullptr;
   CaptureFrameStrip* strip_ = nullptr;
   QLabel* pick_ = nullptr;
   QPushButton* automatic_ = nullptr;

@@ -13,6 +13,7 @@
 #include "app/optimization_runner.h"
 #include "app/qt_text.h"
 #include "app/view_controller.h"
+#include "core/athlete_landing.h"
 #include "core/athletes.h"
 #include "core/compare.h"
 #include "saltus/base/input_error.h"
@@ -39,6 +40,8 @@ CompareController::CompareController(AppContext& context, ViewController& view, 
       second.stage = Stage::kAfter;
       second.description = tr("optimised with the same settings (%1)")
                                .arg(qstr(status_text(pending_->optimization().solve.status)));
+      // The run's warnings join its athlete's verdict, in the words of `saltus optimize`.
+      second.landing = landing_of(*pending_, &pending_->optimization());
       window_->set_runs(std::move(first), std::move(second), true);
       window_->set_note(QString());
     } else {
@@ -113,9 +116,22 @@ QString CompareController::stage_label(Stage stage) const {
   return tr("%1 (run %2)").arg(name).arg(ws.runs().at(*ws.shown_run()).number);
 }
 
+std::optional<AthleteLanding> CompareController::landing_of(const Document& document,
+                                                            const OptimizationResult* run) const {
+  try {
+    return athlete_landing(document.file(), document.evaluate_options(), run);
+  } catch (const std::exception& e) {
+    context_.status(tr("Cannot fly the free flight: %1").arg(qstr(e.what())), 10000);
+  }
+  return std::nullopt;
+}
+
 QString CompareController::stage_description(Stage stage) const {
   const Workspace& ws = context_.workspace();
-  if (stage != Stage::kAfter || !ws.shown_run()) return tr("interpolated keyframes");
+  // A saved optimised result (a stored spline) is not "interpolated keyframes".
+  if (stage != Stage::kAfter || !ws.shown_run())
+    return ws.document().file().motion.spline ? tr("optimised trajectory, as saved")
+                                              : tr("interpolated keyframes");
   const RunRecord& run = ws.runs().at(*ws.shown_run());
   return tr("optimised, run %1 (%2)")
       .arg(run.number)
@@ -132,8 +148,9 @@ bool CompareController::show(const QString& first_label, Stage first_stage,
     return context_.fail(tr("Nothing to compare"), tr("Open a motion first."), error);
   // A copy: the compare window keeps showing this run if the main window opens another motion.
   CompareWindow::Run first{first_label, std::make_shared<const Document>(ws.document()),
-                           first_stage, first_description};
-  CompareWindow::Run other{second_label, std::move(second), second_stage, second_description};
+                           first_stage, first_description, std::nullopt};
+  CompareWindow::Run other{second_label, std::move(second), second_stage, second_description,
+                           std::nullopt};
   if (window_.isNull()) {
     window_ = new CompareWindow(context_.window());
     window_->setAttribute(Qt::WA_DeleteOnClose);
@@ -167,8 +184,11 @@ bool CompareController::compare_with_motion(const QString& path, QString* error)
   QString label = qstr(second->file().motion.name);
   if (label == qstr(ws.document().file().motion.name)) label = QFileInfo(path).fileName();
   context_.set_last_dir_from(path);
+  const QString second_description = second->file().motion.spline
+                                         ? tr("optimised trajectory, as saved")
+                                         : tr("interpolated keyframes");
   return show(stage_label(ws.stage()), ws.stage(), stage_description(ws.stage()), std::move(second),
-              label, Stage::kBefore, tr("interpolated keyframes"), error);
+              label, Stage::kBefore, second_description, error);
 }
 
 bool CompareController::compare_with_model(const QString& path, QString* error) {
@@ -193,6 +213,17 @@ bool CompareController::compare_with_model(const QString& path, QString* error) 
             optimise ? tr("interpolated keyframes (optimising…)") : tr("interpolated keyframes"),
             error))
     return false;
+  // Two athletes: can each land it? The free flight of each from the same take-off, and with a
+  // run its warnings.
+  {
+    CompareWindow::Run a = window_->run(0);
+    CompareWindow::Run b = window_->run(1);
+    a.landing = landing_of(*a.document, optimise && a.document->has_optimization()
+                                            ? &a.document->optimization()
+                                            : nullptr);
+    b.landing = landing_of(*b.document, nullptr);
+    window_->set_runs(std::move(a), std::move(b), true);
+  }
   if (optimise) {
     if (runner_->running()) runner_->cancel();
     pending_ = second;

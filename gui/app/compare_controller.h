@@ -9,8 +9,10 @@
 #include <QObject>
 #include <QPointer>
 #include <memory>
+#include <optional>
 
 #include "app/app_context.h"
+#include "core/athlete_landing.h"
 #include "core/document.h"
 
 class QAction;
@@ -66,6 +68,10 @@ class CompareController : public QObject {
                    QString* error);
   QString stage_label(Stage stage) const;
   QString stage_description(Stage stage) const;
+  /// Can the athlete of `document` land its motion (core/athlete_landing.h), with `run`'s
+  /// warnings; nullopt (said in the status bar) when the library cannot fly it.
+  std::optional<AthleteLanding> landing_of(const Document& document,
+                                           const OptimizationResult* run) const;
   void update_actions();
 
   AppContext& context_;

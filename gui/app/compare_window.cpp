@@ -5,9 +5,11 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QGridLayout>
+#include <QGuiApplication>
 #include <QHBoxLayout>
 #include <QKeySequence>
 #include <QLabel>
+#include <QScreen>
 #include <QSignalBlocker>
 #include <QSplitter>
 #include <QTabWidget>
@@ -21,6 +23,7 @@
 #include "app/timeline_widget.h"
 #include "core/compare.h"
 #include "core/plot_series.h"
+#include "core/screen_fit.h"
 #include "saltus/body/mass_properties.h"
 #include "saltus/body/segment_names.h"
 
@@ -148,7 +151,12 @@ CompareWindow::CompareWindow(QWidget* parent) : QMainWindow(parent) {
   QAction* close_action = bar->addAction(tr("Close compare"), this, &QWidget::close);
   close_action->setShortcuts({QKeySequence::Close, QKeySequence(Qt::Key_Escape)});
 
-  resize(1500, 950);
+  // The first size from the screen it opens on (core/screen_fit.h).
+  const QScreen* screen =
+      parent && parent->screen() ? parent->screen() : QGuiApplication::primaryScreen();
+  const QRect available = screen ? screen->availableGeometry() : QRect();
+  const WindowFit fit = first_window_size(available.width(), available.height(), 1500, 950);
+  resize(fit.width, fit.height);
 }
 
 CompareWindow::~CompareWindow() {
@@ -188,13 +196,30 @@ void CompareWindow::set_runs(Run first, Run second, bool keep_time) {
     const QString model_part =
         r.label.contains(model) ? QString() : tr(" · model %1").arg(model.toHtmlEscaped());
     // The run's name on a line of its own, larger: which side is which must read at a glance.
-    titles_[i]->setText(
+    QString title =
         tr("<span style='color:%1; font-size:large'><b>%2</b></span><br>%3%4 · %5 · average root "
-           "force <b>%6 N</b>")
+           "force <b>%6&nbsp;N</b>")
             .arg(kTitleColours[i], r.label.toHtmlEscaped(),
                  QString::fromStdString(r.document->file().motion.name).toHtmlEscaped(), model_part,
                  description.toHtmlEscaped())
-            .arg(e.metrics.avg_root_force, 0, 'g', 3));
+            .arg(e.metrics.avg_root_force, 0, 'g', 3);
+    if (r.landing) {
+      // Can this athlete land it? The verdict before anything that could read as success.
+      const AthleteLanding& l = *r.landing;
+      title += tr("<br><span style='color:%1'><b>%2</b></span><br>%3")
+                   .arg(l.lands ? "#1e7a34" : "#b00020",
+                        QString::fromStdString(l.headline).toHtmlEscaped(),
+                        QString::fromStdString(l.flight_words).toHtmlEscaped());
+      for (const std::string& warning : l.warnings)
+        title += tr("<br><span style='color:#b00020'>⚠ %1</span>")
+                     .arg(QString::fromStdString(warning).toHtmlEscaped());
+      scenes_[i]->scene().set_what_if(
+          l.flight.samples, l.lands ? "free flight: lands it" : "free flight: does not land it",
+          "this body's free flight from the same take-off (the same spin)");
+    } else {
+      scenes_[i]->scene().set_what_if({}, "");
+    }
+    titles_[i]->setText(title);
     duration = compare_duration(duration, r.document->duration());
     frames = std::max(frames, r.document->frame_count(r.stage));
   }
@@ -219,6 +244,10 @@ void CompareWindow::set_runs(Run first, Run second, bool keep_time) {
   refresh_joint_charts();
   timeline_->seek(keep_time ? t : 0.0);
   on_time_changed(timeline_->timeline().time());
+}
+
+QString CompareWindow::title(int index) const {
+  return titles_.at(static_cast<std::size_t>(index))->text();
 }
 
 void CompareWindow::set_note(const QString& note) {

@@ -12,7 +12,9 @@
 #include <QString>
 #include <array>
 #include <memory>
+#include <optional>
 
+#include "core/athlete_landing.h"
 #include "core/chart_spec.h"
 #include "core/document.h"
 #include "core/scene_options.h"
@@ -41,6 +43,10 @@ class CompareWindow : public QMainWindow {
     std::shared_ptr<const Document> document;
     Stage stage = Stage::kBefore;
     QString description;
+    /// When two athletes are compared: can this one land it (core/athlete_landing.h). Its
+    /// verdict leads the side's title, and its free flight is drawn beside the athlete, so that
+    /// both land side by side at the end of the timeline.
+    std::optional<AthleteLanding> landing;
   };
 
   explicit CompareWindow(QWidget* parent = nullptr);
@@ -59,6 +65,8 @@ class CompareWindow : public QMainWindow {
   double time() const;
   /// The 3D view of run 0 or 1 as it is now.
   QImage grab_view(int index);
+  /// A side's title as shown (rich text).
+  QString title(int index) const;
   /// The whole window (batch --compare --screenshot).
   QImage grab_window();
   /// The charts as shown (root force, root moment, joint force, joint moment).

@@ -7,6 +7,8 @@
 #include <QLineEdit>
 #include <QMainWindow>
 #include <QMenu>
+#include <QMessageBox>
+#include <QStringList>
 #include <QUndoCommand>
 #include <QUndoStack>
 #include <QUndoView>
@@ -137,6 +139,17 @@ EditController::EditController(AppContext& context, RunController& runs, QObject
 
   keyframe_panel_ = new KeyframePanel(context_.window());
   model_panel_ = new ModelPanel(context_.window());
+  model_panel_->set_landing_source([this]() -> std::optional<AthleteLanding> {
+    const Workspace& ws = context_.workspace();
+    if (!ws.loaded()) return std::nullopt;
+    const Document& d = ws.document();
+    try {
+      return athlete_landing(d.file(), d.evaluate_options(),
+                             d.has_optimization() ? &d.optimization() : nullptr);
+    } catch (const std::exception&) {
+      return std::nullopt;  // a motion the library cannot fly freely: no verdict
+    }
+  });
   capture_panel_ = new CapturePanel(context_.window());
   connect(capture_panel_, &CapturePanel::frame_toggled, this,
           [this](int f) { toggle_capture_frame(f); });
@@ -159,6 +172,22 @@ EditController::EditController(AppContext& context, RunController& runs, QObject
   connect(runs_.panel(), &OptimizePanel::settings_edited, this,
           [this](const OptimizeSettings& before, const OptimizeSettings& after) {
             if (changed_option(before, after).isEmpty()) return;
+            // A value that costs minutes or gigabytes is kept (for this and later sessions)
+            // only when the user says so.
+            const std::vector<std::string> costly = newly_costly_settings(before, after);
+            if (!costly.empty() && context_.interactive()) {
+              QStringList said;
+              for (const std::string& c : costly)
+                said << qstr(c);
+              const auto answer = QMessageBox::question(
+                  context_.window(), tr("Keep a costly setting?"),
+                  tr("%1.\n\nKeep it (also for later sessions)?").arg(said.join(".\n")),
+                  QMessageBox::Yes | QMessageBox::No, QMessageBox::No);
+              if (answer != QMessageBox::Yes) {
+                runs_.panel()->set_settings(before);
+                return;
+              }
+            }
             stack_->push(new OptionsEdit(runs_.panel(), before, after));
           });
   context_.workspace().subscribe([this](WorkspaceChange c) { on_workspace(c); });
@@ -194,6 +223,8 @@ void EditController::on_workspace(WorkspaceChange change) {
     model_panel_->set_model(ws.loaded() ? &ws.document().loaded_model() : nullptr,
                             ws.loaded() ? &ws.document().file().model : nullptr);
   }
+  if (change != WorkspaceChange::kSaved && change != WorkspaceChange::kStage)
+    model_panel_->landing_changed();
 }
 
 bool EditController::apply(const QString& text, const QString& merge_key, Source source,

@@ -20,12 +20,14 @@
 #include <exception>
 #include <nlohmann/json.hpp>
 
+#include "app/capture_import_dialog.h"
 #include "app/playback_controller.h"
 #include "app/plots_panel.h"
 #include "app/qt_text.h"
 #include "app/scene_widget.h"
 #include "app/view_controller.h"
 #include "core/lecture_figure.h"
+#include "core/shown_motion.h"
 #include "saltus/base/input_error.h"
 #include "saltus/base/resources.h"
 #include "saltus/evaluation/residual_measures.h"
@@ -75,7 +77,11 @@ FileController::FileController(AppContext& context, ViewController& view,
          "picked keyframes; the capture is drawn beside the motion"));
   connect(import_capture_, &QAction::triggered, this, [this] {
     const QString path = ask_open_file(tr("Import motion capture"), filter(ReadableKind::kCapture));
-    if (!path.isEmpty()) open_motion(path);
+    if (path.isEmpty()) return;
+    // The flags of `saltus import` as controls, at their defaults.
+    const std::optional<CaptureFileOptions> options =
+        capture_settings_(path, CaptureFileOptions{}, 0.0, std::nullopt);
+    if (options) import_capture(path, *options);
   });
   save_result_ = new QAction(w->style()->standardIcon(QStyle::SP_DialogSaveButton),
                              tr("&Save result folder…"), this);
@@ -85,10 +91,16 @@ FileController::FileController(AppContext& context, ViewController& view,
          "evaluate` without one)"));
   connect(save_result_, &QAction::triggered, this, [this] { ask_save_result(); });
   save_motion_ = new QAction(tr("Save &motion as…"), this);
+  save_motion_->setToolTip(
+      tr("The motion on screen: with a run shown, its optimised motion (keyframes at their "
+         "optimised times, with its spline); else the keyframes"));
   connect(save_motion_, &QAction::triggered, this, [this] { ask_save_motion(); });
+  save_given_ = new QAction(tr("Save &given keyframes as…"), this);
+  save_given_->setToolTip(tr("The keyframes as given (or edited), whatever is shown"));
+  connect(save_given_, &QAction::triggered, this, [this] { ask_save_given_keyframes(); });
   save_model_ = new QAction(tr("Save body mo&del as…"), this);
   connect(save_model_, &QAction::triggered, this, [this] { ask_save_model(); });
-  need_motion_ = {save_result_, save_motion_, save_model_};
+  need_motion_ = {save_result_, save_motion_, save_given_, save_model_};
 
   status_line_ = new QLabel(w);
   w->statusBar()->addWidget(status_line_, 1);
@@ -101,6 +113,14 @@ FileController::FileController(AppContext& context, ViewController& view,
     return answer == QMessageBox::Save      ? DiscardAnswer::kSave
            : answer == QMessageBox::Discard ? DiscardAnswer::kDiscard
                                             : DiscardAnswer::kCancel;
+  };
+  capture_settings_ = [this](const QString& capture, const CaptureFileOptions& current,
+                             double stated,
+                             std::optional<double> suggested) -> std::optional<CaptureFileOptions> {
+    if (!context_.interactive()) return current;
+    CaptureImportDialog settings(capture, current, stated, suggested, context_.window());
+    if (settings.exec() != QDialog::Accepted) return std::nullopt;
+    return settings.options();
   };
   save_chooser_ = [this](const QString& title, const QString& suggestion, const QString& filter) {
     // Qt's dialog asks before it replaces an existing file.
@@ -123,18 +143,19 @@ void FileController::fill_menu(QMenu* file, QAction* new_model,
   file->addSeparator();
   file->addAction(save_result_);
   file->addAction(save_motion_);
+  file->addAction(save_given_);
   file->addAction(save_model_);
   file->addSeparator();
   QAction* view_png = file->addAction(tr("Export 3D view as PNG…"), this, [this] {
     const QString path = QFileDialog::getSaveFileName(
-        context_.window(), tr("Export 3D view"), QDir(context_.last_dir()).filePath("view.png"),
+        context_.window(), tr("Export 3D view"), QDir(context_.save_dir()).filePath("view.png"),
         tr("PNG (*.png)"));
     if (!path.isEmpty()) export_view_png(path);
   });
   QAction* lecture =
       file->addAction(tr("Export &lecture figure (stroboscopic side view)…"), this, [this] {
         const QString path = choose_save_path(
-            tr("Export lecture figure"), QDir(context_.last_dir()).filePath("lecture-figure.png"),
+            tr("Export lecture figure"), QDir(context_.save_dir()).filePath("lecture-figure.png"),
             tr("PNG (*.png)"));
         if (!path.isEmpty()) export_lecture_figure(path, kDefaultStroboscopePoses);
       });
@@ -144,7 +165,7 @@ void FileController::fill_menu(QMenu* file, QAction* new_model,
          "path, each coloured by the whole-body spin rate, with a colour bar and a caption"));
   QAction* plots_png = file->addAction(tr("Export plots as figures…"), this, [this] {
     const QString dir = QFileDialog::getExistingDirectory(
-        context_.window(), tr("Export plots into folder"), context_.last_dir());
+        context_.window(), tr("Export plots into folder"), context_.save_dir());
     if (dir.isEmpty()) return;
     QStringList written;
     if (plots_.export_figures(dir, &written))
@@ -152,13 +173,13 @@ void FileController::fill_menu(QMenu* file, QAction* new_model,
   });
   QAction* window_png = file->addAction(tr("Export window screenshot…"), this, [this] {
     const QString path = QFileDialog::getSaveFileName(
-        context_.window(), tr("Export window"), QDir(context_.last_dir()).filePath("saltus.png"),
+        context_.window(), tr("Export window"), QDir(context_.save_dir()).filePath("saltus.png"),
         tr("PNG (*.png)"));
     if (!path.isEmpty()) export_window_png(path);
   });
   QAction* web_page = file->addAction(tr("Export web page…"), this, [this] {
     const QString path = QFileDialog::getSaveFileName(
-        context_.window(), tr("Export web page"), QDir(context_.last_dir()).filePath("flight.html"),
+        context_.window(), tr("Export web page"), QDir(context_.save_dir()).filePath("flight.html"),
         tr("Web page (*.html)"));
     if (!path.isEmpty()) export_web_page(path);
   });
@@ -197,6 +218,12 @@ void FileController::on_workspace(WorkspaceChange change) {
   const Workspace& ws = context_.workspace();
   for (QAction* a : need_motion_)
     a->setEnabled(ws.loaded());
+  // "Save given keyframes" only when Save motion would write something else.
+  const std::optional<MotionToSave> on_screen = motion_to_save(ws);
+  save_given_->setEnabled(on_screen && on_screen->optimised);
+  save_motion_->setText(on_screen && on_screen->optimised
+                            ? tr("Save optimised &motion (run %1) as…").arg(on_screen->run_number)
+                            : tr("Save &motion as…"));
   if (change == WorkspaceChange::kStage) return;
   if (!ws.loaded()) {
     context_.window()->setWindowTitle(tr("Saltus"));
@@ -241,7 +268,7 @@ bool FileController::confirm_discard(const QString& action) {
     case DiscardAnswer::kCancel:
       return false;
     case DiscardAnswer::kSave:
-      if (ws.motion_unsaved() && !ask_save_motion()) return false;
+      if (ws.motion_unsaved() && !ask_save_given_keyframes()) return false;
       if (ws.model_unsaved() && !ask_save_model()) return false;
       if (ws.unsaved_runs() > 0 && !ask_save_result()) return false;
       return true;
@@ -250,6 +277,21 @@ bool FileController::confirm_discard(const QString& action) {
 }
 
 bool FileController::open_motion(const QString& path, QString* error) {
+  return import_capture(path, CaptureFileOptions{}, error);
+}
+
+bool FileController::ask_import_settings() {
+  const Workspace& ws = context_.workspace();
+  if (!ws.loaded() || !ws.document().capture()) return false;
+  const CaptureImport& im = ws.document().capture()->import;
+  const QString path = qstr(ws.document().file().path);
+  const std::optional<CaptureFileOptions> options = capture_settings_(
+      path, ws.document().capture_options(), im.stated_frame_time, im.suggested_frame_time);
+  return options && import_capture(path, *options);
+}
+
+bool FileController::import_capture(const QString& path, const CaptureFileOptions& options,
+                                    QString* error) {
   if (!confirm_discard(tr("opening %1").arg(QFileInfo(path).fileName()))) {
     if (error) *error = tr("Kept the open motion (it has unsaved work).");
     return false;
@@ -257,7 +299,7 @@ bool FileController::open_motion(const QString& path, QString* error) {
   Workspace& ws = context_.workspace();
   try {
     // A model chosen with "Open model" applies to every motion opened after it.
-    ws.open(path.toStdString(), model_override_);
+    ws.open(path.toStdString(), model_override_, kDefaultSamples, options);
   } catch (const InputError& e) {
     return context_.fail(tr("Cannot open motion"), qstr(e.what()), error);
   } catch (const std::exception& e) {
@@ -281,7 +323,8 @@ bool FileController::open_model(const QString& path, QString* error) {
         return false;
       }
       const double t = playback_.time();
-      ws.open(ws.document().file().path, absolute, ws.document().evaluate_options().samples);
+      ws.open(ws.document().file().path, absolute, ws.document().evaluate_options().samples,
+              ws.document().capture_options());
       playback_.seek(t);
     }
   } catch (const InputError& e) {
@@ -299,7 +342,7 @@ bool FileController::open_model(const QString& path, QString* error) {
 bool FileController::ask_save_result() {
   const Workspace& ws = context_.workspace();
   const QString suggestion =
-      QDir(context_.last_dir()).filePath(motion_stem(ws.document().file().path) + "-result");
+      QDir(context_.save_dir()).filePath(motion_stem(ws.document().file().path) + "-result");
   const QString dir = QFileDialog::getSaveFileName(
       context_.window(), tr("Save result folder (created or replaced)"), suggestion, QString(),
       nullptr, QFileDialog::DontConfirmOverwrite);
@@ -307,23 +350,32 @@ bool FileController::ask_save_result() {
 }
 
 bool FileController::ask_save_motion() {
-  const Workspace& ws = context_.workspace();
-  if (!ws.loaded()) return report_save_failure(tr("Nothing to save"), tr("Open a motion first."));
+  return ask_save(motion_to_save(context_.workspace()));
+}
+
+bool FileController::ask_save_given_keyframes() {
+  return ask_save(given_keyframes_to_save(context_.workspace()));
+}
+
+bool FileController::ask_save(const std::optional<MotionToSave>& motion) {
+  if (!motion) return report_save_failure(tr("Nothing to save"), tr("Open a motion first."));
+  const QString stem = motion_stem(context_.workspace().document().file().path);
   const QString suggestion =
-      QDir(context_.last_dir())
-          .filePath(motion_stem(ws.document().file().path) + "-edited.motion.json");
-  const QString path =
-      save_chooser_(tr("Save motion"), suggestion, qstr(save_dialog_filter(ReadableKind::kMotion)));
+      QDir(context_.save_dir()).filePath(qstr(motion->file_name(stem.toStdString())));
+  // The dialog says which motion it writes.
+  const QString path = save_chooser_(tr("Save %1").arg(qstr(motion->what)), suggestion,
+                                     qstr(save_dialog_filter(ReadableKind::kMotion)));
   if (path.isEmpty()) return false;
   QString error;
-  return save_motion(path, &error) || report_save_failure(tr("Cannot save motion"), error);
+  return write_motion(path, *motion, &error) ||
+         report_save_failure(tr("Cannot save motion"), error);
 }
 
 bool FileController::ask_save_model() {
   if (!context_.workspace().loaded())
     return report_save_failure(tr("Nothing to save"), tr("Open a motion first."));
   const QString path =
-      save_chooser_(tr("Save body model"), QDir(context_.last_dir()).filePath("edited-model.json"),
+      save_chooser_(tr("Save body model"), QDir(context_.save_dir()).filePath("edited-model.json"),
                     filter(ReadableKind::kModel));
   if (path.isEmpty()) return false;
   QString error;
@@ -346,7 +398,7 @@ bool FileController::save_result(const QString& dir, QString* error) {
     return context_.fail(tr("Cannot save result"), dir + ": " + qstr(e.what()), error);
   }
   ws.mark_result_saved();
-  context_.set_last_dir_from(QFileInfo(dir).absolutePath());
+  context_.note_saved(QFileInfo(dir).absolutePath());
   context_.status(tr("Saved %1").arg(dir));
   return true;
 }
@@ -365,18 +417,29 @@ bool FileController::save_model(const QString& path, QString* error) {
     return context_.fail(tr("Cannot save model"), path + ": " + qstr(e.what()), error);
   }
   ws.mark_model_saved();
-  context_.set_last_dir_from(path);
+  context_.note_saved(path);
   context_.status(tr("Saved %1").arg(path));
   return true;
 }
 
 bool FileController::save_motion(const QString& path, QString* error) {
+  const std::optional<MotionToSave> motion = motion_to_save(context_.workspace());
+  if (!motion) return context_.fail(tr("Nothing to save"), tr("Open a motion first."), error);
+  return write_motion(path, *motion, error);
+}
+
+bool FileController::save_given_keyframes(const QString& path, QString* error) {
+  const std::optional<MotionToSave> motion = given_keyframes_to_save(context_.workspace());
+  if (!motion) return context_.fail(tr("Nothing to save"), tr("Open a motion first."), error);
+  return write_motion(path, *motion, error);
+}
+
+bool FileController::write_motion(const QString& path, const MotionToSave& what, QString* error) {
   Workspace& ws = context_.workspace();
-  if (!ws.loaded()) return context_.fail(tr("Nothing to save"), tr("Open a motion first."), error);
   const Document& d = ws.document();
   QString outside_model;  // the model's path when it lies outside the motion's folder
   try {
-    Motion motion = d.file().motion;
+    Motion motion = what.motion;
     // The model the document shows, named so that the saved file finds it again: a bundled
     // name, or a path relative to where the motion is saved.
     const std::string model_file = !d.model_override().empty()
@@ -394,15 +457,17 @@ bool FileController::save_motion(const QString& path, QString* error) {
   } catch (const std::exception& e) {
     return context_.fail(tr("Cannot save motion"), path + ": " + qstr(e.what()), error);
   }
-  ws.mark_motion_saved();
-  context_.set_last_dir_from(path);
+  // The edits are saved when the keyframes are; an optimised motion is a run's result.
+  if (!what.optimised) ws.mark_motion_saved();
+  context_.note_saved(path);
+  const QString saved = tr("Saved %1 to %2").arg(qstr(what.what), path);
   if (outside_model.isEmpty()) {
-    context_.status(tr("Saved %1").arg(path));
+    context_.status(saved);
   } else {
     // Motion files may only name models beside them (docs/safety.md): say what reopening needs.
-    context_.status(tr("Saved %1. Its model %2 lies outside the motion's folder: reopen it with "
+    context_.status(tr("%1. Its model %2 lies outside the motion's folder: reopen it with "
                        "File > Open model, or keep the model beside the motion")
-                        .arg(path, outside_model));
+                        .arg(saved, outside_model));
   }
   return true;
 }
@@ -412,7 +477,7 @@ bool FileController::export_view_png(const QString& path, QString* error) {
   const QImage image = view_.scene()->picture();
   if (image.isNull() || !image.save(path, "PNG"))
     return context_.fail(tr("Cannot export"), tr("%1: cannot write the image").arg(path), error);
-  context_.set_last_dir_from(path);
+  context_.note_saved(path);
   return true;
 }
 
@@ -425,7 +490,7 @@ bool FileController::export_lecture_figure(const QString& path, int poses, QStri
   } catch (const std::exception& e) {
     return context_.fail(tr("Cannot export"), qstr(e.what()), error);
   }
-  context_.set_last_dir_from(path);
+  context_.note_saved(path);
   context_.status(tr("Wrote the lecture figure %1").arg(path), 8000);
   return true;
 }
@@ -462,7 +527,7 @@ bool FileController::export_web_page(const QString& path, QString* error) {
   } catch (const std::exception& e) {
     return context_.fail(tr("Cannot export web page"), path + ": " + qstr(e.what()), error);
   }
-  context_.set_last_dir_from(path);
+  context_.note_saved(path);
   context_.status(tr("Wrote %1").arg(path));
   return true;
 }
@@ -492,7 +557,7 @@ bool FileController::export_window_png(const QString& path, QString* error) {
   const QImage image = context_.window()->grab().toImage();
   if (image.isNull() || !image.save(path, "PNG"))
     return context_.fail(tr("Cannot export"), tr("%1: cannot write the image").arg(path), error);
-  context_.set_last_dir_from(path);
+  context_.note_saved(path);
   return true;
 }
 
@@ -552,12 +617,14 @@ void FileController::drop(QDropEvent* event) {
 
 void FileController::load_settings(const QSettings& s) {
   context_.set_last_dir(s.value("files/last_dir", QDir::homePath()).toString());
+  context_.set_last_saved_dir(s.value("files/last_saved_dir").toString());
   recent_ = s.value("files/recent").toStringList();
   rebuild_recent_menu();
 }
 
 void FileController::save_settings(QSettings& s) const {
   s.setValue("files/last_dir", context_.last_dir());
+  s.setValue("files/last_saved_dir", context_.last_saved_dir());
   s.setValue("files/recent", recent_);
 }
 

@@ -9,9 +9,11 @@
 #include <QObject>
 #include <QStringList>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "app/app_context.h"
+#include "core/shown_motion.h"
 
 class QAction;
 class QDragEnterEvent;
@@ -46,12 +48,22 @@ class FileController : public QObject, public RemembersSettings {
   /// motion capture (.bvh) onto that model. Asks first when unsaved work would be dropped;
   /// false if the user keeps it.
   bool open_motion(const QString& path, QString* error = nullptr);
+  /// The same with the options of `saltus import` for a capture (its frame time, flight,
+  /// keyframes, mapping; the model is the one in use).
+  bool import_capture(const QString& path, const CaptureFileOptions& options,
+                      QString* error = nullptr);
+  /// The Capture panel's "Import settings…": the open capture's options in a dialog, then
+  /// imported again with them. False if cancelled or failed.
+  bool ask_import_settings();
   /// Uses this model file for the open motion (reloading it) and for motions opened later.
   bool open_model(const QString& path, QString* error = nullptr);
   /// Writes the CLI's output folder: `saltus optimize`'s for the run shown, else `evaluate`'s.
   bool save_result(const QString& dir, QString* error = nullptr);
-  /// Writes the (edited) motion as a motion file and reads it back through the library.
+  /// Writes the motion on screen as a motion file and reads it back through the library: with a
+  /// run shown, its optimised motion; else the keyframes (core/shown_motion.h, motion_to_save).
   bool save_motion(const QString& path, QString* error = nullptr);
+  /// Writes the keyframes as given (or edited), whatever is shown.
+  bool save_given_keyframes(const QString& path, QString* error = nullptr);
   /// Writes the model in use as a model file (named after the file) and reads it back.
   bool save_model(const QString& path, QString* error = nullptr);
   bool export_view_png(const QString& path, QString* error = nullptr);
@@ -79,15 +91,28 @@ class FileController : public QObject, public RemembersSettings {
   /// Replaces the save dialog of the motion and the model (tests). The default is Qt's save
   /// dialog, which asks before replacing an existing file.
   void set_save_chooser(SaveChooser chooser) { save_chooser_ = std::move(chooser); }
+  /// The options of `saltus import` for a capture (`capture`): from `current`, with what the
+  /// file states and what the library suggests; none when the user cancels.
+  using CaptureSettingsChooser = std::function<std::optional<CaptureFileOptions>(
+      const QString& capture, const CaptureFileOptions& current, double stated_frame_time,
+      std::optional<double> suggested_frame_time)>;
+  /// Replaces the import settings dialog (tests). The default is CaptureImportDialog, or,
+  /// without a user, `current` unchanged.
+  void set_capture_settings_chooser(CaptureSettingsChooser chooser) {
+    capture_settings_ = std::move(chooser);
+  }
   /// Asks where to save a file, through that dialog (e.g. a new athlete's model).
   QString choose_save_path(const QString& title, const QString& suggestion,
                            const QString& filter) const {
     return save_chooser_(title, suggestion, filter);
   }
 
-  /// Save motion as… (File menu, the Keyframes panel's button): asks where, then save_motion.
-  /// A failure is said in the status bar and a dialog. False if cancelled or failed.
+  /// Save motion as… (File menu, the Keyframes panel's button): asks where, the dialog's title
+  /// saying which motion it writes, then save_motion. A failure is said in the status bar and
+  /// a dialog. False if cancelled or failed.
   bool ask_save_motion();
+  /// Save given keyframes as… likewise.
+  bool ask_save_given_keyframes();
   /// Save body model as… (File menu, the Model panel's button), likewise.
   bool ask_save_model();
   /// Asks before `action` drops unsaved work; true to go on (saved, discarded or nothing to
@@ -111,6 +136,8 @@ class FileController : public QObject, public RemembersSettings {
   QString ask_open_file(const QString& title, const QString& filter);
   /// The folder dialog behind Save result (returns false if the user cancels it).
   bool ask_save_result();
+  bool ask_save(const std::optional<MotionToSave>& motion);
+  bool write_motion(const QString& path, const MotionToSave& what, QString* error);
   /// Says a failed save in the status bar and, with a user, in a dialog. Returns false.
   bool report_save_failure(const QString& title, const QString& message);
 
@@ -120,6 +147,7 @@ class FileController : public QObject, public RemembersSettings {
   PlotsPanel& plots_;
   DiscardPrompt prompt_;
   SaveChooser save_chooser_;
+  CaptureSettingsChooser capture_settings_;
   std::string model_override_;  ///< model file chosen with "Open model", else ""
   QStringList recent_;
   QLabel* status_line_ = nullptr;
@@ -128,6 +156,7 @@ class FileController : public QObject, public RemembersSettings {
   QAction* import_capture_ = nullptr;
   QAction* save_result_ = nullptr;
   QAction* save_motion_ = nullptr;
+  QAction* save_given_ = nullptr;
   QAction* save_model_ = nullptr;
   std::vector<QAction*> need_motion_;  ///< enabled only with a motion open
 };

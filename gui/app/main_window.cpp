@@ -4,12 +4,15 @@
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QElapsedTimer>
+#include <QGuiApplication>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScreen>
 #include <QScrollArea>
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
+#include <QTabBar>
 #include <QToolBar>
 #include <QToolButton>
 #include <QUndoView>
@@ -35,6 +38,7 @@
 #include "app/video_exporter.h"
 #include "app/view_controller.h"
 #include "app/what_if_panel.h"
+#include "core/screen_fit.h"
 
 namespace saltus::gui {
 
@@ -46,6 +50,9 @@ constexpr int kDockWidth = 340;
 /// The saved dock layout's version: a layout saved before the panels became one tabbed column
 /// is not restored (it would bring back the crowded one).
 constexpr int kLayoutVersion = 2;
+/// The window's size where the screen has room (core/screen_fit.h).
+constexpr int kPreferredWidth = 1600;
+constexpr int kPreferredHeight = 1000;
 
 }  // namespace
 
@@ -92,6 +99,14 @@ MainWindow::MainWindow(bool interactive, QWidget* parent) : QMainWindow(parent) 
     twist_->set_time(t);
   });
   connect(edits_->capture_panel(), &CapturePanel::seek_requested, this, &MainWindow::seek);
+  // The import's advice, one click away: the capture imported again with the fix.
+  connect(edits_->capture_panel(), &CapturePanel::reimport_requested, this,
+          [this](const CaptureFileOptions& options) {
+            if (document().loaded())
+              files_->import_capture(QString::fromStdString(document().file().path), options);
+          });
+  connect(edits_->capture_panel(), &CapturePanel::import_settings_requested, files_,
+          [this] { files_->ask_import_settings(); });
   connect(plots_, &PlotsPanel::seek_requested, this, &MainWindow::seek);
   connect(twist_, &TwistPanel::seek_requested, this, &MainWindow::seek);
   // The what-if flight is drawn beside the athlete while the What if panel is in view.
@@ -135,8 +150,15 @@ MainWindow::MainWindow(bool interactive, QWidget* parent) : QMainWindow(parent) 
   build_menus();
   // Ctrl+Z in a number field whose value was entered undoes that edit, as the Edit menu says.
   edits_->route_undo_keys(this);
-  resize(1600, 1000);
+  // The first size from the screen it opens on: a laptop's keeps every panel in view.
+  const QScreen* screen = QGuiApplication::primaryScreen();
+  const QRect available = screen ? screen->availableGeometry() : QRect();
+  const WindowFit fit =
+      first_window_size(available.width(), available.height(), kPreferredWidth, kPreferredHeight);
+  resize(fit.width, fit.height);
+  if (interactive && fit.maximise) setWindowState(windowState() | Qt::WindowMaximized);
   if (interactive) load_settings();
+  keep_tab_titles_whole();
   scene_->setFocus();
 }
 
@@ -237,6 +259,7 @@ void MainWindow::build_docks(QMenu* view_menu) {
   QDockWidget* keyframes = dock(tr("Keyframes"), "keyframe_dock", edits_->keyframe_panel());
   QDockWidget* capture = dock(tr("Capture"), "capture_dock", edits_->capture_panel());
   QDockWidget* model = dock(tr("Model"), "model_dock", edits_->model_panel());
+  model_dock_ = model;
   QDockWidget* display = dock(tr("Display"), "display_dock", view_->make_display_panel(this));
   QDockWidget* history = dock(tr("History"), "history_dock", edits_->make_history_view(this));
   history->toggleViewAction()->setText(tr("Edit history"));
@@ -291,11 +314,26 @@ void MainWindow::build_docks(QMenu* view_menu) {
   view_menu->addAction(tr("Where does the &twist come from?"), this, &MainWindow::show_twist_panel);
   view_menu->addAction(tr("&What if…"), this, &MainWindow::show_what_if_panel);
   resizeDocks({optimise}, {kDockWidth}, Qt::Horizontal);
+  keep_tab_titles_whole();
+}
+
+void MainWindow::keep_tab_titles_whole() {
+  // The panels' tabs stand on the right edge: on a short screen (1024×700) they scroll rather
+  // than shorten their titles to "T…" and "Wha…".
+  for (QTabBar* bar : findChildren<QTabBar*>(QString(), Qt::FindDirectChildrenOnly)) {
+    bar->setElideMode(Qt::ElideNone);
+    bar->setUsesScrollButtons(true);
+  }
 }
 
 void MainWindow::show_study_panel() {
   study_dock_->show();
   study_dock_->raise();
+}
+
+void MainWindow::show_model_panel() {
+  model_dock_->show();
+  model_dock_->raise();
 }
 
 void MainWindow::show_twist_panel() {

@@ -70,6 +70,8 @@ class MainWindow : public QMainWindow {
   void show_what_if_panel();
   /// Brings the Study panel to the front (a study starts or ends, the status bar's strip).
   void show_study_panel();
+  /// Brings the Model panel to the front.
+  void show_model_panel();
   QDockWidget* study_dock() const { return study_dock_; }
 
   // Shortcuts to what batch mode and tests use most.
@@ -103,6 +105,7 @@ class MainWindow : public QMainWindow {
  private:
   void build_menus();
   void build_docks(QMenu* view_menu);
+  void keep_tab_titles_whole();
   void load_settings();
   void save_settings() const;
 
@@ -124,6 +127,7 @@ class MainWindow : public QMainWindow {
   WhatIfPanel* what_if_ = nullptr;
   QDockWidget* what_if_dock_ = nullptr;
   QDockWidget* study_dock_ = nullptr;
+  QDockWidget* model_dock_ = nullptr;
   /// Parts that remember settings, in the order they are loaded.
   std::vector<RemembersSettings*> remembered_;
   int frames_drawn_ = 0;

@@ -53,6 +53,15 @@ ModelPanel::ModelPanel(QWidget* parent) : QWidget(parent) {
   problem_->setWordWrap(true);
   problem_->setStyleSheet("color: #b00020;");
   layout->addWidget(problem_);
+  landing_ = new QLabel(this);
+  landing_->setWordWrap(true);
+  landing_->setObjectName("model_landing");
+  landing_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  landing_->setToolTip(
+      tr("The open motion's take-off (its angular momentum on this body: the same spin as on "
+         "the model it was made for) flown freely by this body, as `saltus simulate --model` "
+         "flies it"));
+  layout->addWidget(landing_);
 
   connect(table_, &QTableWidget::itemChanged, this, &ModelPanel::on_item_changed);
   connect(reset_, &QPushButton::clicked, this, [this] {
@@ -84,6 +93,45 @@ void ModelPanel::set_model(const BodyModel* loaded, const BodyModel* current) {
                                  .arg(current_->total_mass(), 0, 'f', 2)
                            : QString());
   setEnabled(rows > 0);
+}
+
+void ModelPanel::landing_changed() {
+  landing_stale_ = true;
+  if (isVisible()) refresh_landing();
+}
+
+void ModelPanel::showEvent(QShowEvent* event) {
+  QWidget::showEvent(event);
+  if (landing_stale_) refresh_landing();
+}
+
+void ModelPanel::refresh_landing() {
+  landing_stale_ = false;
+  const std::optional<AthleteLanding> l = landing_source_ ? landing_source_() : std::nullopt;
+  if (!l) {
+    landing_->clear();
+    return;
+  }
+  const Rgb light = strength_light_colour(l->strength_light);
+  QString text =
+      tr("<b>Can this athlete land it?</b><br><span style='color:%1'><b>%2</b></span><br>%3.<br>"
+         "<span style='color: rgb(%4, %5, %6)'>●</span> Joints: %7 (%8).")
+          .arg(l->lands ? "#1e7a34" : "#b00020",
+               QString::fromStdString(l->headline).toHtmlEscaped(),
+               QString::fromStdString(l->flight_words).toHtmlEscaped())
+          .arg(static_cast<int>(255 * light.r))
+          .arg(static_cast<int>(255 * light.g))
+          .arg(static_cast<int>(255 * light.b))
+          .arg(QString::fromStdString(l->strength_words).toHtmlEscaped(),
+               QString::fromStdString(strength_light_words(l->strength_light)));
+  for (const std::string& warning : l->warnings)
+    text += tr("<br><span style='color:#b00020'>⚠ %1</span>")
+                .arg(QString::fromStdString(warning).toHtmlEscaped());
+  landing_->setText(text);
+}
+
+QString ModelPanel::landing_text() const {
+  return landing_->text();
 }
 
 std::vector<double> ModelPanel::factors() const {

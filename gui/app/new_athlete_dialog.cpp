@@ -13,28 +13,40 @@
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QRadioButton>
+#include <QTimer>
 #include <QVBoxLayout>
+#include <exception>
 
 #include "app/qt_text.h"
 #include "app/vtk_image_widget.h"
 #include "saltus/body/athlete_model.h"
+#include "saltus/use_cases/athlete_models.h"
 #include "scene/standing_figures.h"
 
 namespace saltus::gui {
 
 namespace {
 
-/// The words above a figure: its name, then its height and mass.
+/// The words above a figure: `prefix` on a line of its own ("in use:"), its name, then its
+/// height and mass: short lines, so that neighbours' labels do not run together.
 std::string figure_label(const std::string& prefix, const BodyModel& model) {
-  return prefix + model.name + "\n" + athlete_size(model);
+  return (prefix.empty() ? "" : prefix + "\n") + model.name + "\n" + athlete_size(model);
 }
 
 }  // namespace
 
-NewAthleteDialog::NewAthleteDialog(const BodyModel* current, bool can_compare, QWidget* parent)
-    : QDialog(parent), figures_(std::make_unique<StandingFigures>()), can_compare_(can_compare) {
+NewAthleteDialog::NewAthleteDialog(const MotionFile* open, const EvaluateOptions& options,
+                                   QWidget* parent)
+    : QDialog(parent),
+      figures_(std::make_unique<StandingFigures>()),
+      options_(options),
+      can_compare_(open != nullptr),
+      landing_figures_(std::make_unique<StandingFigures>()) {
   setWindowTitle(tr("New athlete"));
-  if (current) current_ = *current;
+  if (open) {
+    current_ = open->model;
+    open_ = *open;
+  }
 
   auto* intro = new QLabel(
       tr("A body model of one athlete, on the same 13 segments as every motion. It is saved as "
@@ -110,13 +122,40 @@ NewAthleteDialog::NewAthleteDialog(const BodyModel* current, bool can_compare, Q
   fields->addStretch(1);
 
   preview_ = new VtkImageWidget(this);
-  preview_->setMinimumSize(340, 380);
+  preview_->setMinimumSize(220, 260);
   preview_->setToolTip(tr("The new athlete standing beside the model in use (grey), on one scale"));
   figures_->attach(preview_->render_window());
+  // Both free flights at landing, side by side: a body that lands on its head is drawn so.
+  landing_view_ = new VtkImageWidget(this);
+  landing_view_->setMinimumSize(220, 260);
+  landing_view_->setToolTip(
+      tr("The open motion's take-off flown freely by the new athlete and by the model in use "
+         "(grey): each drawn as it lands"));
+  landing_figures_->attach(landing_view_->render_window());
+  landing_view_->setVisible(open_.has_value());
 
   auto* middle = new QHBoxLayout;
   middle->addLayout(fields, 1);
   middle->addWidget(preview_, 1);
+  middle->addWidget(landing_view_, 1);
+
+  // Can this athlete land it? The verdict first, in large letters, then the flight in words and
+  // the joints against the athlete's strength.
+  landing_title_ = new QLabel(this);
+  landing_title_->setWordWrap(true);
+  landing_headline_ = new QLabel(this);
+  landing_headline_->setWordWrap(true);
+  landing_headline_->setObjectName("landing_headline");
+  landing_details_ = new QLabel(this);
+  landing_details_->setWordWrap(true);
+  landing_details_->setObjectName("landing_details");
+  landing_details_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  for (QLabel* label : {landing_title_, landing_headline_, landing_details_})
+    label->setVisible(open_.has_value());
+  landing_timer_ = new QTimer(this);
+  landing_timer_->setSingleShot(true);
+  landing_timer_->setInterval(150);
+  connect(landing_timer_, &QTimer::timeout, this, &NewAthleteDialog::refresh_landing);
 
   figures_line_ = new QLabel(this);
   figures_line_->setWordWrap(true);
@@ -150,6 +189,9 @@ NewAthleteDialog::NewAthleteDialog(const BodyModel* current, bool can_compare, Q
   auto* layout = new QVBoxLayout(this);
   layout->addWidget(intro);
   layout->addLayout(middle, 1);
+  layout->addWidget(landing_title_);
+  layout->addWidget(landing_headline_);
+  layout->addWidget(landing_details_);
   layout->addWidget(figures_line_);
   layout->addWidget(warnings_);
   layout->addWidget(problem_);
@@ -170,7 +212,7 @@ NewAthleteDialog::NewAthleteDialog(const BodyModel* current, bool can_compare, Q
     if (!path.isEmpty()) measurements_->setText(path);
   });
   refresh();
-  resize(880, 600);
+  resize(900, 640);
 }
 
 NewAthleteDialog::~NewAthleteDialog() = default;
@@ -196,9 +238,11 @@ void NewAthleteDialog::refresh() {
   draft_ = draft_athlete(request());
 
   std::vector<StandingFigures::Figure> shown;
-  if (draft_.model) shown.push_back({*draft_.model, figure_label("", *draft_.model), false});
+  if (draft_.model)
+    shown.push_back({*draft_.model, figure_label("", *draft_.model), false, std::nullopt});
   if (current_)
-    shown.push_back({*current_, figure_label(tr("in use: ").toStdString(), *current_), true});
+    shown.push_back(
+        {*current_, figure_label(tr("in use:").toStdString(), *current_), true, std::nullopt});
   figures_->set_figures(shown);
   preview_->request_render();
 
@@ -212,6 +256,79 @@ void NewAthleteDialog::refresh() {
   problem_->setVisible(!draft_.problem.empty());
   use_->setEnabled(draft_.model.has_value());
   compare_->setEnabled(draft_.model.has_value() && can_compare_);
+  landing_stale_ = true;
+  if (open_) {
+    landing_headline_->setText(draft_.model ? tr("Flying it…") : QString());
+    landing_details_->clear();
+    landing_timer_->start();
+  }
+}
+
+const AthleteLanding* NewAthleteDialog::landing() {
+  if (landing_stale_) refresh_landing();
+  return landing_ ? &*landing_ : nullptr;
+}
+
+void NewAthleteDialog::refresh_landing() {
+  landing_timer_->stop();
+  landing_stale_ = false;
+  landing_.reset();
+  if (!open_) return;
+  const QString motion = qstr(open_->motion.name);
+  try {
+    if (!current_landing_) current_landing_ = athlete_landing(*open_, options_);
+    if (draft_.model)
+      landing_ = athlete_landing(motion_for_athlete(*open_, *draft_.model, TakeoffRule::kSameSpin),
+                                 options_);
+  } catch (const std::exception& e) {
+    landing_headline_->setText(qstr(e.what()));
+    return;
+  }
+  std::vector<StandingFigures::Figure> shown;
+  if (landing_)
+    shown.push_back(
+        {*draft_.model, figure_label("", *draft_.model), false, landing_->flight.samples.back()});
+  shown.push_back({open_->model, figure_label(tr("in use:").toStdString(), open_->model), true,
+                   current_landing_->flight.samples.back()});
+  landing_figures_->set_figures(shown);
+  landing_view_->request_render();
+  landing_title_->setText(
+      tr("<b>Can %1 land %2?</b> The same take-off (the same spin), flown freely by this body:")
+          .arg(draft_.model ? qstr(draft_.model->name) : tr("this athlete"), motion));
+  if (!landing_) {
+    landing_headline_->clear();
+    landing_details_->clear();
+    return;
+  }
+  const AthleteLanding& l = *landing_;
+  landing_headline_->setText(qstr(l.headline));
+  landing_headline_->setStyleSheet(l.lands ? "color: #1e7a34; font-weight: bold; font-size: 14pt;"
+                                           : "color: #b00020; font-weight: bold; font-size: 14pt;");
+  const Rgb light = strength_light_colour(l.strength_light);
+  QStringList details;
+  details << qstr(l.flight_words) + ".";
+  details << tr("In use (%1): %2.").arg(qstr(open_->model.name), qstr(current_landing_->headline));
+  details << tr("<span style=\"color: rgb(%1, %2, %3);\">●</span> Joints of the keyframes "
+                "on this body: %4 (%5).")
+                 .arg(static_cast<int>(255 * light.r))
+                 .arg(static_cast<int>(255 * light.g))
+                 .arg(static_cast<int>(255 * light.b))
+                 .arg(qstr(l.strength_words), qstr(strength_light_words(l.strength_light)));
+  landing_details_->setText(details.join("<br>"));
+}
+
+QImage NewAthleteDialog::grab_landing() {
+  landing();
+  landing_view_->render_now();
+  return landing_view_->picture();
+}
+
+QString NewAthleteDialog::landing_headline() const {
+  return landing_headline_->text();
+}
+
+QString NewAthleteDialog::landing_details() const {
+  return landing_details_->text();
 }
 
 QImage NewAthleteDialog::grab_preview() {

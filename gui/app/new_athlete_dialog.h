@@ -4,8 +4,11 @@
 /// `saltus model new`) or from a file of Yeadon's measurements (`saltus model yeadon`), made by
 /// the library as the fields change (core/athletes.h). The athlete is drawn standing beside the
 /// model in use, on one scale, with a line of its figures; a value the library refuses shows
-/// its message and disables the buttons. The dialog only asks: AthleteController saves the
-/// model and uses it or compares with it.
+/// its message and disables the buttons. With a motion open: "Can this athlete land it?"
+/// (core/athlete_landing.h) — the open motion's take-off flown by the new body and by the one
+/// in use, both drawn at landing side by side, the verdict first, the joints against the new
+/// athlete's strength. The dialog only asks: AthleteController saves the model and uses it or
+/// compares with it.
 
 #include <QDialog>
 #include <QImage>
@@ -13,6 +16,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/athlete_landing.h"
 #include "core/athletes.h"
 
 class QButtonGroup;
@@ -23,6 +27,7 @@ class QLineEdit;
 class QPlainTextEdit;
 class QPushButton;
 class QRadioButton;
+class QTimer;
 class QWidget;
 
 namespace saltus::gui {
@@ -34,9 +39,11 @@ class NewAthleteDialog : public QDialog {
   Q_OBJECT
 
  public:
-  /// `current`: the model in use, drawn in grey beside the new athlete (null: none open).
-  /// `can_compare`: a motion is open, so "Save and compare…" is offered.
-  NewAthleteDialog(const BodyModel* current, bool can_compare, QWidget* parent = nullptr);
+  /// `open`: the open motion on the model in use (null: none open), whose model is drawn in
+  /// grey beside the new athlete and whose take-off the new athlete flies (with `options`);
+  /// with it "Save and compare…" is offered.
+  NewAthleteDialog(const MotionFile* open, const EvaluateOptions& options,
+                   QWidget* parent = nullptr);
   ~NewAthleteDialog() override;
 
   /// What the fields ask for now, and the library's model of it (or its message).
@@ -45,6 +52,15 @@ class NewAthleteDialog : public QDialog {
 
   /// The preview as drawn now.
   QImage grab_preview();
+  /// The landing preview (both free flights at landing) as drawn now.
+  QImage grab_landing();
+  /// "Can this athlete land it?" for the athlete of the fields, worked out now (tests; the
+  /// dialog works it out a moment after the fields stop changing). Null without a motion or a
+  /// valid athlete.
+  const AthleteLanding* landing();
+  /// Its headline and the rest of its words as shown.
+  QString landing_headline() const;
+  QString landing_details() const;
   /// The heights of the figures drawn (m): the new athlete's first.
   std::vector<double> preview_heights() const;
 
@@ -72,6 +88,9 @@ class NewAthleteDialog : public QDialog {
 
  private:
   void refresh();
+  /// Flies the open motion's take-off on the athlete of the fields (a moment after they stop
+  /// changing: each flight and evaluation is a tenth of a second or so).
+  void refresh_landing();
 
   QLineEdit* name_ = nullptr;
   QRadioButton* from_size_ = nullptr;
@@ -92,8 +111,20 @@ class NewAthleteDialog : public QDialog {
   QPushButton* use_ = nullptr;
   QPushButton* compare_ = nullptr;
   std::optional<BodyModel> current_;
+  std::optional<MotionFile> open_;
+  EvaluateOptions options_;
   bool can_compare_ = false;
   AthleteDraft draft_;
+  VtkImageWidget* landing_view_ = nullptr;
+  std::unique_ptr<StandingFigures> landing_figures_;
+  QLabel* landing_title_ = nullptr;
+  QLabel* landing_headline_ = nullptr;
+  QLabel* landing_details_ = nullptr;
+  QTimer* landing_timer_ = nullptr;
+  /// The open motion as it flies on the model in use, worked out once.
+  std::optional<AthleteLanding> current_landing_;
+  std::optional<AthleteLanding> landing_;
+  bool landing_stale_ = true;
 };
 
 }  // namespace saltus::gui

@@ -9,8 +9,10 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <algorithm>
 
 namespace saltus::gui {
 
@@ -35,10 +37,26 @@ OptimizePanel::OptimizePanel(QWidget* parent) : QWidget(parent) {
   status_ = new QLabel(tr("Open a motion to optimise it."), this);
   status_->setWordWrap(true);
   status_->setObjectName("optimise_status");
+  // While a run goes: the time left, and what the objective means (it starts again with each
+  // stage, which looks like a failure to anyone who is not told).
+  time_left_ = new QLabel(this);
+  time_left_->setWordWrap(true);
+  time_left_->setObjectName("optimise_time_left");
+  objective_ = new QLabel(this);
+  objective_->setWordWrap(true);
+  objective_->setObjectName("optimise_objective");
+  objective_->setStyleSheet("color: #555; font-size: 9pt;");
   layout->addWidget(bar_);
   layout->addWidget(status_);
+  layout->addWidget(time_left_);
+  layout->addWidget(objective_);
+  time_left_->hide();
+  objective_->hide();
 
-  auto* runs_title = new QLabel(tr("Runs of this motion (the best solved one is shown):"), this);
+  auto* runs_title = new QLabel(tr("Runs, best first:"), this);
+  runs_title->setToolTip(
+      tr("As the optimiser ranks them: solved first, then every joint within its policy (no "
+         "joint past 1.5 times its input's peak load), then the least root force"));
   runs_title->setWordWrap(true);
   layout->addWidget(runs_title);
   runs_ = new QListWidget(this);
@@ -51,35 +69,43 @@ OptimizePanel::OptimizePanel(QWidget* parent) : QWidget(parent) {
          "never replaces a solved one by itself."));
   layout->addWidget(runs_);
   connect(runs_, &QListWidget::currentRowChanged, this, [this](int row) {
-    // Row 0 is "interpolation only".
-    if (!setting_ && row >= 0) emit run_chosen(row - 1);
+    // Each row holds its run's index (-1: "interpolation only").
+    if (!setting_ && row >= 0) emit run_chosen(runs_->item(row)->data(Qt::UserRole).toInt());
   });
 
-  table_ = new QTableWidget(0, 3, this);
+  // The run's before/after table and the options share the rest of the height as two tabs:
+  // one under the other, on a 1366×768 laptop the table showed four rows with its quantities
+  // cut to "s…". After a run the table is in front, before one the options.
+  details_ = new QTabWidget(this);
+  table_ = new QTableWidget(0, 3, details_);
   table_->setHorizontalHeaderLabels({tr("Quantity"), tr("Before"), tr("After")});
   table_->verticalHeader()->setVisible(false);
-  // Values are short (numbers, one keyframe time per line): they get what they need and the
-  // quantity names wrap in the rest.
-  table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
-  table_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
-  table_->horizontalHeader()->setSectionResizeMode(2, QHeaderView::ResizeToContents);
+  // Three columns sharing the width, every cell wrapped: a long value (the keyframe times) makes
+  // its row taller, never another column narrower.
+  table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+  table_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   table_->setWordWrap(true);
   table_->setToolTip(tr("Before: the interpolated keyframes; after: the optimised motion"));
-  table_->setMinimumHeight(80);
-  layout->addWidget(table_, 1);
+  details_->addTab(table_, tr("Before / after"));
 
-  auto* options_title = new QLabel(tr("<b>Options</b> (those of <tt>saltus optimize</tt>)"), this);
+  auto* options_page = new QWidget(details_);
+  auto* options_layout = new QVBoxLayout(options_page);
+  options_layout->setContentsMargins(2, 2, 2, 2);
+  auto* options_title = new QLabel(tr("The options of <tt>saltus optimize</tt>:"), options_page);
   options_title->setWordWrap(true);
-  layout->addWidget(options_title);
+  options_layout->addWidget(options_title);
   form_ = new OptionForm;
-  auto* options = new QScrollArea(this);
+  auto* options = new QScrollArea(options_page);
   options->setWidget(form_);
   options->setWidgetResizable(true);
   options->setFrameShape(QFrame::NoFrame);
   options->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-  options->setMinimumHeight(100);
-  layout->addWidget(options, 2);
+  options_layout->addWidget(options, 1);
+  details_->addTab(options_page, tr("Options"));
+  details_->setCurrentWidget(options_page);
+  details_->setMinimumHeight(140);
+  layout->addWidget(details_, 1);
 
   connect(run_, &QPushButton::clicked, this, &OptimizePanel::run_requested);
   connect(cancel_, &QPushButton::clicked, this, &OptimizePanel::cancel_requested);
@@ -108,20 +134,34 @@ void OptimizePanel::set_available(bool available) {
 void OptimizePanel::set_running(bool running) {
   running_ = running;
   if (running) {
-    // How many iterations a run needs is unknown (most solve far below the limit): a busy bar
-    // and the iteration count, not a fraction of the limit.
+    // How many iterations a run needs is unknown (most solve far below the limit): a busy bar,
+    // the stage and the iteration count, and the time left as a range from the run's own pace,
+    // not a fraction of the limit.
+    const OptimizeSettings s = settings();
+    progress_ = RunProgress(s.real("joint_load_weight") > 0 &&
+                            std::get<std::string>(s.get("formulation")) == "relaxed");
     bar_->setRange(0, 0);
     status_->setText(tr("Building the problem (first derivatives)…"));
+    time_left_->setText(QString::fromStdString(progress_.time_left_line()));
+    time_left_->show();
+    objective_->hide();
   } else {
     bar_->setRange(0, 1);
     bar_->setValue(1);
+    time_left_->hide();
+    objective_->hide();
   }
   update_enabled();
 }
 
 void OptimizePanel::show_progress(const ProgressInfo& progress) {
+  progress_.add(progress);
   bar_->setFormat(tr("iteration %1").arg(progress.iteration));
-  status_->setText(QString::fromStdString(progress_text(progress)));
+  status_->setText(
+      QString::fromStdString("<b>" + progress_.stage_line() + "</b><br>" + progress_.count_line()));
+  time_left_->setText(QString::fromStdString(progress_.time_left_line()));
+  objective_->setText(QString::fromStdString(progress_.objective_line()));
+  objective_->show();
 }
 
 void OptimizePanel::show_message(const QString& message) {
@@ -133,22 +173,32 @@ QString OptimizePanel::message() const {
   return status_->text();
 }
 
-void OptimizePanel::show_runs(const std::vector<std::string>& labels, int shown) {
+void OptimizePanel::show_runs(const std::vector<RunRow>& runs, int shown) {
   setting_ = true;
   runs_->clear();
   runs_->addItem(tr("Interpolated keyframes only (no run shown)"));
-  for (const std::string& label : labels) {
-    runs_->addItem(QString::fromStdString(label));
-    runs_->item(runs_->count() - 1)->setToolTip(QString::fromStdString(label));
+  runs_->item(0)->setData(Qt::UserRole, -1);
+  for (const RunRow& run : runs) {
+    auto* item = new QListWidgetItem(QString::fromStdString(run.label), runs_);
+    item->setData(Qt::UserRole, run.index);
+    item->setToolTip(QString::fromStdString(run.details));
   }
-  runs_->setCurrentRow(shown + 1);
-  runs_->setEnabled(!labels.empty());
+  runs_->setCurrentRow(std::max(0, row_of_run(shown)));
+  runs_->setEnabled(!runs.empty());
   setting_ = false;
+}
+
+int OptimizePanel::row_of_run(int index) const {
+  for (int row = 0; row < runs_->count(); ++row)
+    if (runs_->item(row)->data(Qt::UserRole).toInt() == index) return row;
+  return -1;
 }
 
 void OptimizePanel::reset() {
   clear_result();
   show_runs({}, -1);
+  time_left_->hide();
+  objective_->hide();
   bar_->setRange(0, 1);
   bar_->setValue(0);
   bar_->setFormat(QString());
@@ -166,10 +216,12 @@ void OptimizePanel::show_result(const std::vector<ResultRow>& rows) {
       table_->item(r, c)->setToolTip(table_->item(r, c)->text());
   }
   table_->resizeRowsToContents();
+  details_->setCurrentWidget(table_);
 }
 
 void OptimizePanel::clear_result() {
   table_->setRowCount(0);
+  details_->setCurrentIndex(1);
 }
 
 void OptimizePanel::update_enabled() {

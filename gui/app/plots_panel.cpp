@@ -16,6 +16,7 @@
 #include "app/qt_text.h"
 #include "app/teaching_panel.h"
 #include "core/figures.h"
+#include "core/joint_load_view.h"
 #include "core/plot_series.h"
 #include "saltus/body/segment_names.h"
 #include "saltus/evaluation/residual_measures.h"
@@ -51,7 +52,7 @@ PlotsPanel::PlotsPanel(AppContext& context, QWidget* parent)
     axes_[static_cast<std::size_t>(a)]->setChecked(true);
     switches->addWidget(axes_[static_cast<std::size_t>(a)]);
   }
-  log_scale_ = new QCheckBox(tr("Log scale for before/after"), corner);
+  log_scale_ = new QCheckBox(tr("Log scale"), corner);
   log_scale_->setChecked(true);
   log_scale_->setToolTip(
       tr("A logarithmic axis for |F| and |M|, so that the small residual "
@@ -73,16 +74,35 @@ PlotsPanel::PlotsPanel(AppContext& context, QWidget* parent)
   joint_tab_ = new QWidget(this);
   auto* joint_layout = new QVBoxLayout(joint_tab_);
   joint_layout->setContentsMargins(2, 2, 2, 2);
+  joint_layout->setSpacing(2);
   auto* joint_row = new QHBoxLayout;
   joint_row->addWidget(new QLabel(tr("Joint:"), joint_tab_));
   joint_combo_ = new QComboBox(joint_tab_);
   joint_combo_->setMinimumContentsLength(22);
+  joint_combo_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
   joint_combo_->setToolTip(tr("Or click a body segment in the 3D view"));
   joint_row->addWidget(joint_combo_);
-  joint_row->addStretch(1);
+  // The peaks as a coach reads them, with a traffic light for the share of the athlete's
+  // strength.
+  joint_light_ = new QLabel(joint_tab_);
+  joint_light_->setFixedSize(14, 14);
+  joint_row->addWidget(joint_light_);
+  joint_summary_ = new QLabel(joint_tab_);
+  joint_summary_->setWordWrap(true);
+  joint_summary_->setObjectName("joint_summary");
+  joint_summary_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  joint_row->addWidget(joint_summary_, 1);
   joint_layout->addLayout(joint_row);
-  joint_chart_ = new ChartWidget(joint_tab_);
-  joint_layout->addWidget(with_legend_strip(joint_chart_, joint_tab_), 1);
+  joint_raised_ = new QLabel(joint_tab_);
+  joint_raised_->setWordWrap(true);
+  joint_raised_->setObjectName("joint_raised");
+  joint_layout->addWidget(joint_raised_);
+  auto* joint_charts = new QHBoxLayout;
+  joint_force_chart_ = new ChartWidget(joint_tab_);
+  joint_moment_chart_ = new ChartWidget(joint_tab_);
+  joint_charts->addWidget(with_legend_strip(joint_force_chart_, joint_tab_));
+  joint_charts->addWidget(with_legend_strip(joint_moment_chart_, joint_tab_));
+  joint_layout->addLayout(joint_charts, 1);
   connect(joint_combo_, qOverload<int>(&QComboBox::currentIndexChanged), this, [this](int joint) {
     refresh_joint_chart();
     if (joint >= 0) emit joint_selected(joint);
@@ -90,17 +110,17 @@ PlotsPanel::PlotsPanel(AppContext& context, QWidget* parent)
   addTab(joint_tab_, tr("Joint loads"));
 
   teaching_ = new TeachingPanel(context_, this);
-  addTab(teaching_, tr("Why it spins (teaching)"));
+  addTab(teaching_, tr("Why it spins"));
   connect(teaching_, &TeachingPanel::seek_requested, this, &PlotsPanel::seek_requested);
 
-  for (ChartWidget* chart : {force_chart_, moment_chart_, joint_chart_})
+  for (ChartWidget* chart : {force_chart_, moment_chart_, joint_force_chart_, joint_moment_chart_})
     connect(chart, &ChartWidget::seek_requested, this, &PlotsPanel::seek_requested);
   context_.workspace().subscribe([this](WorkspaceChange c) { on_workspace(c); });
   on_workspace(WorkspaceChange::kOpened);
 }
 
 std::vector<ChartWidget*> PlotsPanel::charts() const {
-  return {force_chart_, moment_chart_, joint_chart_, teaching_->chart()};
+  return {force_chart_, moment_chart_, joint_force_chart_, joint_moment_chart_, teaching_->chart()};
 }
 
 void PlotsPanel::on_workspace(WorkspaceChange change) {
@@ -112,10 +132,19 @@ void PlotsPanel::on_workspace(WorkspaceChange change) {
     const QSignalBlocker block(joint_combo_);
     joint_combo_->clear();
     if (ws.loaded()) {
-      const BodyModel& model = ws.document().file().model;
-      for (const Segment& s : model.segments)
-        joint_combo_->addItem(
-            qstr(capitalised(joint_label(s.joint)) + " (" + segment_label(s.name) + ")"));
+      // A joint the run shown made pay is named so in the list.
+      const Document& d = ws.document();
+      const BodyModel& model = d.file().model;
+      std::vector<JointLoadRise> rises;
+      if (d.has_optimization())
+        rises =
+            joint_load_rises(model, d.optimization().before.check, d.optimization().after.check);
+      for (int k = 0; k < model.size(); ++k) {
+        const JointLoadRise* rise = k >= 1 && k - 1 < static_cast<int>(rises.size())
+                                        ? &rises[static_cast<std::size_t>(k - 1)]
+                                        : nullptr;
+        joint_combo_->addItem(qstr(joint_choice_label(model, k, rise)));
+      }
       const int knee = model.joint_index("knee_l");
       joint_combo_->setCurrentIndex(
           previous >= 0 && previous < joint_combo_->count() ? previous : std::max(0, knee));
@@ -170,15 +199,43 @@ void PlotsPanel::refresh_joint_chart() {
   if (!ws.loaded() || joint_combo_->currentIndex() < 0) {
     ChartSpec empty;
     empty.title = "Open a motion to see the loads at its joints";
-    joint_chart_->set_chart(empty);
+    joint_force_chart_->set_chart(empty);
+    joint_moment_chart_->set_chart(empty);
+    joint_summary_->clear();
+    joint_raised_->clear();
+    joint_raised_->hide();
+    joint_light_->hide();
     return;
   }
   const Document& d = ws.document();
   const bool optimised = d.has_optimization();
-  joint_chart_->set_chart(joint_load_chart(d.file().model, joint_combo_->currentIndex(),
-                                           d.plot_samples(Stage::kBefore),
-                                           optimised ? &d.plot_samples(Stage::kAfter) : nullptr));
+  const JointLoadView view = joint_load_view(
+      d.file().model, joint_combo_->currentIndex(), d.plot_samples(Stage::kBefore),
+      d.evaluation(Stage::kBefore).check, optimised ? &d.plot_samples(Stage::kAfter) : nullptr,
+      optimised ? &d.evaluation(Stage::kAfter).check : nullptr);
+  joint_force_chart_->set_chart(view.force);
+  joint_moment_chart_->set_chart(view.moment);
+  const Rgb light = strength_light_colour(view.light);
+  joint_light_->setStyleSheet(QString("background: rgb(%1, %2, %3); border-radius: 7px;")
+                                  .arg(static_cast<int>(255 * light.r))
+                                  .arg(static_cast<int>(255 * light.g))
+                                  .arg(static_cast<int>(255 * light.b)));
+  joint_light_->setToolTip(qstr(strength_light_words(view.light)));
+  joint_light_->setVisible(joint_combo_->currentIndex() > 0);
+  joint_summary_->setText(qstr(view.summary));
+  joint_raised_->setText(qstr(view.raised));
+  joint_raised_->setStyleSheet(view.raised_past_limit ? "color: #b00020; font-weight: bold;"
+                                                      : "color: #8a5a00;");
+  joint_raised_->setVisible(!view.raised.empty());
   update_cursors();
+}
+
+QString PlotsPanel::joint_summary() const {
+  return joint_summary_->text();
+}
+
+QString PlotsPanel::joint_raised() const {
+  return joint_raised_->text();
 }
 
 void PlotsPanel::set_time(double t, bool playing) {
@@ -191,7 +248,7 @@ void PlotsPanel::set_time(double t, bool playing) {
 void PlotsPanel::update_cursors() {
   // Cheap: the cursors are Qt widgets over the charts, no chart is redrawn.
   const double t = context_.workspace().loaded() ? time_ : std::nan("");
-  for (ChartWidget* chart : {force_chart_, moment_chart_, joint_chart_})
+  for (ChartWidget* chart : {force_chart_, moment_chart_, joint_force_chart_, joint_moment_chart_})
     chart->set_cursor(t);
 }
 
@@ -229,7 +286,8 @@ bool PlotsPanel::export_figures(const QString& dir, QStringList* written, QStrin
   const std::vector<std::pair<std::string, ChartWidget*>> charts = {
       {stem + "_root_force.png", force_chart_},
       {stem + "_root_moment.png", moment_chart_},
-      {stem + "_joint_loads_" + joint + ".png", joint_chart_},
+      {stem + "_joint_force_" + joint + ".png", joint_force_chart_},
+      {stem + "_joint_moment_" + joint + ".png", joint_moment_chart_},
       {stem + "_rotation_" + std::to_string(teaching_->quantity()->currentIndex() + 1) + ".png",
        teaching_->chart()}};
   try {

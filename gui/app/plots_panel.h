@@ -1,7 +1,8 @@
 #pragma once
 /// @file
 /// The plots under the 3D view, one tab each: the root force and moment (before and after
-/// optimisation), the loads at any joint, and the rotation quantities for teaching. Every chart
+/// optimisation), the loads at any joint as a coach reads them (core/joint_load_view.h), and
+/// the rotation quantities for teaching. Every chart
 /// comes from a core chart builder; this panel picks what to show, keeps the time cursors in
 /// step and exports the charts as figures.
 
@@ -13,6 +14,7 @@
 
 class QCheckBox;
 class QComboBox;
+class QLabel;
 
 namespace saltus::gui {
 
@@ -40,7 +42,13 @@ class PlotsPanel : public QTabWidget, public RemembersSettings {
   std::vector<ChartWidget*> charts() const;
   ChartWidget* force_chart() const { return force_chart_; }
   ChartWidget* moment_chart() const { return moment_chart_; }
-  ChartWidget* joint_chart() const { return joint_chart_; }
+  /// The Joint loads tab's charts: the force (N, % of body weight) and the moment (N·m, % of
+  /// the published maximum for this athlete); its line of peaks and its line on the optimiser's
+  /// rise.
+  ChartWidget* joint_force_chart() const { return joint_force_chart_; }
+  ChartWidget* joint_moment_chart() const { return joint_moment_chart_; }
+  QString joint_summary() const;
+  QString joint_raised() const;
   TeachingPanel* teaching() const { return teaching_; }
   /// Components instead of the resultant |F|, |M| (the default, as in the paper's figures).
   void set_show_components(bool components);
@@ -65,7 +73,11 @@ class PlotsPanel : public QTabWidget, public RemembersSettings {
   QWidget* joint_tab_ = nullptr;
   ChartWidget* force_chart_ = nullptr;
   ChartWidget* moment_chart_ = nullptr;
-  ChartWidget* joint_chart_ = nullptr;
+  ChartWidget* joint_force_chart_ = nullptr;
+  ChartWidget* joint_moment_chart_ = nullptr;
+  QLabel* joint_light_ = nullptr;
+  QLabel* joint_summary_ = nullptr;
+  QLabel* joint_raised_ = nullptr;
   TeachingPanel* teaching_ = nullptr;
   QCheckBox* components_ = nullptr;
   std::array<QCheckBox*, 3> axes_{};

@@ -13,6 +13,7 @@
 #include "app/optimization_runner.h"
 #include "app/optimize_panel.h"
 #include "saltus/evaluation/joint_loads.h"
+#include "saltus/optim/result_standing.h"
 
 namespace saltus::gui {
 
@@ -76,11 +77,11 @@ void RunController::on_workspace(WorkspaceChange change) {
 
 void RunController::show_list() {
   const Workspace& ws = context_.workspace();
-  std::vector<std::string> labels;
-  for (int i = 0; i < ws.runs().size(); ++i)
-    labels.push_back(ws.runs().label(i));
+  std::vector<OptimizePanel::RunRow> rows;
+  for (int i : ws.runs().ranking())
+    rows.push_back({i, ws.runs().label(i, false), ws.runs().label(i, true)});
   const int shown = ws.shown_run() ? *ws.shown_run() : -1;
-  panel_->show_runs(labels, shown);
+  panel_->show_runs(rows, shown);
   if (shown >= 0) {
     const RunRecord& run = ws.runs().at(shown);
     panel_->show_result(result_table(*run.result, run.options));
@@ -183,13 +184,16 @@ void RunController::on_finished(int tag, bool ok, const QString& error) {
   }
   const OptimizationResult& r = *run.result;
   // The joints' verdict beside the root force: a run that zeroes the root force by making a
-  // joint carry many times its input load is not physics to read as the athlete's.
-  const JointLoadRise rise =
-      largest_joint_load_rise(ws.document().file().model, r.before.check, r.after.check);
-  const QString joints =
+  // joint carry many times its input load is not physics to read as the athlete's. In the
+  // words of `saltus optimize`, with its warning when this body does not fly the keyframes
+  // with human joints.
+  const JointLoadRise& rise = run.standing.largest_rise;
+  QString joints =
       rise.joint.empty()
           ? QString()
           : tr(" Joints: %1.").arg(QString::fromStdString(joint_load_verdict_words(rise)));
+  const std::string human = human_joints_warning(r, rise);
+  if (!human.empty()) joints += tr(" Beware: %1.").arg(QString::fromStdString(human));
   const QString outcome = tr("Run %1 %2 after %3 iterations in %4 s: average root force %5 → %6.%7")
                               .arg(run.number)
                               .arg(QString::fromStdString(status_text(r.solve.status)))
@@ -203,10 +207,13 @@ void RunController::on_finished(int tag, bool ok, const QString& error) {
     where = tr(" Shown now (View > After).");
   } else if (ws.shown_run()) {
     const RunRecord& kept = ws.runs().at(*ws.shown_run());
-    where = tr(" Run %1 (%2, %3) stays shown; choose run %4 in the list to see it.")
+    where = tr(" Run %1 (%2, %3%4) stays shown: it ranks higher; choose run %5 in the list to "
+               "see this one.")
                 .arg(kept.number)
                 .arg(QString::fromStdString(status_text(kept.result->solve.status)))
                 .arg(newtons(kept.result->after.metrics.avg_root_force))
+                .arg(kept.standing.joints_within_policy ? tr(", joints within their policy")
+                                                        : QString())
                 .arg(run.number);
   } else {
     where = tr(" Not better than the interpolated keyframes; choose it in the list to see it.");

@@ -156,7 +156,9 @@ void TeachingPanel::set_time(double t) {
   const std::vector<SampleRecord>& samples = d.plot_samples(stage);
   const double forward = samples.empty() ? 1.0 : forward_somersault_sign(samples.front());
   const double somersaults = forward * r.somersaults;
-  const QString direction = somersaults >= 0 ? tr("forward") : tr("backward");
+  const double flight = series.empty() ? 0.0 : forward * series.back().somersaults;
+  const QString direction =
+      somersault_direction(somersaults, flight) == "backward" ? tr("backward") : tr("forward");
   // Where along the flight the drift is now (the checks are per sample of the dense grid).
   double drift_now = 0.0;
   const FlightChecks& checks = d.flight_checks(stage);

@@ -36,7 +36,7 @@ void VideoExporter::ask_and_export() {
   if (!context_.workspace().loaded()) return;
   const QString path =
       QFileDialog::getSaveFileName(context_.window(), tr("Export animation"),
-                                   QDir(context_.last_dir()).filePath("animation.mp4"),
+                                   QDir(context_.save_dir()).filePath("animation.mp4"),
                                    tr("MP4 video (*.mp4);;Animated GIF (*.gif)"));
   if (path.isEmpty()) return;
   // Size, speed and frame rate, with what people usually want preset.
@@ -150,7 +150,7 @@ bool VideoExporter::export_video(const QString& path, const VideoOptions& option
                          tr("ffmpeg failed writing %1: %2").arg(path, output), error);
   }
   if (plan_out) *plan_out = plan;
-  context_.set_last_dir_from(path);
+  context_.note_saved(path);
   return true;
 }
 

@@ -99,7 +99,7 @@ JointLoadView joint_load_view(const BodyModel& model, int segment,
   view.moment.x_title = "time (s)";
   view.moment.y_title = "|M| (N·m)";
   if (published) {
-    view.moment.y2_title = "% of published maximum";
+    view.moment.y2_title = "% of published max";
     view.moment.y2_per_y = 100.0 / strength;
   }
   const bool comparing = after != nullptr;

@@ -72,7 +72,7 @@ void RunList::mark_saved(int index) {
   if (index >= 0 && index < size()) runs_[static_cast<std::size_t>(index)].saved = true;
 }
 
-std::string RunList::label(int index) const {
+std::string RunList::label(int index, bool with_settings) const {
   const RunRecord& run = at(index);
   std::string out =
       (preferred() == index ? "Best · Run " : "Run ") + std::to_string(run.number) + " · ";
@@ -83,8 +83,9 @@ std::string RunList::label(int index) const {
   const std::string joints = rise.joint.empty() ? "" : joint_load_verdict_words(rise);
   out += status_text(r.solve.status) + " after " + std::to_string(r.solve.iterations) +
          " iterations · " + format_number("%.3g", r.before.metrics.avg_root_force) + " → " +
-         format_number("%.3g", r.after.metrics.avg_root_force) + " N · " +
-         (joints.empty() ? "" : joints + " · ") + settings_summary(run.settings);
+         format_number("%.3g", r.after.metrics.avg_root_force) + " N";
+  if (!joints.empty()) out += " · " + joints;
+  if (with_settings) out += " · " + settings_summary(run.settings);
   return out;
 }
 

@@ -61,7 +61,8 @@ class RunList {
   /// One line for the list: "Best · Run 2 · solved after 40 iterations · 118 → 11.2 N · every
   /// joint within 1.27x of its peak load before · relaxed, K = 1, 101 samples" ("Best · " for
   /// preferred() only; the joints in joint_load_verdict_words, as `saltus optimize` says them).
-  std::string label(int index) const;
+  /// `with_settings` false leaves the settings out (the panel's list: they go to its tooltip).
+  std::string label(int index, bool with_settings = true) const;
 
  private:
   std::vector<RunRecord> runs_;

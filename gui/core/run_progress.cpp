@@ -30,7 +30,10 @@ void RunProgress::add(const ProgressInfo& info) {
   // A new solve starts when the stage changes or the solve's own count starts again.
   if (!reports_.empty() && (info.stage != reports_.back().stage ||
                             info.stage_iteration < reports_.back().stage_iteration)) {
-    finished_solves_.push_back(reports_.back().stage_iteration);
+    const ProgressInfo& end = reports_.back();
+    finished_.push_back(
+        {end.stage.kind, end.stage_iteration, end.elapsed_seconds - solve_start_seconds_});
+    solve_start_seconds_ = end.elapsed_seconds;
     solve_start_ = reports_.size();
   }
   reports_.push_back(info);
@@ -77,39 +80,80 @@ std::optional<double> RunProgress::current_solve_left() const {
   return to_go + std::max(1, now.acceptable_iterations);
 }
 
-double RunProgress::mean_solve_iterations() const {
-  if (finished_solves_.empty()) return std::max(1, last().stage_iteration);
-  double sum = 0.0;
-  for (int n : finished_solves_)
-    sum += n;
-  return sum / static_cast<double>(finished_solves_.size());
+std::optional<RunProgress::SolveRecord> RunProgress::typical(SolveStage::Kind kind) const {
+  double iterations = 0.0, seconds = 0.0;
+  int count = 0;
+  for (const SolveRecord& r : finished_)
+    if (r.kind == kind) {
+      iterations += r.iterations;
+      seconds += r.seconds;
+      ++count;
+    }
+  if (count == 0) return std::nullopt;
+  return SolveRecord{kind, static_cast<int>(std::lround(iterations / count)), seconds / count};
 }
 
 std::optional<TimeLeft> RunProgress::time_left() const {
   if (reports_.empty() || last().iteration < 1) return std::nullopt;
   const ProgressInfo& now = last();
-  const std::optional<double> trend = current_solve_left();
-  const double typical = mean_solve_iterations();
-  double current = 0.0;
-  if (trend) {
-    current = *trend;
-  } else if (!finished_solves_.empty()) {
-    current = std::max(0.0, typical - now.stage_iteration);
-  } else {
-    return std::nullopt;  // the first solve, not converging yet: nothing to go by
-  }
-  // The solves that may follow.
-  int most_solves = 0;
   const SolveStage& stage = now.stage;
-  if (stage.kind == SolveStage::Kind::kLevel) {
-    most_solves = stage.max_steps - stage.step + (joints_follow_ ? 2 : 0);
-  } else if (stage.kind == SolveStage::Kind::kJoints) {
-    most_solves = stage.step < stage.max_steps ? 1 : 0;
-  }
-  const double seconds_per_iteration = now.elapsed_seconds / std::max(1, now.iteration);
+  const int done = now.stage_iteration;
+  const double seconds_in = now.elapsed_seconds - solve_start_seconds_;
+  const std::optional<SolveRecord> same = typical(stage.kind);
+  // This solve's pace: its own once it has a few iterations, else that of its kind so far.
+  double pace = 0.0;
+  if (done >= kReportsForTrend)
+    pace = seconds_in / done;
+  else if (same && same->iterations > 0)
+    pace = same->seconds / same->iterations;
+  else if (done > 0)
+    pace = seconds_in / done;
+  else
+    return std::nullopt;
+  // Its iterations left: from its objective's convergence at the least; at the most, as many
+  // as a solve of its kind took in this run, or half as many again as it has taken.
+  const std::optional<double> trend = current_solve_left();
+  if (!trend && !same && done < kReportsForTrend) return std::nullopt;
+  const double least_left = trend ? *trend : 0.0;
+  const double most_left =
+      std::max(least_left, same ? static_cast<double>(same->iterations - done) : 0.5 * done);
+  // The levels so far (finished, and the current one while in the levels): their mean
+  // iterations and pace.
+  double level_iterations = 0.0, level_seconds = 0.0;
+  int levels = 0;
+  for (const SolveRecord& r : finished_)
+    if (r.kind == SolveStage::Kind::kLevel) {
+      level_iterations += r.iterations;
+      level_seconds += r.seconds;
+      ++levels;
+    }
+  const bool in_levels = stage.kind == SolveStage::Kind::kLevel;
+  const double level_pace = (level_seconds + (in_levels ? seconds_in : 0.0)) /
+                            std::max(1.0, level_iterations + (in_levels ? done : 0));
+  const double mean_level_iterations = levels > 0 ? level_iterations / levels : done + most_left;
+  // A joints' try: as long as this run's, or before one has finished, kJointTryIterations
+  // times a level's iterations at its own pace (in the joints) or kJointIterationCost times the
+  // levels' (before them).
+  double joint_try = 0.0;
+  if (const std::optional<SolveRecord> joints = typical(SolveStage::Kind::kJoints))
+    joint_try = joints->seconds;
+  else if (stage.kind == SolveStage::Kind::kJoints)
+    joint_try = std::max(kJointTryIterations * mean_level_iterations, 1.0 * done) * pace;
+  else
+    joint_try = kJointTryIterations * mean_level_iterations * kJointIterationCost * level_pace;
   TimeLeft left;
-  left.least = current * seconds_per_iteration;
-  left.most = (current + most_solves * typical) * seconds_per_iteration;
+  left.least = least_left * pace;
+  left.most = most_left * pace;
+  if (in_levels) {
+    const double level = levels > 0 ? level_seconds / levels : seconds_in + most_left * pace;
+    left.most += (stage.max_steps - stage.step) * level;
+    if (joints_follow_) {
+      left.least += joint_try;
+      left.most += 2 * joint_try;
+    }
+  } else if (stage.kind == SolveStage::Kind::kJoints && stage.step < stage.max_steps) {
+    left.most += joint_try;
+  }
   return left;
 }
 
@@ -117,8 +161,8 @@ std::string RunProgress::time_left_line() const {
   const std::optional<TimeLeft> left = time_left();
   if (!left) return "time left: estimating…";
   const ProgressInfo& now = last();
-  const std::string pace = format_number(" at this run's pace (%.2g s an iteration)",
-                                         now.elapsed_seconds / std::max(1, now.iteration));
+  const std::string pace =
+      format_number(" (at %.2g s an iteration)", now.elapsed_seconds / std::max(1, now.iteration));
   const std::string least = seconds_words(left->least), most = seconds_words(left->most);
   if (least == most) return "about " + least + " s left" + pace;
   return "about " + least + "–" + most + " s left" + pace;

@@ -302,4 +302,11 @@ int BodyLayer::segment_at(int x, int y) {
   return -1;
 }
 
+double BodyLayer::lowest_y() const {
+  double lowest = std::numeric_limits<double>::infinity();
+  for (const auto& actor : segments_)
+    lowest = std::min(lowest, actor->GetBounds()[2]);
+  return lowest;
+}
+
 }  // namespace saltus::gui::scene

@@ -50,6 +50,10 @@ class BodyLayer {
   /// nearest along the line of sight; -1 where none is.
   int segment_at(int x, int y);
 
+  /// The lowest point of the body as posed now (world y, m; its shapes included): where it
+  /// touches a floor.
+  double lowest_y() const;
+
   /// Height of the drawn body standing at the identity pose, m (the cameras frame it).
   double standing_height() const { return standing_height_; }
 

@@ -9,10 +9,13 @@
 #include <vtkTextProperty.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
+#include <cstring>
+#include <optional>
 #include <string>
 
 #include "core/what_if_report.h"
@@ -77,6 +80,7 @@ struct BodyScene::Impl {
   std::optional<SampleRecord> athlete_now;  ///< the motion at the time shown
   scene::BodyLayer what_if_body{renderer};  ///< a what-if flight beside the athlete
   vtkNew<vtkBillboardTextActor3D> what_if_label;
+  std::string what_if_legend;  ///< the legend's line for the gold figure
   std::vector<SampleRecord> what_if_samples;
   std::optional<SampleRecord> what_if_now;  ///< posed, its offset included
   scene::EnvironmentLayer environment{renderer};
@@ -92,7 +96,8 @@ struct BodyScene::Impl {
   double time = 0.0;
   bool video = false;
   std::optional<GlyphTypicals> shared_typicals;
-  double forward_sign = 1.0;  ///< +1 if a positive somersault count is forward
+  double forward_sign = 1.0;              ///< +1 if a positive somersault count is forward
+  double whole_flight_somersaults = 0.0;  ///< the stage's count at landing (its direction)
   std::chrono::steady_clock::time_point last_text;
   Eigen::Vector3d com = Eigen::Vector3d(0, 1, 0);
   std::optional<double> framing_height;  ///< m, else the body's own standing height
@@ -170,12 +175,68 @@ struct BodyScene::Impl {
     return capture_shown() ? Eigen::Vector3d(-capture_offset()) : capture_offset();
   }
 
-  /// Puts a label above a figure posed at `sample` moved by `offset`.
-  static void label_above(vtkBillboardTextActor3D* label, const SampleRecord& sample,
-                          const Eigen::Vector3d& offset) {
-    const Eigen::Vector3d at =
-        sample.com + offset + Eigen::Vector3d(0, top_of(sample) - sample.com.y() + kLabelHeight, 0);
-    label->SetPosition(at.x(), at.y(), at.z());
+  static double bottom_of(const SampleRecord& s) {
+    double bottom = s.com.y();
+    for (const Eigen::Vector3d& p : s.segment_position)
+      bottom = std::min(bottom, p.y());
+    return bottom;
+  }
+
+  /// Puts a label above a figure posed at `sample` moved by `offset`; where that would be drawn
+  /// over the words in the view's corners (the title of a short view), below its feet, else
+  /// beside it at its CoM's height (`side`: -1 to the left on the screen, +1 to the right).
+  void label_above(vtkBillboardTextActor3D* label, const SampleRecord& sample,
+                   const Eigen::Vector3d& offset, int side) {
+    const Eigen::Vector3d centre = sample.com + offset;
+    const Eigen::Vector3d above =
+        centre + Eigen::Vector3d(0, top_of(sample) - sample.com.y() + kLabelHeight, 0);
+    const Eigen::Vector3d below =
+        centre + Eigen::Vector3d(0, bottom_of(sample) - sample.com.y() - 0.5 * kLabelHeight, 0);
+    std::vector<Eigen::Vector3d> places = {above, below};
+    if (const std::optional<Eigen::Vector3d> beside = beside_on_screen(label, centre, side))
+      places.push_back(*beside);
+    for (const Eigen::Vector3d& at : places)
+      if (!over_words(label, at)) {
+        label->SetPosition(at.x(), at.y(), at.z());
+        return;
+      }
+    label->SetPosition(above.x(), above.y(), above.z());
+  }
+
+  /// The world point a label's width away from `at` on the screen, to the `side`, at its depth.
+  std::optional<Eigen::Vector3d> beside_on_screen(vtkBillboardTextActor3D* label,
+                                                  const Eigen::Vector3d& at, int side) {
+    const int* size = renderer->GetSize();
+    if (size[0] <= 0 || size[1] <= 0) return std::nullopt;
+    renderer->SetWorldPoint(at.x(), at.y(), at.z(), 1.0);
+    renderer->WorldToDisplay();
+    double p[3];
+    renderer->GetDisplayPoint(p);
+    const double font = label->GetTextProperty()->GetFontSize();
+    const double width = 0.64 * font * std::strlen(label->GetInput() ? label->GetInput() : "");
+    renderer->SetDisplayPoint(p[0] + side * (0.5 * width + 0.06 * size[0]), p[1], p[2]);
+    renderer->DisplayToWorld();
+    const double* w = renderer->GetWorldPoint();
+    if (!(std::abs(w[3]) > 0.0)) return std::nullopt;
+    return Eigen::Vector3d(w[0] / w[3], w[1] / w[3], w[2] / w[3]);
+  }
+
+  /// Whether a label at `at` (world) would be drawn over the title, the numbers or the legend.
+  bool over_words(vtkBillboardTextActor3D* label, const Eigen::Vector3d& at) {
+    const int* size = renderer->GetSize();
+    if (size[0] <= 0 || size[1] <= 0) return false;
+    renderer->SetWorldPoint(at.x(), at.y(), at.z(), 1.0);
+    renderer->WorldToDisplay();
+    const double* p = renderer->GetDisplayPoint();
+    // The label's box: centred on the point, its text as wide as its characters.
+    const double font = label->GetTextProperty()->GetFontSize();
+    const double half_width = 0.32 * font * std::strlen(label->GetInput() ? label->GetInput() : "");
+    const std::array<double, 4> box{p[0] - half_width, p[0] + half_width, p[1] - 0.2 * font,
+                                    p[1] + 1.2 * font};
+    for (const std::array<double, 4>& words : texts.boxes(renderer))
+      if (box[0] < words[1] && words[0] < box[1] && box[2] < words[3] && words[2] < box[3])
+        return true;
+    return false;
   }
 
   /// Poses the figures beside the athlete, the capture's and the what-if flight's (again after
@@ -183,20 +244,20 @@ struct BodyScene::Impl {
   void place_beside(const SampleRecord& athlete) {
     if (capture_shown() && capture_now) {
       capture_body.pose(*capture_now, capture_offset());
-      label_above(capture_label, *capture_now, capture_offset());
+      label_above(capture_label, *capture_now, capture_offset(), +1);
     }
     what_if_now.reset();
     if (what_if_drawn()) {
       const Eigen::Vector3d offset = what_if_offset();
       SampleRecord s = flight_sample_at(what_if_samples, time);
       what_if_body.pose(s, offset);
-      label_above(what_if_label, s, offset);
+      label_above(what_if_label, s, offset, capture_shown() ? -1 : +1);
       for (Eigen::Vector3d& p : s.segment_position)
         p += offset;
       s.com += offset;
       what_if_now = s;
     }
-    if (figure_beside()) label_above(athlete_label, athlete, Eigen::Vector3d::Zero());
+    if (figure_beside()) label_above(athlete_label, athlete, Eigen::Vector3d::Zero(), -1);
   }
 
   void clear() {
@@ -226,6 +287,8 @@ struct BodyScene::Impl {
     glyphs.build(file.model.size());
     glyphs.set_scales(shared_typicals ? *shared_typicals : d.arrow_typicals());
     forward_sign = samples.empty() ? 1.0 : forward_somersault_sign(samples.front());
+    const std::vector<RotationSample>& turns = d.rotation(stage);
+    whole_flight_somersaults = turns.empty() ? 0.0 : turns.back().somersaults;
     // The cameras look at the athlete from its own take-off axes.
     Eigen::Vector3d forward =
         samples.empty() ? Eigen::Vector3d::UnitZ()
@@ -302,8 +365,7 @@ struct BodyScene::Impl {
     if (options.ghosts) text += "\nPale thin figures: the keyframe poses";
     if (capture_shown())
       text += "\nGrey figure: the motion capture itself (its residual: the grey-green curves)";
-    if (what_if_drawn())
-      text += "\nGold figure: the What if panel's free flight from the same take-off";
+    if (what_if_drawn()) text += "\nGold figure: " + what_if_legend;
     return text;
   }
 
@@ -354,8 +416,10 @@ struct BodyScene::Impl {
         printf_string("Spin %.2f rad/s, inertia I_xx %.2f kg·m², |L| %.1f kg·m²/s\n",
                       tidy(std::abs(r.somersault_rate), 2), r.somersault_inertia,
                       r.angular_momentum.norm()) +
-        printf_string("%.2f somersaults %s, %.2f twists", tidy(std::abs(somersaults), 2),
-                      somersaults >= 0 ? "forward" : "backward", tidy(std::abs(r.twists), 2)));
+        printf_string(
+            "%.2f somersaults %s, %.2f twists", tidy(std::abs(somersaults), 2),
+            somersault_direction(somersaults, forward_sign * whole_flight_somersaults).c_str(),
+            tidy(std::abs(r.twists), 2)));
     texts.set_legend(legend_text());
   }
 
@@ -466,9 +530,11 @@ double BodyScene::residual_force_full_scale() const {
   return impl_->glyphs.force_scale().full_scale();
 }
 
-void BodyScene::set_what_if(std::vector<SampleRecord> samples, const std::string& label) {
+void BodyScene::set_what_if(std::vector<SampleRecord> samples, const std::string& label,
+                            const std::string& legend) {
   Impl& d = *impl_;
   d.what_if_samples = std::move(samples);
+  d.what_if_legend = legend;
   d.what_if_label->SetInput(label.c_str());
   d.apply_visibility();
   d.update_time();

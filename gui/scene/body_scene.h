@@ -85,7 +85,10 @@ class BodyScene {
   /// `label`; an empty vector removes it. It stays across set_document (the What if panel says
   /// when it goes) but is drawn only while its samples fit the document's model. Posed at the
   /// time shown, between its samples.
-  void set_what_if(std::vector<SampleRecord> samples, const std::string& label);
+  /// `legend`: the legend's line for it.
+  void set_what_if(
+      std::vector<SampleRecord> samples, const std::string& label,
+      const std::string& legend = "the What if panel's free flight from the same take-off");
   bool what_if_shown() const;
   /// Where the what-if figure is drawn now, its offset from the flight it flies included (world,
   /// m), and the sample it is posed at; nullopt when it is not drawn.

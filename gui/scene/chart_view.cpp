@@ -33,6 +33,10 @@ namespace saltus::gui {
 
 namespace {
 
+/// The most labels on a chart's y axes and on its time axis (linear_ticks).
+constexpr std::size_t kMaxYLabels = 5;
+constexpr std::size_t kMaxXLabels = 8;
+
 vtkSmartPointer<vtkTable> make_table(const std::string& x_name, const std::string& y_name,
                                      const std::vector<double>& x, const std::vector<double>& y) {
   auto table = vtkSmartPointer<vtkTable>::New();
@@ -95,8 +99,11 @@ struct ChartView::Impl {
     chart->GetLegend()->SetLabelSize(font_points - 2);
   }
 
-  static void set_log_ticks(vtkAxis* axis, const AxisRange& range) {
-    const std::vector<double> ticks = log_ticks(range);
+  /// Labelled ticks of our own on every numeric axis: a log axis a label a decade (log_ticks),
+  /// placed at the exponents it works in; a linear one on 1-2-5 steps with at least two labels
+  /// (linear_ticks: VTK's own left a short plot's axis with a single label).
+  static void set_ticks(vtkAxis* axis, const AxisRange& range, bool log, std::size_t most) {
+    const std::vector<double> ticks = log ? log_ticks(range) : linear_ticks(range, most);
     if (ticks.empty()) {
       axis->SetCustomTickPositions(nullptr, nullptr);
       return;
@@ -104,7 +111,7 @@ struct ChartView::Impl {
     vtkNew<vtkDoubleArray> positions;
     vtkNew<vtkStringArray> labels;
     for (double t : ticks) {
-      positions->InsertNextValue(std::log10(t));
+      positions->InsertNextValue(log ? std::log10(t) : t);
       labels->InsertNextValue(tick_label(t));
     }
     axis->SetCustomTickPositions(positions, labels);
@@ -186,6 +193,8 @@ struct ChartView::Impl {
     bottom->SetVisible(true);
     left_axis->SetVisible(true);
     right_axis->SetVisible(uses_right || linked_right);
+    // One grid, the left axis's: a second one at the right axis's own ticks only crowds it.
+    right_axis->SetGridVisible(false);
     chart->GetAxis(vtkAxis::TOP)->SetVisible(false);
     if (bars) {
       vtkNew<vtkDoubleArray> positions;
@@ -196,12 +205,10 @@ struct ChartView::Impl {
       }
       bottom->SetCustomTickPositions(positions, labels);
     } else {
-      bottom->SetCustomTickPositions(nullptr, nullptr);
+      set_ticks(bottom, x, false, kMaxXLabels);
     }
-    // Log axes: a label a decade (log_ticks), placed at the exponents the axis works in, so
-    // that the labels of a short plot do not run into each other.
-    set_log_ticks(left_axis, spec.log_y ? left : AxisRange{0, 0});
-    set_log_ticks(right_axis, spec.log_y && linked_right ? right : AxisRange{0, 0});
+    set_ticks(left_axis, left, spec.log_y, kMaxYLabels);
+    set_ticks(right_axis, right, spec.log_y && linked_right, kMaxYLabels);
     chart->Update();
   }
 };

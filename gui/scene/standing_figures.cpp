@@ -21,10 +21,13 @@ namespace saltus::gui {
 
 namespace {
 
-/// Figures this many tallest heights apart, centre to centre (arms at the sides span a quarter).
-constexpr double kSpacingPerHeight = 0.55;
+/// Each figure's place is at least this many tallest heights wide, so that its label (about
+/// fifteen characters a line) fits over it; a pose wider than that (lying) gets its own width.
+constexpr double kPlacePerHeight = 0.7;
+/// Room between two poses' extents, tallest heights.
+constexpr double kGapPerHeight = 0.12;
 /// Room above the tallest head for the labels, share of its height.
-constexpr double kLabelRoom = 0.2;
+constexpr double kLabelRoom = 0.3;
 /// The camera: from the front, a little from the right and above, so the face and the body's
 /// depth show. A parallel projection: heights compare as they are, whichever figure is nearer.
 const Eigen::Vector3d kCameraDirection = Eigen::Vector3d(0.35, 0.1, 1.0).normalized();
@@ -104,21 +107,65 @@ void StandingFigures::set_figures(const std::vector<Figure>& figures) {
     tallest = std::max(tallest, standing.back().height());
   }
   if (!(tallest > 0.0)) tallest = 1.7;
-  const double spacing = kSpacingPerHeight * tallest;
+  // Each figure's horizontal extent about its centre: standing, a quarter of its height either
+  // side; posed, its joints' (and a margin for the shapes); at least its label's place.
+  std::vector<std::pair<double, double>> extents;
+  for (std::size_t i = 0; i < figures.size(); ++i) {
+    double lo = -0.25 * tallest, hi = 0.25 * tallest;
+    if (const auto& pose = figures[i].pose) {
+      double mean = 0.0, min_x = std::numeric_limits<double>::infinity(), max_x = -min_x;
+      for (const Eigen::Vector3d& p : pose->segment_position) {
+        mean += p.x();
+        min_x = std::min(min_x, p.x());
+        max_x = std::max(max_x, p.x());
+      }
+      mean /= static_cast<double>(std::max<std::size_t>(1, pose->segment_position.size()));
+      lo = min_x - mean - 0.2 * tallest;
+      hi = max_x - mean + 0.2 * tallest;
+    }
+    extents.emplace_back(std::min(lo, -0.5 * kPlacePerHeight * tallest),
+                         std::max(hi, 0.5 * kPlacePerHeight * tallest));
+  }
+  std::vector<double> centres;
+  double cursor = 0.0;
+  for (const auto& [lo, hi] : extents) {
+    if (!centres.empty()) cursor += kGapPerHeight * tallest;
+    centres.push_back(cursor - lo);
+    cursor = centres.back() + hi;
+  }
   for (std::size_t i = 0; i < figures.size(); ++i) {
     const Figure& f = figures[i];
     const StandingBody& s = standing[i];
-    // The standing pose: every joint at identity, the soles on the floor, side by side.
-    const Eigen::Vector3d offset(static_cast<double>(i) * spacing, -s.lowest_y, 0.0);
+    // The standing pose: every joint at identity, the soles on the floor, side by side. A
+    // flight's pose: centred on its place, then onto the floor by its lowest point.
+    const Eigen::Vector3d offset(centres[i], -s.lowest_y, 0.0);
     SampleRecord pose;
-    for (const Eigen::Vector3d& origin : standing_origins(f.model)) {
-      pose.segment_position.push_back(origin + offset);
-      pose.segment_rotation.push_back(Eigen::Quaterniond::Identity());
+    if (f.pose) {
+      Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+      for (const Eigen::Vector3d& p : f.pose->segment_position)
+        centre += p;
+      centre /= static_cast<double>(std::max<std::size_t>(1, f.pose->segment_position.size()));
+      pose.segment_rotation = f.pose->segment_rotation;
+      for (const Eigen::Vector3d& p : f.pose->segment_position)
+        pose.segment_position.push_back(p +
+                                        Eigen::Vector3d(offset.x() - centre.x(), 0.0, -centre.z()));
+    } else {
+      for (const Eigen::Vector3d& origin : standing_origins(f.model)) {
+        pose.segment_position.push_back(origin + offset);
+        pose.segment_rotation.push_back(Eigen::Quaterniond::Identity());
+      }
     }
     if (m.bodies.size() <= i) m.bodies.push_back(std::make_unique<scene::BodyLayer>(m.renderer));
     scene::BodyLayer& body = *m.bodies[i];
     body.build(f.model, f.grey ? std::optional<Rgb>(kGrey) : std::nullopt);
     body.pose(pose);
+    if (f.pose) {
+      // Onto the floor by its lowest point, shapes included (a head that lands first).
+      const double lowest = body.lowest_y();
+      for (Eigen::Vector3d& p : pose.segment_position)
+        p.y() -= lowest;
+      body.pose(pose);
+    }
     m.heights.push_back(s.height());
 
     auto label = vtkSmartPointer<vtkBillboardTextActor3D>::New();
@@ -133,8 +180,8 @@ void StandingFigures::set_figures(const std::vector<Figure>& figures) {
     m.labels.push_back(label);
   }
   const double reach = 0.25 * tallest;
-  m.x_min = -reach;
-  m.x_max = (figures.empty() ? 0.0 : static_cast<double>(figures.size() - 1) * spacing) + reach;
+  m.x_min = 0.0;
+  m.x_max = figures.empty() ? 0.0 : cursor;
   m.top = (1.0 + kLabelRoom) * tallest;
   m.bottom = -0.08 * tallest;
   // A floor under them, so that heights compare against one ground.

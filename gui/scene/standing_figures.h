@@ -1,15 +1,18 @@
 #pragma once
 /// @file
-/// Athletes standing side by side on one scale (the New athlete dialog's preview): each drawn by
-/// the 3D view's body layer from its model's shapes, in the standing pose (every joint at
-/// identity, the library's standing_origins), feet on one floor, seen from the front a little
-/// from the right, its label above its head. A shorter athlete looks shorter.
+/// Athletes side by side on one scale (the New athlete dialog's previews): each drawn by the 3D
+/// view's body layer from its model's shapes, in the standing pose (every joint at identity, the
+/// library's standing_origins) or in a pose of a flight (its landing: upside down when it lands
+/// upside down), its lowest joint on one floor, seen from the front a little from the right, its
+/// label above it. A shorter athlete looks shorter.
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "saltus/body/body_model.h"
+#include "saltus/evaluation/sampling.h"
 
 class vtkRenderWindow;
 
@@ -23,6 +26,10 @@ class StandingFigures {
     BodyModel model;
     std::string label;
     bool grey = false;
+    /// A pose of a flight (world positions and rotations per segment, e.g. a free flight's
+    /// landing), drawn with its orientation as it is, moved onto its place and the floor; none:
+    /// standing.
+    std::optional<SampleRecord> pose;
   };
 
   StandingFigures();

@@ -98,4 +98,17 @@ void TextLayer::fit(int height) {
   }
 }
 
+std::vector<std::array<double, 4>> TextLayer::boxes(vtkRenderer* renderer) const {
+  std::vector<std::array<double, 4>> out;
+  for (vtkTextActor* t : {title_.Get(), numbers_.Get(), legend_.Get()}) {
+    if (!t->GetVisibility() || !t->GetInput() || !*t->GetInput()) continue;
+    // The box is about the text's anchor (its position, justified): moved to where it is.
+    std::array<double, 4> box{};
+    t->GetBoundingBox(renderer, box.data());
+    const int* at = t->GetPositionCoordinate()->GetComputedDisplayValue(renderer);
+    out.push_back({box[0] + at[0], box[1] + at[0], box[2] + at[1], box[3] + at[1]});
+  }
+  return out;
+}
+
 }  // namespace saltus::gui::scene

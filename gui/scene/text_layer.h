@@ -9,7 +9,9 @@
 #include <vtkSmartPointer.h>
 #include <vtkTextActor.h>
 
+#include <array>
 #include <string>
+#include <vector>
 
 namespace saltus::gui::scene {
 
@@ -25,6 +27,9 @@ class TextLayer {
   void set_visible(bool title, bool numbers, bool legend, bool banner, bool inset_caption);
   /// Text sizes for a view `height` pixels tall.
   void fit(int height);
+  /// The boxes of the words drawn in `renderer`'s corners (title, numbers, legend; the hidden
+  /// ones left out), display pixels {x0, x1, y0, y1}: where no label in the scene may go.
+  std::vector<std::array<double, 4>> boxes(vtkRenderer* renderer) const;
 
  private:
   vtkSmartPointer<vtkTextActor> title_, numbers_, legend_, banner_, inset_caption_;

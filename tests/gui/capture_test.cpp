@@ -209,6 +209,48 @@ TEST_F(CaptureTest, EveryFrameThenPickAutomaticallyIsTheLibrarysPickAndUndoes) {
   EXPECT_EQ(picked(), start);
 }
 
+TEST_F(CaptureTest, TheAdvicesFixIsOneClickAwayAndTheSettingsDialogHasEveryFlagItNames) {
+  // The CMU backflip (MASS's copy) states 0.00833 s per frame, under which its flight does not
+  // fall at g: the library suggests a frame time, and the panel offers it as a button.
+  const QString cmu = SALTUS_EXAMPLES_DIR "/captures/mass-backflip.bvh";
+  QString error;
+  ASSERT_TRUE(window_->open_motion(cmu, &error)) << error.toStdString();
+  QApplication::processEvents();
+  const CaptureFile* first = window_->document().capture();
+  ASSERT_NE(first, nullptr);
+  ASSERT_TRUE(first->import.suggested_frame_time);
+  const double suggested = *first->import.suggested_frame_time;
+  ASSERT_EQ(panel()->fix_buttons().size(), 1u);
+  QPushButton* fix = panel()->fix_buttons().front();
+  EXPECT_TRUE(fix->text().startsWith("Re-import at ")) << fix->text().toStdString();
+  fix->click();
+  QApplication::processEvents();
+  // Imported again at that frame time: the flight now falls at g, and the advice is gone.
+  const CaptureFile* fixed = window_->document().capture();
+  ASSERT_NE(fixed, nullptr);
+  EXPECT_DOUBLE_EQ(fixed->import.frame_time, suggested);
+  EXPECT_NEAR(fixed->import.implied_gravity, 9.81, 0.2 * 9.81);
+  EXPECT_EQ(window_->document().capture_options().import.frame_time, suggested);
+  EXPECT_TRUE(panel()->fix_buttons().empty());
+
+  // Import settings…: the dialog (answered here) starts from the options in use, and the
+  // capture is imported again with what it returns: 8 keyframes.
+  std::optional<double> seen_frame_time;
+  window_->files().set_capture_settings_chooser(
+      [&](const QString&, const CaptureFileOptions& current, double,
+          std::optional<double>) -> std::optional<CaptureFileOptions> {
+        seen_frame_time = current.import.frame_time;
+        CaptureFileOptions chosen = current;
+        chosen.import.keyframe_count = 8;
+        return chosen;
+      });
+  panel()->settings_button()->click();
+  QApplication::processEvents();
+  EXPECT_EQ(seen_frame_time, suggested);
+  EXPECT_EQ(motion().keyframes.size(), 8u);
+  EXPECT_DOUBLE_EQ(window_->document().capture()->import.frame_time, suggested);
+}
+
 TEST_F(CaptureTest, ABvhDroppedOnTheWindowIsImported) {
   QMimeData data;
   data.setUrls({QUrl::fromLocalFile(capture_path())});

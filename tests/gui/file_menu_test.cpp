@@ -19,6 +19,7 @@
 
 #include "app/file_controller.h"
 #include "app/main_window.h"
+#include "app/run_controller.h"
 #include "gui/support/image_checks.h"
 #include "gui/support/menu_actions.h"
 #include "gui/support/open_motion_fixture.h"
@@ -135,10 +136,59 @@ TEST_F(FileMenuTest, SaveMotionWritesTheMotion) {
         return QString::fromStdString(path.string());
       });
   entry("Save motion as…")->trigger();
-  EXPECT_EQ(asked, "Save motion");
+  // The dialog says which motion it writes.
+  EXPECT_EQ(asked, "Save the keyframes as given");
   ASSERT_TRUE(std::filesystem::exists(path));
-  EXPECT_EQ(load_motion_file(path.string()).motion.keyframes.size(),
-            window_->document().file().motion.keyframes.size());
+  const MotionFile saved = load_motion_file(path.string());
+  EXPECT_EQ(saved.motion.keyframes.size(), window_->document().file().motion.keyframes.size());
+  EXPECT_EQ(saved.motion.description, window_->document().file().motion.description);
+  // Without a run, Save given keyframes would write the same: not offered.
+  EXPECT_FALSE(test::menu_action(window_.get(), {"File", "Save given keyframes as…"})->isEnabled());
+}
+
+TEST_F(FileMenuTest, AfterARunSaveMotionWritesTheOptimisedMotionAndGivenKeyframesTheKeyframes) {
+  OptimizeSettings s;
+  s.set("max_iterations", 5);
+  s.set("samples", 31);
+  ASSERT_TRUE(window_->runs().start(s));
+  ASSERT_TRUE(window_->runs().wait(300000));
+  ASSERT_TRUE(window_->runs().show_run(0));
+  QApplication::processEvents();
+  ASSERT_EQ(window_->stage(), Stage::kAfter);
+  const OptimizationResult& run = window_->document().optimization();
+  const std::filesystem::path optimised = saltus::test::temp_path("menu-optimised.motion.json");
+  const std::filesystem::path given = saltus::test::temp_path("menu-given.motion.json");
+  std::filesystem::path next = optimised;
+  QString asked;
+  window_->files().set_save_chooser([&](const QString& title, const QString&, const QString&) {
+    asked = title;
+    return QString::fromStdString(next.string());
+  });
+  // The motion on screen: the run's optimised motion, keyframes at their optimised times, the
+  // spline the result holds, the description kept; evaluated again it is the run's "after".
+  entry("Save optimised motion (run 1) as…")->trigger();
+  EXPECT_EQ(asked,
+            "Save the optimised motion of run 1 (keyframes at their optimised times, with its "
+            "spline)");
+  const MotionFile saved = load_motion_file(optimised.string());
+  ASSERT_TRUE(saved.motion.spline);
+  EXPECT_EQ(saved.motion.description, window_->document().file().motion.description);
+  ASSERT_EQ(saved.motion.keyframes.size(), run.optimized_motion.keyframes.size());
+  for (std::size_t i = 0; i < saved.motion.keyframes.size(); ++i)
+    EXPECT_DOUBLE_EQ(saved.motion.keyframes[i].time, run.after.keyframe_times[i]) << i;
+  EvaluateOptions grid;
+  grid.samples = 31;
+  EXPECT_NEAR(evaluate_motion(saved.motion, saved.model, grid).metrics.avg_root_force,
+              run.after.metrics.avg_root_force, 1e-6 * run.after.metrics.avg_root_force + 1e-9);
+  // Save given keyframes: the keyframes at their given times, no spline.
+  next = given;
+  entry("Save given keyframes as…")->trigger();
+  EXPECT_EQ(asked, "Save the keyframes as given");
+  const MotionFile keyframes = load_motion_file(given.string());
+  EXPECT_FALSE(keyframes.motion.spline);
+  for (std::size_t i = 0; i < keyframes.motion.keyframes.size(); ++i)
+    EXPECT_EQ(keyframes.motion.keyframes[i].time,
+              window_->document().file().motion.keyframes[i].time);
 }
 
 TEST_F(FileMenuTest, SaveResultFolderWritesWhatTheCommandLineWrites) {
@@ -170,7 +220,7 @@ TEST_F(FileMenuTest, ExportEntriesWriteTheirFiles) {
     expect_picture(f.path());
     ++pictures;
   }
-  EXPECT_EQ(pictures, 4);
+  EXPECT_EQ(pictures, 5);  // root force, root moment, joint force, joint moment, rotation
 }
 
 TEST_F(FileMenuTest, ExportMotionAsWritesEveryFormatOfTheLibrary) {

@@ -460,7 +460,7 @@ TEST_F(MainWindowTest, SavesTheResultAndExportsPictures) {
   ASSERT_TRUE(
       window_->plots().export_figures(QString::fromStdString(dir / "plots"), &written, &error))
       << error.toStdString();
-  EXPECT_EQ(written.size(), 4);
+  EXPECT_EQ(written.size(), 5);  // root force, root moment, joint force, joint moment, rotation
   for (const QString& name : written) {
     const QImage plot(QString::fromStdString(dir / "plots") + "/" + name);
     ASSERT_FALSE(plot.isNull()) << name.toStdString();
@@ -525,7 +525,7 @@ TEST_F(MainWindowTest, DisplayOptionsChangeThePicture) {
 }
 
 TEST_F(MainWindowTest, PlotTabsShowJointLoadsAndRotation) {
-  auto* tabs = window_->findChild<QTabWidget*>();
+  QTabWidget* tabs = &window_->plots();
   ASSERT_NE(tabs, nullptr);
   ASSERT_EQ(tabs->count(), 3);
   window_->seek(1.0);

@@ -4,8 +4,9 @@
 // Open model (the unsaved-work prompt, a fresh undo history, the same take-off spin); a height
 // no person has shows the library's message and disables the buttons; a Yeadon measurements file
 // builds an athlete; "Save and compare…" and batch --compare with a model file show the motion
-// on both athletes side by side, on one scale; the source choices, Browse… and Cancel pressed
-// with the mouse do what they say.
+// on both athletes side by side, on one scale; "can this athlete land it?" is said first in the
+// dialog, the compare window and the Model panel, in the library's words; the source choices,
+// Browse… and Cancel pressed with the mouse do what they say.
 
 #include <gtest/gtest.h>
 
@@ -33,7 +34,9 @@
 #include "app/edit_controller.h"
 #include "app/file_controller.h"
 #include "app/main_window.h"
+#include "app/model_panel.h"
 #include "app/new_athlete_dialog.h"
+#include "core/athlete_landing.h"
 #include "gui/support/image_checks.h"
 #include "gui/support/menu_actions.h"
 #include "gui/support/open_motion_fixture.h"
@@ -341,6 +344,61 @@ TEST_F(NewAthleteTest, SaveAndCompareShowsTheMotionOnBothAthletesOnOneScale) {
   EXPECT_LT(junior, 0.85 * adult) << "junior " << junior << ", adult " << adult;
   EXPECT_GT(junior, 0.5 * adult) << "junior " << junior << ", adult " << adult;
   compare->grab_window().save(QString(SALTUS_GUI_CANDIDATE_DIR) + "/compare_two_athletes.png");
+}
+
+TEST_F(NewAthleteTest, CanTheJuniorLandM7IsSaidFirstInTheDialogTheCompareWindowAndTheModelPanel) {
+  // The case: M7 on a 1.45 m, 38 kg junior with the same take-off spin turns 1¾
+  // somersaults and lands 171° off. The dialog, the compare window and the Model panel say so
+  // before anything that could read as success, in the library's words.
+  QString error;
+  ASSERT_TRUE(window_->open_motion(
+      SALTUS_EXAMPLES_DIR "/motions/M7-double-front-one-and-a-half-twists.motion.json", &error))
+      << error.toStdString();
+  NewAthleteDialog* dialog = open_dialog();
+  ASSERT_NE(dialog, nullptr);
+  type_junior(dialog);
+  const AthleteLanding* landing = dialog->landing();
+  ASSERT_NE(landing, nullptr);
+  const AthleteLanding expected = athlete_landing(
+      motion_for_athlete(window_->document().file(), library_junior(), TakeoffRule::kSameSpin),
+      window_->document().evaluate_options());
+  EXPECT_FALSE(landing->lands);
+  EXPECT_EQ(landing->headline, expected.headline);
+  EXPECT_EQ(dialog->landing_headline().toStdString(), expected.headline);
+  EXPECT_TRUE(dialog->landing_headline().startsWith("Does not land it"));
+  EXPECT_NE(dialog->landing_details().indexOf(QString::fromStdString(expected.flight_words)), -1)
+      << dialog->landing_details().toStdString();
+  EXPECT_NE(dialog->landing_details().indexOf(QString::fromStdString(expected.strength_words)), -1);
+  // Both free flights drawn at landing.
+  const QImage landed = dialog->grab_landing();
+  EXPECT_GT(test::blank_check(landed).distinct_colours, 20);
+  QApplication::processEvents();  // the words' new heights laid out
+  dialog->grab().save(QString(SALTUS_GUI_CANDIDATE_DIR) + "/new_athlete_junior_M7.png");
+
+  // Save and compare: each side's verdict leads its title, each free flight drawn beside it.
+  const std::string path = dir_ / "junior.model.json";
+  answer_save_dialog(QString::fromStdString(path));
+  press(dialog->compare_button());
+  CompareWindow* compare = window_->compare().window();
+  ASSERT_NE(compare, nullptr);
+  ASSERT_TRUE(compare->run(1).landing);
+  EXPECT_EQ(compare->run(1).landing->headline, expected.headline);
+  EXPECT_NE(compare->title(1).indexOf("Does not land it"), -1) << compare->title(1).toStdString();
+  EXPECT_NE(compare->title(0).indexOf("Lands it"), -1) << compare->title(0).toStdString();
+  compare->resize(1366, 768);
+  compare->seek(compare->run(0).document->duration());
+  QApplication::processEvents();
+  compare->grab_window().save(QString(SALTUS_GUI_CANDIDATE_DIR) + "/compare_junior_M7.png");
+  window_->compare().close();
+
+  // The Model panel with the junior in use says it too.
+  ASSERT_TRUE(window_->files().open_model(QString::fromStdString(path), &error))
+      << error.toStdString();
+  window_->show_model_panel();
+  QApplication::processEvents();
+  const QString said = window_->edits().model_panel()->landing_text();
+  EXPECT_NE(said.indexOf("Can this athlete land it?"), -1) << said.toStdString();
+  EXPECT_NE(said.indexOf("Does not land it"), -1) << said.toStdString();
 }
 
 TEST_F(NewAthleteTest, BatchCompareWithAModelFileShowsTwoAthletes) {

@@ -162,7 +162,7 @@ TEST_F(PanelButtonsTest, PlotsBoxesRedrawTheRootCharts) {
   ASSERT_TRUE(window_->runs().show_run(0));
   QApplication::processEvents();
   const int before = redrawn.count();
-  press<QCheckBox>(&window_->plots(), "Log scale for before/after");
+  press<QCheckBox>(&window_->plots(), "Log scale");
   EXPECT_EQ(redrawn.count(), before + 1);
 }
 

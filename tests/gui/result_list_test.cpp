@@ -1,15 +1,17 @@
-// The result list in the real window: every run is kept; a solved run stays shown when a later
-// run is cancelled or stops worse; the user can pick any run with a result; Save writes the run
-// shown. A run's message says what it asked of the joints. (The case: a cancelled run
-// at 90 N replaced a solved 13.1 N one.)
+// The result list in the real window: every run is kept, best first; a solved run stays shown
+// when a later run is cancelled or stops worse; the user can pick any run with a result; Save
+// writes the run shown. A run's message says what it asked of the joints. (The case: a
+// cancelled run at 90 N replaced a solved 13.1 N one.)
 
 #include <gtest/gtest.h>
 
 #include <QApplication>
 #include <QElapsedTimer>
+#include <QLabel>
 #include <QListWidget>
 #include <QProgressBar>
 #include <QTest>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -74,16 +76,20 @@ TEST_F(ResultListTest, ASolvedRunStaysShownWhateverComesAfter) {
   const int cancelled = run(300, 0);
   ASSERT_EQ(runs().size(), 3);
   EXPECT_EQ(window_->workspace().shown_run(), solved);
-  (void)cancelled;
 
-  // The list shows every run plus "interpolation only", the shown one selected.
-  QListWidget* list = window_->runs().panel()->run_list();
+  // The list shows every run plus "interpolation only", best first, the shown one selected and
+  // called best; the cancelled run called so.
+  OptimizePanel* panel = window_->runs().panel();
+  QListWidget* list = panel->run_list();
   ASSERT_EQ(list->count(), 4);
-  EXPECT_EQ(list->currentRow(), solved + 1);
-  EXPECT_NE(list->item(solved + 1)->text().indexOf("solved"), -1);
+  EXPECT_EQ(panel->row_of_run(solved), 1);
+  EXPECT_EQ(list->currentRow(), 1);
+  EXPECT_TRUE(list->item(1)->text().startsWith("Best · Run 1 · solved"))
+      << list->item(1)->text().toStdString();
+  EXPECT_NE(list->item(panel->row_of_run(cancelled))->text().indexOf("cancelled"), -1);
 
   // The user picks the early run: it is shown, and Save writes that one.
-  list->setCurrentRow(early + 1);
+  list->setCurrentRow(panel->row_of_run(early));
   QApplication::processEvents();
   EXPECT_EQ(window_->workspace().shown_run(), early);
   EXPECT_EQ(window_->stage(), Stage::kAfter);
@@ -110,6 +116,29 @@ TEST_F(ResultListTest, TheProgressShowsIterationsNotAShareOfTheLimit) {
   ASSERT_NE(bar, nullptr);
   // Busy while running: a run that solves at 33 of 300 never looks 11 % done.
   EXPECT_EQ(bar->maximum(), 0);
+  // While it goes: the stage in the library's words, the iteration, the time left and what the
+  // objective means.
+  OptimizePanel* panel = window_->runs().panel();
+  QElapsedTimer waited;
+  waited.start();
+  while (window_->runs().running() && panel->progress().reports() < 6 && waited.elapsed() < 60000)
+    QApplication::processEvents(QEventLoop::AllEvents, 5);
+  ASSERT_TRUE(panel->progress().started());
+  const ProgressInfo first = panel->progress().last();
+  EXPECT_EQ(first.stage.kind, SolveStage::Kind::kLevel);
+  std::string stage = solve_stage_words(first.stage);
+  stage[0] = static_cast<char>(std::toupper(stage[0]));
+  EXPECT_NE(panel->message().indexOf(QString::fromStdString(stage)), -1)
+      << panel->message().toStdString();
+  EXPECT_NE(panel->message().indexOf("iteration "), -1) << panel->message().toStdString();
+  auto* time_left = panel->findChild<QLabel*>("optimise_time_left");
+  auto* objective = panel->findChild<QLabel*>("optimise_objective");
+  ASSERT_NE(time_left, nullptr);
+  ASSERT_NE(objective, nullptr);
+  EXPECT_TRUE(time_left->text().contains("left") || time_left->text().contains("estimating"))
+      << time_left->text().toStdString();
+  EXPECT_EQ(objective->text().toStdString(), objective_meaning_words(first.stage));
+  panel->grab().save(QString(SALTUS_GUI_CANDIDATE_DIR) + "/optimise_panel_running.png");
   ASSERT_TRUE(window_->runs().wait(300000));
   EXPECT_EQ(bar->value(), bar->maximum());
 }

@@ -66,7 +66,7 @@ TEST_F(SaveButtonsTest, SaveMotionWritesTheEditedMotionThroughTheDialog) {
   answer_save_dialog(QString::fromStdString(path.string()));
   press(window_->edits().keyframe_panel(), "Save motion…");
   EXPECT_EQ(asked_, 1);
-  EXPECT_EQ(title_, "Save motion");
+  EXPECT_EQ(title_, "Save the keyframes as edited");
   ASSERT_TRUE(std::filesystem::exists(path));
 
   // Read back by the library: the edited keyframes, not the ones opened.

@@ -136,7 +136,7 @@ class SegmentPickTest : public test::OpenMotionTest {
 const QColor kOutline(115, 242, 255);
 
 TEST_F(SegmentPickTest, ClickOnASegmentSelectsItsJointAndHighlightsIt) {
-  auto* tabs = window_->findChild<QTabWidget*>();
+  QTabWidget* tabs = &window_->plots();
   ASSERT_NE(tabs, nullptr);
   // Opened on the root plots, the joint plot at the left knee, nothing highlighted.
   EXPECT_EQ(tabs->currentIndex(), 0);
@@ -205,7 +205,7 @@ TEST_F(SegmentPickTest, ChoosingAnotherJointInTheListMovesTheHighlight) {
   const std::vector<int> targets = visible_segments(1);
   ASSERT_EQ(targets.size(), 1u);
   click(centre_on_screen(targets[0]));
-  auto* tabs = window_->findChild<QTabWidget*>();
+  QTabWidget* tabs = &window_->plots();
   auto* joint_list = tabs->widget(1)->findChild<QComboBox*>();
   ASSERT_NE(joint_list, nullptr);
   const int other = (targets[0] + 1) % model().size();

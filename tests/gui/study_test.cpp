@@ -105,6 +105,9 @@ std::vector<std::string> row_cells(const QTableWidget* table, int row) {
   return cells;
 }
 
+/// The largest niceness a process can have (nice(2)).
+constexpr int kMaxNiceness = 19;
+
 /// The niceness of process `pid` (field 19 of /proc/PID/stat).
 int niceness(qint64 pid) {
   std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
@@ -202,7 +205,10 @@ TEST_F(StudyTest, RunsAStudyBesideTheViewAndShowsItsResults) {
   const int jobs = arguments.indexOf("--jobs");
   ASSERT_GE(jobs, 0) << arguments.join(' ').toStdString();
   EXPECT_EQ(arguments.at(jobs + 1).toInt(), StudyController::default_jobs());
-  EXPECT_EQ(niceness(studies().process_id()), niceness(getpid()) + StudyController::kStudyNiceness);
+  // nice(2) adds to the caller's own niceness and caps it at 19: the test may itself run niced
+  // (`nice -n 10 ctest`), so the expectation is worked out from its own.
+  EXPECT_EQ(niceness(studies().process_id()),
+            std::min(kMaxNiceness, niceness(getpid()) + StudyController::kStudyNiceness));
   expect_panel_in_front();
   expect_view_unobscured();
 

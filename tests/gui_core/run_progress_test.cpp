@@ -54,17 +54,15 @@ TEST(RunProgress, SaysTheStageTheCountAndWhatTheObjectiveMeans) {
 }
 
 TEST(RunProgress, AConvergingSolveIsWorkedOutToItsAcceptableExit) {
-  // Relative change 0.1 falling by half an iteration: below 1e-3 after log2(100) = 6.6 more
-  // iterations past the 8th, then 3 acceptable ones.
   RunProgress progress(false);
   for (const ProgressInfo& p : solve({SolveStage::Kind::kLevel, 1, 1, false}, 8, 0, 0.1, 0.5))
     progress.add(p);
   const auto left = progress.time_left();
   ASSERT_TRUE(left);
   // The change at iteration 8 is 0.1·0.5^8 = 3.9e-4, already below 1e-3: only the acceptable
-  // iterations remain.
+  // iterations remain at the least; at the most half as many again as it has taken (4).
   EXPECT_NEAR(left->least, 3 * kSecondsPerIteration, 1e-6);
-  EXPECT_NEAR(left->most, left->least, 1e-9);  // one level at most, no joints
+  EXPECT_NEAR(left->most, 4 * kSecondsPerIteration, 1e-6);
 
   RunProgress early(false);
   for (const ProgressInfo& p : solve({SolveStage::Kind::kLevel, 1, 1, false}, 5, 0, 1.0, 0.5))
@@ -75,27 +73,33 @@ TEST(RunProgress, AConvergingSolveIsWorkedOutToItsAcceptableExit) {
               1e-6);
 }
 
-TEST(RunProgress, LaterSolvesCountAtTheRunsMeanSolveLengthBetweenNoneAndAllThatMayFollow) {
+TEST(RunProgress, LaterSolvesCountAtThisRunsOwnSolvesBetweenNoneAndAllThatMayFollow) {
   RunProgress progress;  // joints follow the levels
   for (const ProgressInfo& p : solve(kLevel1, 30, 0, 0.1, 0.8))
     progress.add(p);
   for (const ProgressInfo& p : solve(kLevel2, 2, 30, 0.5, 1.0))
     progress.add(p);
-  // Level 2 has not converged yet (two reports): as long as the first solve, 30 iterations,
-  // of which 2 are done; then at most one more level and two joints' tries of 30 each.
-  const auto left = progress.time_left();
+  // Level 2 after two iterations, not converging yet: at the most as long as level 1 (30
+  // iterations, 28 to go), then one more level (6 s) and two joints' tries; at the least one
+  // try. A try before one has run: 1.5 times a level's 30 iterations at 5 times the levels'
+  // pace (0.2 s): 45 s.
+  const double pace = kSecondsPerIteration;
+  const double joint_try = kJointTryIterations * 30 * kJointIterationCost * pace;
+  auto left = progress.time_left();
   ASSERT_TRUE(left);
-  EXPECT_NEAR(left->least, 28 * kSecondsPerIteration, 1e-6);
-  EXPECT_NEAR(left->most, (28 + 3 * 30) * kSecondsPerIteration, 1e-6);
-  EXPECT_NE(progress.time_left_line().find("s left at this run's pace (0.2 s an iteration)"),
-            std::string::npos)
+  EXPECT_NEAR(left->least, joint_try, 1e-6);
+  EXPECT_NEAR(left->most, 28 * pace + 30 * pace + 2 * joint_try, 1e-6);
+  EXPECT_NE(progress.time_left_line().find("s left (at 0.2 s an iteration)"), std::string::npos)
       << progress.time_left_line();
-  // In the joints' first try: one more try at most.
-  for (const ProgressInfo& p : solve(kJoints1, 2, 32, 0.5, 1.0))
+  // Six iterations into the joints' first try, not converging: at the most half as many again
+  // (3), then one more try as long as 1.5 times the levels' mean (16 iterations: 30 and 2) at
+  // its own pace.
+  for (const ProgressInfo& p : solve(kJoints1, 6, 32, 0.5, 1.0))
     progress.add(p);
-  ASSERT_TRUE(progress.time_left());
-  EXPECT_NEAR(progress.time_left()->most - progress.time_left()->least,
-              (30.0 + 2.0) / 2.0 * kSecondsPerIteration, 1e-6);
+  left = progress.time_left();
+  ASSERT_TRUE(left);
+  EXPECT_NEAR(left->least, 0.0, 1e-9);
+  EXPECT_NEAR(left->most, 3 * pace + kJointTryIterations * 16 * pace, 1e-6);
 }
 
 TEST(RunProgress, NoEstimateBeforeThereIsAnythingToGoBy) {

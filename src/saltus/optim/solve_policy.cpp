@@ -124,12 +124,11 @@ std::string solve_stage_words(const SolveStage& stage) {
 
 std::string objective_meaning_words(const SolveStage& stage) {
   if (stage.kind == SolveStage::Kind::kJoints)
-    return "The objective now adds least joint effort (every joint's moment squared over the "
-           "flight, weighted) to the root force and moment: a new problem, so its value starts "
-           "higher than the level's and falls as the joints work less.";
-  return "The objective is the root force and moment squared over the flight plus small terms "
-         "that keep the keyframes and the joints near the given motion. Each stage is a new "
-         "problem on other knots or terms: it starts again from its own value, so a jump "
+    return "The objective now adds least joint effort (the joints' moments squared) to the root "
+           "force and moment: a new problem, so it starts higher and falls as the joints work "
+           "less.";
+  return "The objective: the root force and moment squared over the flight, plus small terms "
+         "for the keyframes and joints. Each stage is a new problem and starts again: a jump "
          "between stages is no failure.";
 }
 
