@@ -210,7 +210,9 @@ void CompareWindow::set_runs(Run first, Run second, bool keep_time) {
                    .arg(l.lands ? "#1e7a34" : "#b00020",
                         QString::fromStdString(l.headline).toHtmlEscaped(),
                         QString::fromStdString(l.flight_words).toHtmlEscaped());
-      for (const std::string& warning : l.warnings)
+      std::vector<std::string> warnings = l.over_strength;
+      warnings.insert(warnings.end(), l.warnings.begin(), l.warnings.end());
+      for (const std::string& warning : warnings)
         title += tr("<br><span style='color:#b00020'>⚠ %1</span>")
                      .arg(QString::fromStdString(warning).toHtmlEscaped());
       scenes_[i]->scene().set_what_if(

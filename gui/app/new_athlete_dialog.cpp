@@ -278,8 +278,7 @@ void NewAthleteDialog::refresh_landing() {
   try {
     if (!current_landing_) current_landing_ = athlete_landing(*open_, options_);
     if (draft_.model)
-      landing_ = athlete_landing(motion_for_athlete(*open_, *draft_.model, TakeoffRule::kSameSpin),
-                                 options_);
+      landing_ = athlete_landing(motion_on_athlete(*open_, *draft_.model), options_);
   } catch (const std::exception& e) {
     landing_headline_->setText(qstr(e.what()));
     return;
@@ -309,11 +308,13 @@ void NewAthleteDialog::refresh_landing() {
   details << qstr(l.flight_words) + ".";
   details << tr("In use (%1): %2.").arg(qstr(open_->model.name), qstr(current_landing_->headline));
   details << tr("<span style=\"color: rgb(%1, %2, %3);\">●</span> Joints of the keyframes "
-                "on this body: %4 (%5).")
+                "on this body: %4.")
                  .arg(static_cast<int>(255 * light.r))
                  .arg(static_cast<int>(255 * light.g))
                  .arg(static_cast<int>(255 * light.b))
-                 .arg(qstr(l.strength_words), qstr(strength_light_words(l.strength_light)));
+                 .arg(qstr(l.strength_words).toHtmlEscaped());
+  for (const std::string& line : l.over_strength)
+    details << tr("<span style=\"color: #b00020;\">⚠ %1</span>").arg(qstr(line).toHtmlEscaped());
   landing_details_->setText(details.join("<br>"));
 }
 

@@ -14,6 +14,7 @@
 #include "app/chart_widget.h"
 #include "app/legend_strip.h"
 #include "app/qt_text.h"
+#include "app/strength_strips.h"
 #include "app/teaching_panel.h"
 #include "core/figures.h"
 #include "core/joint_load_view.h"
@@ -109,6 +110,18 @@ PlotsPanel::PlotsPanel(AppContext& context, QWidget* parent)
   });
   addTab(joint_tab_, tr("Joint loads"));
 
+  // Every joint's share of the athlete's strength over the flight, a strip each.
+  strength_ = new StrengthStrips(this);
+  addTab(strength_, tr("Strength"));
+  connect(strength_, &StrengthStrips::seek_requested, this, &PlotsPanel::seek_requested);
+  connect(strength_, &StrengthStrips::joint_chosen, this, [this](int segment) {
+    const QSignalBlocker block(joint_combo_);
+    joint_combo_->setCurrentIndex(segment);
+    refresh_joint_chart();
+    emit joint_selected(segment);
+  });
+  connect(strength_, &StrengthStrips::joint_opened, this, &PlotsPanel::show_joint);
+
   teaching_ = new TeachingPanel(context_, this);
   addTab(teaching_, tr("Why it spins"));
   connect(teaching_, &TeachingPanel::seek_requested, this, &PlotsPanel::seek_requested);
@@ -152,6 +165,7 @@ void PlotsPanel::on_workspace(WorkspaceChange change) {
     refresh_root_charts();
     refresh_joint_chart();
   }
+  refresh_strength();
   teaching_->refresh();
 }
 
@@ -230,6 +244,21 @@ void PlotsPanel::refresh_joint_chart() {
   update_cursors();
 }
 
+void PlotsPanel::refresh_strength() {
+  const Workspace& ws = context_.workspace();
+  if (!ws.loaded()) {
+    strength_->set_strips({}, QString());
+    return;
+  }
+  // The stage the 3D view shows.
+  const Document& d = ws.document();
+  const Stage stage = d.available(ws.stage());
+  strength_->set_strips(
+      strength_strips(d.file().model, d.plot_samples(stage), d.evaluation(stage).check),
+      stage == Stage::kAfter ? tr("the optimised motion") : tr("the interpolated keyframes"));
+  strength_->set_time(time_);
+}
+
 QString PlotsPanel::joint_summary() const {
   return joint_summary_->text();
 }
@@ -250,6 +279,7 @@ void PlotsPanel::update_cursors() {
   const double t = context_.workspace().loaded() ? time_ : std::nan("");
   for (ChartWidget* chart : {force_chart_, moment_chart_, joint_force_chart_, joint_moment_chart_})
     chart->set_cursor(t);
+  strength_->set_time(t);
 }
 
 void PlotsPanel::show_joint(int segment) {

@@ -1,10 +1,10 @@
 #pragma once
 /// @file
 /// The plots under the 3D view, one tab each: the root force and moment (before and after
-/// optimisation), the loads at any joint as a coach reads them (core/joint_load_view.h), and
-/// the rotation quantities for teaching. Every chart
-/// comes from a core chart builder; this panel picks what to show, keeps the time cursors in
-/// step and exports the charts as figures.
+/// optimisation), the loads at any joint as a coach reads them (core/joint_load_view.h), every
+/// joint's share of the athlete's strength as strips, and the rotation quantities for teaching.
+/// Every chart comes from a core chart builder; this panel picks what to show, keeps the time
+/// cursors in step and exports the charts as figures.
 
 #include <QStringList>
 #include <QTabWidget>
@@ -19,6 +19,7 @@ class QLabel;
 namespace saltus::gui {
 
 class ChartWidget;
+class StrengthStrips;
 class TeachingPanel;
 
 class PlotsPanel : public QTabWidget, public RemembersSettings {
@@ -42,14 +43,15 @@ class PlotsPanel : public QTabWidget, public RemembersSettings {
   std::vector<ChartWidget*> charts() const;
   ChartWidget* force_chart() const { return force_chart_; }
   ChartWidget* moment_chart() const { return moment_chart_; }
-  /// The Joint loads tab's charts: the force (N, % of body weight) and the moment (N·m, % of
-  /// the published maximum for this athlete); its line of peaks and its line on the optimiser's
-  /// rise.
+  /// The Joint loads tab's charts: the force (N, % of body weight) and the moment (N·m, and its
+  /// share of the athlete's strength); its line of peaks and its line on the optimiser's rise.
   ChartWidget* joint_force_chart() const { return joint_force_chart_; }
   ChartWidget* joint_moment_chart() const { return joint_moment_chart_; }
   QString joint_summary() const;
   QString joint_raised() const;
   TeachingPanel* teaching() const { return teaching_; }
+  /// The Strength tab: every joint's share of the athlete's strength over the flight.
+  StrengthStrips* strength() const { return strength_; }
   /// Components instead of the resultant |F|, |M| (the default, as in the paper's figures).
   void set_show_components(bool components);
   /// Log scale for the magnitudes, so that the small "after" curve shows next to "before".
@@ -67,6 +69,7 @@ class PlotsPanel : public QTabWidget, public RemembersSettings {
   void on_workspace(WorkspaceChange change);
   void refresh_root_charts();
   void refresh_joint_chart();
+  void refresh_strength();
   void update_cursors();
 
   AppContext& context_;
@@ -78,6 +81,7 @@ class PlotsPanel : public QTabWidget, public RemembersSettings {
   QLabel* joint_light_ = nullptr;
   QLabel* joint_summary_ = nullptr;
   QLabel* joint_raised_ = nullptr;
+  StrengthStrips* strength_ = nullptr;
   TeachingPanel* teaching_ = nullptr;
   QCheckBox* components_ = nullptr;
   std::array<QCheckBox*, 3> axes_{};

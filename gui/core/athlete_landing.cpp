@@ -6,7 +6,7 @@
 #include "saltus/base/text_format.h"
 #include "saltus/body/segment_names.h"
 #include "saltus/evaluation/joint_loads.h"
-#include "saltus/evaluation/joint_strength.h"
+#include "saltus/evaluation/strength_demand.h"
 #include "saltus/evaluation/what_if.h"
 #include "saltus/optim/result_standing.h"
 
@@ -37,16 +37,26 @@ AthleteLanding athlete_landing(const MotionFile& on_athlete, const EvaluateOptio
                           out.landing_error_deg) +
                 format_number(" (more than %.0f° off)", out.tolerance_deg);
 
-  // The joints against this athlete's strength: the run's optimised motion, else the keyframes.
+  // The joints against this athlete's strength: the run's optimised motion, else the keyframes;
+  // in the words `saltus evaluate` and `optimize` print.
   const DenseCheck check =
       run ? run->after.check : evaluate_motion(on_athlete.motion, on_athlete.model, options).check;
-  const std::vector<JointMomentShare> shares = joint_moment_shares(on_athlete.model, check);
-  for (const JointMomentShare& share : shares)
+  const BodyModel& model = on_athlete.model;
+  for (int k = 1; k < model.size() && k < static_cast<int>(check.strength_peaks.size()); ++k) {
+    const JointStrengthPeak& peak = check.strength_peaks[static_cast<std::size_t>(k)];
+    const std::optional<double> share =
+        peak.coordinate >= 0 ? std::optional<double>(peak.share) : std::nullopt;
     out.joints.push_back(
-        {capitalised(joint_label(share.joint)), share.share, strength_light(share.share)});
-  out.strength_words = joint_moment_share_words(shares);
-  const std::optional<JointMomentShare> largest = largest_joint_moment_share(shares);
-  out.strength_light = strength_light(largest ? largest->share : std::nullopt);
+        {capitalised(joint_label(model.segments[static_cast<std::size_t>(k)].joint)), share,
+         strength_light(share)});
+  }
+  out.strength_words = strength_verdict_words(model, check.strength_peaks);
+  out.over_strength = over_strength_lines(model, check.strength_peaks);
+  const int largest = largest_strength_share(check.strength_peaks);
+  out.strength_light = strength_light(
+      largest > 0
+          ? std::optional<double>(check.strength_peaks[static_cast<std::size_t>(largest)].share)
+          : std::nullopt);
 
   if (run) {
     const JointLoadRise rise =

@@ -23,7 +23,7 @@ namespace saltus::gui {
 /// One joint's peak moment against the athlete's strength.
 struct JointStrengthRow {
   std::string joint;            ///< "Left knee", as people name it
-  std::optional<double> share;  ///< of the published maximum; none without one
+  std::optional<double> share;  ///< of the athlete's strength; none without a curve
   StrengthLight light = StrengthLight::kUnknown;
 };
 
@@ -43,10 +43,13 @@ struct AthleteLanding {
   std::string sentence;
   double landing_error_deg = 0.0;  ///< whole body at landing against the last keyframe
   SimulationResult flight;         ///< the free flight (its last sample: the landing pose)
-  /// The joints' peak moments (of the optimised motion with a run, else of the keyframes'
-  /// interpolation on this body) against the published maxima for this athlete.
+  /// The joints' largest shares of this athlete's strength (of the optimised motion with a run,
+  /// else of the keyframes' interpolation on this body; evaluation/strength_demand.h).
   std::vector<JointStrengthRow> joints;
-  std::string strength_words;  ///< joint_moment_share_words, as the CLI prints it
+  /// strength_verdict_words and over_strength_lines, as `saltus evaluate` and `optimize` print
+  /// them: "2 joints beyond the athlete's strength (largest: …)", one line per such joint.
+  std::string strength_words;
+  std::vector<std::string> over_strength;
   StrengthLight strength_light = StrengthLight::kUnknown;  ///< of the largest share
   /// With a run on this athlete: joint_load_verdict_words when a joint pays, and
   /// human_joints_warning when this body does not fly the keyframes with human joints.
@@ -54,7 +57,7 @@ struct AthleteLanding {
 };
 
 /// The check for `on_athlete` (the motion already carried over to the athlete:
-/// load_motion_for_athlete or motion_for_athlete; or the motion on its own model); `run`, a
+/// load_motion_for_athlete or motion_on_athlete; or the motion on its own model); `run`, a
 /// result of optimising that motion on that body, adds its joints and warnings. Throws like
 /// the library for bad options.
 AthleteLanding athlete_landing(const MotionFile& on_athlete, const EvaluateOptions& options,

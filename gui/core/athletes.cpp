@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <stdexcept>
 
 #include "saltus/base/input_error.h"
 #include "saltus/body/mass_properties.h"
@@ -87,6 +88,16 @@ std::string athlete_label(const MotionFile& file) {
                                               : "take-off: " + rule);
   }
   return label;
+}
+
+MotionFile motion_on_athlete(const MotionFile& own, const BodyModel& athlete) {
+  if (athlete.size() != own.model.size())
+    throw std::invalid_argument("the athlete's model has " + std::to_string(athlete.size()) +
+                                " segments, the motion's " + std::to_string(own.model.size()));
+  MotionFile on = own;
+  on.model = athlete;
+  on.takeoff_adaptation.reset();
+  return adapt_takeoff_to_athlete(own, std::move(on), TakeoffRule::kSameSpin);
 }
 
 }  // namespace saltus::gui

@@ -51,6 +51,12 @@ std::string athlete_figures(const BodyModel& model);
 /// The model's standing height (standing_body) and mass: "1.45 m 38 kg".
 std::string athlete_size(const BodyModel& model);
 
+/// The open motion `own` flown by `athlete` (a model not saved yet, e.g. New athlete's): its
+/// keyframes and take-off CoM state, the angular momentum carried over by the same spin, as
+/// `saltus simulate --model` carries it (adapt_takeoff_to_athlete). std::invalid_argument when
+/// the athlete's model has other segments than the motion's.
+MotionFile motion_on_athlete(const MotionFile& own, const BodyModel& athlete);
+
 /// Who flies the motion, for legends and titles: the model's name, standing height and mass,
 /// and, when the motion was made for another athlete, the rule that carried its take-off over:
 /// "junior 1.45 m 38 kg, same take-off spin".

@@ -6,8 +6,8 @@
 #include "core/plot_series.h"
 #include "saltus/base/text_format.h"
 #include "saltus/body/segment_names.h"
-#include "saltus/evaluation/joint_strength.h"
 #include "saltus/evaluation/residual_measures.h"
+#include "saltus/evaluation/strength_demand.h"
 
 namespace saltus::gui {
 
@@ -21,12 +21,15 @@ std::optional<JointLoadRise> rise_of(const BodyModel& model, int segment, const 
   return std::nullopt;
 }
 
+std::string stage_label(const std::string& what, int stage, bool comparing) {
+  return what + (comparing ? (stage == 0 ? " before" : " after") : "");
+}
+
 /// One magnitude of the joint's load over the samples, labelled and styled as before/after.
 LineSpec load_line(const std::vector<SampleRecord>& samples, int segment, bool moment, int stage,
                    bool comparing) {
   LineSpec line;
-  line.label =
-      std::string(moment ? "|M|" : "|F|") + (comparing ? (stage == 0 ? " before" : " after") : "");
+  line.label = stage_label(moment ? "|M|" : "|F|", stage, comparing);
   line.colour = magnitude_curve_colour(moment);
   for (const SampleRecord& r : samples) {
     const auto& wrench = r.joint_wrench.at(static_cast<std::size_t>(segment));
@@ -35,6 +38,34 @@ LineSpec load_line(const std::vector<SampleRecord>& samples, int segment, bool m
   }
   style_compared_line(line, stage == 1, comparing);
   return line;
+}
+
+/// The joint's share of strength over the samples, in %, on the right axis.
+LineSpec share_line(const std::vector<SampleRecord>& samples, int segment, int stage,
+                    bool comparing) {
+  LineSpec line;
+  line.label = stage_label("% of strength", stage, comparing);
+  line.colour = strength_light_colour(StrengthLight::kAmber);
+  line.right_axis = true;
+  for (const SampleRecord& r : samples) {
+    line.x.push_back(r.time);
+    line.y.push_back(static_cast<std::size_t>(segment) < r.strength_share.size()
+                         ? 100.0 * r.strength_share[static_cast<std::size_t>(segment)]
+                         : 0.0);
+  }
+  style_compared_line(line, stage == 1, comparing);
+  return line;
+}
+
+/// The joint's strength peak in a check, none where no direction has a curve.
+const JointStrengthPeak* strength_peak(const DenseCheck& check, int segment) {
+  if (segment < 1 || segment >= static_cast<int>(check.strength_peaks.size())) return nullptr;
+  const JointStrengthPeak& p = check.strength_peaks[static_cast<std::size_t>(segment)];
+  return p.coordinate >= 0 ? &p : nullptr;
+}
+
+std::string percent_words(double share) {
+  return format_number("%.0f %%", 100.0 * share);
 }
 
 }  // namespace
@@ -49,15 +80,15 @@ StrengthLight strength_light(const std::optional<double>& share) {
 std::string strength_light_words(StrengthLight light) {
   switch (light) {
     case StrengthLight::kGreen:
-      return "within its strength";
+      return "within the athlete's strength";
     case StrengthLight::kAmber:
-      return "near its maximum";
+      return "near the athlete's maximum";
     case StrengthLight::kRed:
-      return "beyond its maximum";
+      return "beyond the athlete's strength";
     case StrengthLight::kUnknown:
       break;
   }
-  return "no published maximum";
+  return "no strength curve";
 }
 
 Rgb strength_light_colour(StrengthLight light) {
@@ -74,6 +105,16 @@ Rgb strength_light_colour(StrengthLight light) {
   return {0.55, 0.55, 0.55};
 }
 
+Rgb strength_share_colour(double share) {
+  const Rgb full = strength_light_colour(strength_light(share));
+  // Green pales towards white as the share falls to 0, so that effort shows as colour.
+  if (share >= kAmberShare) return full;
+  const double k = std::clamp(share / kAmberShare, 0.0, 1.0);
+  const double white = 0.85 * (1.0 - k);
+  return {full.r + white * (1.0 - full.r), full.g + white * (1.0 - full.g),
+          full.b + white * (1.0 - full.b)};
+}
+
 JointLoadView joint_load_view(const BodyModel& model, int segment,
                               const std::vector<SampleRecord>& before,
                               const DenseCheck& before_check,
@@ -86,8 +127,8 @@ JointLoadView joint_load_view(const BodyModel& model, int segment,
       root ? "the world must supply at the " + segment_label(s.name)
            : "at the " + joint_label(s.joint) + " (on the " + segment_label(s.name) + ")";
   const double weight = body_weight_N(model);
-  const PublishedJointMoment* published = root ? nullptr : published_joint_moment(s.joint);
-  const double strength = published ? published->max_moment_per_kg * model.total_mass() : 0.0;
+  const bool covered =
+      strength_peak(before_check, segment) || (after_check && strength_peak(*after_check, segment));
 
   JointLoadView view;
   view.force.title = "Force " + where;
@@ -98,16 +139,14 @@ JointLoadView joint_load_view(const BodyModel& model, int segment,
   view.moment.title = "Moment " + where;
   view.moment.x_title = "time (s)";
   view.moment.y_title = "|M| (N·m)";
-  if (published) {
-    view.moment.y2_title = "% of published max";
-    view.moment.y2_per_y = 100.0 / strength;
-  }
+  if (covered) view.moment.y2_title = "% of strength";
   const bool comparing = after != nullptr;
   for (int stage = 0; stage < 2; ++stage) {
     const std::vector<SampleRecord>* samples = stage == 0 ? &before : after;
     if (!samples) continue;
     view.force.lines.push_back(load_line(*samples, segment, false, stage, comparing));
     view.moment.lines.push_back(load_line(*samples, segment, true, stage, comparing));
+    if (covered) view.moment.lines.push_back(share_line(*samples, segment, stage, comparing));
   }
 
   // The peaks of the stage shown, from its dense check.
@@ -120,15 +159,14 @@ JointLoadView joint_load_view(const BodyModel& model, int segment,
                    format_number(" at %.3f s", peak.force_time_s) + " · peak moment " +
                    format_number("%.3g N·m", peak.moment_Nm) +
                    format_number(" at %.3f s", peak.moment_time_s);
-    if (published) {
-      view.share = peak.moment_Nm / strength;
-      view.summary += format_number(": %.0f %% of the published maximum for this athlete",
-                                    100.0 * *view.share) +
-                      format_number(" (%.3g N·m/kg", published->max_moment_per_kg) +
-                      format_number(" × %.3g kg", model.total_mass()) +
-                      format_number(" = %.3g N·m, ", strength) + published->direction + ")";
+    if (const JointStrengthPeak* strength = strength_peak(shown, segment)) {
+      view.share = strength->share;
+      view.summary += " · largest share of the athlete's strength " +
+                      percent_words(strength->share) + " (" +
+                      strength_direction_words(model, segment, *strength) +
+                      format_number(" at t = %.2f s)", strength->time_s);
     } else if (!root) {
-      view.summary += " (no published maximum for this joint)";
+      view.summary += " (no strength curve for this joint)";
     }
     view.light = strength_light(view.share);
   }
@@ -159,6 +197,31 @@ std::string joint_choice_label(const BodyModel& model, int segment, const JointL
   if (rise && rise->ratio() > kJointLoadRiseLimit)
     label += format_number(" — %.2fx its peak before", rise->ratio());
   return label;
+}
+
+std::vector<StrengthStrip> strength_strips(const BodyModel& model,
+                                           const std::vector<SampleRecord>& samples,
+                                           const DenseCheck& check) {
+  std::vector<StrengthStrip> strips;
+  for (int k = 1; k < model.size(); ++k) {
+    const JointStrengthPeak* peak = strength_peak(check, k);
+    if (!peak) continue;
+    StrengthStrip strip;
+    strip.segment = k;
+    strip.joint = capitalised(joint_label(model.segments[static_cast<std::size_t>(k)].joint));
+    for (const SampleRecord& r : samples) {
+      strip.times.push_back(r.time);
+      strip.shares.push_back(static_cast<std::size_t>(k) < r.strength_share.size()
+                                 ? r.strength_share[static_cast<std::size_t>(k)]
+                                 : 0.0);
+    }
+    strip.peak = peak->share;
+    strip.peak_time_s = peak->time_s;
+    strip.peak_words = strength_direction_words(model, k, *peak) + " " +
+                       percent_words(peak->share) + format_number(" at %.2f s", peak->time_s);
+    strips.push_back(std::move(strip));
+  }
+  return strips;
 }
 
 }  // namespace saltus::gui

@@ -39,8 +39,10 @@
 #include "app/plots_panel.h"
 #include "app/run_controller.h"
 #include "app/scene_widget.h"
+#include "app/strength_strips.h"
 #include "app/timeline_widget.h"
 #include "app/view_controller.h"
+#include "core/joint_load_view.h"
 #include "gui/support/image_checks.h"
 #include "gui_core/test_motion.h"
 #include "saltus/evaluation/apparatus.h"
@@ -527,7 +529,7 @@ TEST_F(MainWindowTest, DisplayOptionsChangeThePicture) {
 TEST_F(MainWindowTest, PlotTabsShowJointLoadsAndRotation) {
   QTabWidget* tabs = &window_->plots();
   ASSERT_NE(tabs, nullptr);
-  ASSERT_EQ(tabs->count(), 3);
+  ASSERT_EQ(tabs->count(), 4);  // root, joint loads, strength, why it spins
   window_->seek(1.0);
   // Every tab and every rotation quantity draws something; the pictures are left next to the
   // build for a person to look at.
@@ -545,6 +547,65 @@ TEST_F(MainWindowTest, PlotTabsShowJointLoadsAndRotation) {
       picture.save(QString(SALTUS_GUI_CANDIDATE_DIR) + QString("/tab%1_%2.png").arg(tab).arg(v));
     }
   }
+}
+
+TEST_F(MainWindowTest, StrengthTabDrawsEachJointsShareAndAClickGoesToThatJointAndTime) {
+  PlotsPanel& plots = window_->plots();
+  StrengthStrips* strips = plots.strength();
+  ASSERT_NE(strips, nullptr);
+  plots.setCurrentWidget(strips);
+  QApplication::processEvents();
+  // A strip per joint with a strength curve: the library's shares of the motion shown.
+  const Document& d = window_->document();
+  const Stage stage = d.available(window_->stage());
+  const std::vector<StrengthStrip> expected =
+      strength_strips(d.file().model, d.plot_samples(stage), d.evaluation(stage).check);
+  ASSERT_FALSE(expected.empty());
+  ASSERT_EQ(strips->strips().size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(strips->strips()[i].segment, expected[i].segment);
+    EXPECT_EQ(strips->strips()[i].shares, expected[i].shares);
+  }
+  // Each strip is drawn in the colour of its share: at the sample of its largest share, the
+  // pixel in the middle of its row is that share's colour (red above 100 %).
+  const QImage picture = strips->grab().toImage();
+  const double duration = expected.front().times.back();
+  for (const StrengthStrip& strip : strips->strips()) {
+    SCOPED_TRACE(strip.joint);
+    const QRect row = strips->row_rect(strip.segment);
+    ASSERT_GT(row.height(), 2);
+    const std::size_t top =
+        std::max_element(strip.shares.begin(), strip.shares.end()) - strip.shares.begin();
+    if (top + 1 >= strip.times.size()) continue;
+    // The middle of the segment from that sample to the next, drawn with the larger share.
+    const double t = 0.5 * (strip.times[top] + strip.times[top + 1]);
+    const int x = row.left() + static_cast<int>(row.width() * t / duration);
+    const Rgb want = strength_share_colour(std::max(strip.shares[top], strip.shares[top + 1]));
+    // Samples may be closer than a pixel: the colour is within two pixels of there.
+    bool found = false;
+    for (int dx = -2; dx <= 2 && !found; ++dx) {
+      const QColor got = picture.pixelColor(x + dx, row.center().y());
+      found = std::abs(got.redF() - want.r) < 0.02 && std::abs(got.greenF() - want.g) < 0.02 &&
+              std::abs(got.blueF() - want.b) < 0.02;
+    }
+    EXPECT_TRUE(found) << "share " << strip.shares[top] << " at x " << x;
+  }
+  // A click in the last strip at 40 % of the flight: that time, that joint, still this tab.
+  const StrengthStrip& last = strips->strips().back();
+  const QRect row = strips->row_rect(last.segment);
+  QTest::mouseClick(strips, Qt::LeftButton, {},
+                    QPoint(row.left() + static_cast<int>(0.4 * row.width()), row.center().y()));
+  EXPECT_NEAR(window_->time(), 0.4 * duration, 2.0 * duration / row.width());
+  EXPECT_EQ(plots.selected_joint(), last.segment);
+  EXPECT_EQ(plots.currentWidget(), strips);
+  // A click on the first joint's name opens its loads.
+  const StrengthStrip& first = strips->strips().front();
+  QTest::mouseClick(strips, Qt::LeftButton, {},
+                    QPoint(5, strips->row_rect(first.segment).center().y()));
+  EXPECT_EQ(plots.selected_joint(), first.segment);
+  EXPECT_NE(plots.currentWidget(), strips);
+  EXPECT_NE(plots.joint_summary().indexOf("share of the athlete's strength"), -1)
+      << plots.joint_summary().toStdString();
 }
 
 TEST_F(MainWindowTest, DroppedMotionFileOpensAndAModelFileIsUsed) {

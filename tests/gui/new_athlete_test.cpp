@@ -359,9 +359,9 @@ TEST_F(NewAthleteTest, CanTheJuniorLandM7IsSaidFirstInTheDialogTheCompareWindowA
   type_junior(dialog);
   const AthleteLanding* landing = dialog->landing();
   ASSERT_NE(landing, nullptr);
-  const AthleteLanding expected = athlete_landing(
-      motion_for_athlete(window_->document().file(), library_junior(), TakeoffRule::kSameSpin),
-      window_->document().evaluate_options());
+  const AthleteLanding expected =
+      athlete_landing(motion_on_athlete(window_->document().file(), library_junior()),
+                      window_->document().evaluate_options());
   EXPECT_FALSE(landing->lands);
   EXPECT_EQ(landing->headline, expected.headline);
   EXPECT_EQ(dialog->landing_headline().toStdString(), expected.headline);

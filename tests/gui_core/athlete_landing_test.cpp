@@ -9,7 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "saltus/evaluation/joint_strength.h"
+#include "core/athletes.h"
+#include "saltus/evaluation/strength_demand.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/optim/result_standing.h"
 #include "saltus/use_cases/athlete_models.h"
@@ -41,7 +42,7 @@ TEST(AthleteLanding, M7LandsOnItsOwnBody) {
 }
 
 TEST(AthleteLanding, AJuniorWithTheSameSpinDoesNotAndTheCheckSaysSoFirst) {
-  const MotionFile on_junior = motion_for_athlete(m7(), junior(), TakeoffRule::kSameSpin);
+  const MotionFile on_junior = motion_on_athlete(m7(), junior());
   const EvaluateOptions options;
   const AthleteLanding check = athlete_landing(on_junior, options);
   EXPECT_FALSE(check.lands);
@@ -62,18 +63,23 @@ TEST(AthleteLanding, AJuniorWithTheSameSpinDoesNotAndTheCheckSaysSoFirst) {
   EXPECT_TRUE(check.flight.samples.back().segment_rotation[0].isApprox(
       simulated.samples.back().segment_rotation[0]));
   // The joints against the junior's strength, in the CLI's words.
-  const std::vector<JointMomentShare> shares = joint_moment_shares(
-      on_junior.model, evaluate_motion(on_junior.motion, on_junior.model, options).check);
-  EXPECT_EQ(check.strength_words, joint_moment_share_words(shares));
-  ASSERT_EQ(check.joints.size(), shares.size());
-  for (std::size_t i = 0; i < shares.size(); ++i) {
-    EXPECT_EQ(check.joints[i].share, shares[i].share);
-    EXPECT_EQ(check.joints[i].light, strength_light(shares[i].share));
+  const DenseCheck strength = evaluate_motion(on_junior.motion, on_junior.model, options).check;
+  EXPECT_EQ(check.strength_words, strength_verdict_words(on_junior.model, strength.strength_peaks));
+  EXPECT_EQ(check.over_strength, over_strength_lines(on_junior.model, strength.strength_peaks));
+  ASSERT_EQ(check.joints.size(), static_cast<std::size_t>(on_junior.model.size() - 1));
+  for (int k = 1; k < on_junior.model.size(); ++k) {
+    const JointStrengthPeak& peak = strength.strength_peaks[static_cast<std::size_t>(k)];
+    const JointStrengthRow& row = check.joints[static_cast<std::size_t>(k - 1)];
+    EXPECT_EQ(row.share.has_value(), peak.coordinate >= 0) << k;
+    if (row.share) {
+      EXPECT_EQ(*row.share, peak.share) << k;
+    }
+    EXPECT_EQ(row.light, strength_light(row.share)) << k;
   }
 }
 
 TEST(AthleteLanding, ARunOnTheAthleteAddsTheWarningsOfSaltusOptimize) {
-  const MotionFile on_junior = motion_for_athlete(m7(), junior(), TakeoffRule::kSameSpin);
+  const MotionFile on_junior = motion_on_athlete(m7(), junior());
   // A run whose left hip carries 3.52x its input and whose bounded try lands 171° off.
   OptimizationResult run;
   run.before = evaluate_motion(on_junior.motion, on_junior.model, EvaluateOptions{});

@@ -1,18 +1,20 @@
-// The Joint loads tab (core/joint_load_view.h): the curves are the library's joint loads, the
-// second axes are % of body weight and % of the published maximum for this athlete, the line
-// says the dense check's peaks in those terms with a traffic light, and a joint the optimiser
-// raised is marked where its raised peak is, in the words of `saltus optimize`.
+// The Joint loads and Strength tabs (core/joint_load_view.h): the curves are the library's joint
+// loads and its shares of the athlete's strength (strength_demand.h), the force's second axis is
+// % of body weight, the line says the dense check's peaks in those terms with a traffic light,
+// a joint the optimiser raised is marked where its raised peak is, in the words of `saltus
+// optimize`, and every joint with a strength curve has a strip.
 
 #include "core/joint_load_view.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #include "core/document.h"
 #include "gui_core/test_motion.h"
-#include "saltus/evaluation/joint_strength.h"
 #include "saltus/evaluation/residual_measures.h"
+#include "saltus/evaluation/strength_demand.h"
 
 namespace saltus::gui {
 namespace {
@@ -25,53 +27,59 @@ class JointLoadViewTest : public ::testing::Test {
   Document document_;
 };
 
-TEST_F(JointLoadViewTest, CurvesAreTheJointsLoadsWithBodyWeightAndStrengthAxes) {
+TEST_F(JointLoadViewTest, CurvesAreTheJointsLoadsAndItsShareOfTheAthletesStrength) {
   const int knee = model().joint_index("knee_l");
   const JointLoadView view =
       joint_load_view(model(), knee, before().samples, before().check, nullptr, nullptr);
   ASSERT_EQ(view.force.lines.size(), 1u);
-  ASSERT_EQ(view.moment.lines.size(), 1u);
+  ASSERT_EQ(view.moment.lines.size(), 2u);  // |M| and its share of strength
   for (std::size_t k = 0; k < before().samples.size(); ++k) {
-    EXPECT_DOUBLE_EQ(view.force.lines[0].y[k],
-                     before().samples[k].joint_wrench[knee].head<3>().norm());
-    EXPECT_DOUBLE_EQ(view.moment.lines[0].y[k],
-                     before().samples[k].joint_wrench[knee].tail<3>().norm());
+    const SampleRecord& r = before().samples[k];
+    EXPECT_DOUBLE_EQ(view.force.lines[0].y[k], r.joint_wrench[knee].head<3>().norm());
+    EXPECT_DOUBLE_EQ(view.moment.lines[0].y[k], r.joint_wrench[knee].tail<3>().norm());
+    EXPECT_DOUBLE_EQ(view.moment.lines[1].y[k], 100.0 * r.strength_share[knee]);
   }
+  EXPECT_TRUE(view.moment.lines[1].right_axis);
   // Named as people name it.
   EXPECT_NE(view.moment.title.find("left knee"), std::string::npos) << view.moment.title;
   EXPECT_EQ(view.moment.title.find("knee_l"), std::string::npos) << view.moment.title;
   // % of body weight: 100 % at m·g.
   EXPECT_DOUBLE_EQ(view.force.y2_per_y * body_weight_N(model()), 100.0);
-  // % of the published maximum: the knee's per kg times this athlete's mass is 100 %.
-  const PublishedJointMoment* knee_max = published_joint_moment("knee_l");
-  ASSERT_NE(knee_max, nullptr);
-  EXPECT_NEAR(view.moment.y2_per_y * knee_max->max_moment_per_kg * model().total_mass(), 100.0,
-              1e-9);
-  // The share is the library's (joint_moment_shares), with its traffic light.
-  for (const JointMomentShare& share : joint_moment_shares(model(), before().check))
-    if (share.joint == "knee_l") {
-      ASSERT_TRUE(view.share && share.share);
-      EXPECT_NEAR(*view.share, *share.share, 1e-12);
-    }
+  // The largest share is the dense check's, with its traffic light and its direction's words.
+  const JointStrengthPeak& peak = before().check.strength_peaks[knee];
+  ASSERT_GE(peak.coordinate, 0);
+  ASSERT_TRUE(view.share);
+  EXPECT_EQ(*view.share, peak.share);
   EXPECT_EQ(view.light, strength_light(view.share));
-  const JointLoadPeak& peak = before().check.joint_peaks[knee];
+  EXPECT_NE(view.summary.find(strength_direction_words(model(), knee, peak)), std::string::npos)
+      << view.summary;
+  const JointLoadPeak& load = before().check.joint_peaks[knee];
   char force[64];
-  std::snprintf(force, sizeof force, "Peak force %.3g N (%.0f %% of body weight)", peak.force_N,
-                100.0 * peak.force_N / body_weight_N(model()));
+  std::snprintf(force, sizeof force, "Peak force %.3g N (%.0f %% of body weight)", load.force_N,
+                100.0 * load.force_N / body_weight_N(model()));
   EXPECT_EQ(view.summary.rfind(force, 0), 0u) << view.summary;
-  EXPECT_NE(view.summary.find("of the published maximum for this athlete"), std::string::npos);
   EXPECT_TRUE(view.raised.empty());
-  // A joint without a published maximum says so and has no second moment axis.
-  const int neck = model().joint_index("thoracic");
-  if (neck >= 0 && !published_joint_moment("thoracic")) {
-    const JointLoadView no_max =
-        joint_load_view(model(), neck, before().samples, before().check, nullptr, nullptr);
-    EXPECT_FALSE(no_max.share);
-    EXPECT_EQ(no_max.moment.y2_per_y, 0.0);
-    EXPECT_EQ(no_max.light, StrengthLight::kUnknown);
-  }
   EXPECT_THROW(joint_load_view(model(), 99, before().samples, before().check, nullptr, nullptr),
                std::out_of_range);
+}
+
+TEST_F(JointLoadViewTest, EveryJointWithAStrengthCurveHasAStrip) {
+  const std::vector<StrengthStrip> strips =
+      strength_strips(model(), before().samples, before().check);
+  int covered = 0;
+  for (int k = 1; k < model().size(); ++k)
+    covered += before().check.strength_peaks[k].coordinate >= 0;
+  ASSERT_EQ(static_cast<int>(strips.size()), covered);
+  ASSERT_FALSE(strips.empty());
+  for (const StrengthStrip& strip : strips) {
+    SCOPED_TRACE(strip.joint);
+    ASSERT_EQ(strip.shares.size(), before().samples.size());
+    for (std::size_t i = 0; i < strip.shares.size(); ++i)
+      EXPECT_EQ(strip.shares[i], before().samples[i].strength_share[strip.segment]);
+    EXPECT_EQ(strip.peak, before().check.strength_peaks[strip.segment].share);
+    // The dense check's peak is at least every sampled share (it looks between the samples).
+    EXPECT_GE(strip.peak + 1e-9, *std::max_element(strip.shares.begin(), strip.shares.end()));
+  }
 }
 
 TEST_F(JointLoadViewTest, AJointTheOptimiserRaisedIsMarkedWhereItsPeakIs) {
@@ -81,7 +89,7 @@ TEST_F(JointLoadViewTest, AJointTheOptimiserRaisedIsMarkedWhereItsPeakIs) {
   raised.joint_peaks[hip].moment_time_s = 0.42;
   const JointLoadView view =
       joint_load_view(model(), hip, before().samples, before().check, &before().samples, &raised);
-  ASSERT_EQ(view.moment.lines.size(), 2u);  // before and after
+  ASSERT_EQ(view.moment.lines.size(), 4u);  // before and after, each with its share of strength
   EXPECT_TRUE(view.raised_past_limit);
   EXPECT_EQ(view.summary.rfind("After optimisation: peak force", 0), 0u) << view.summary;
   ASSERT_EQ(view.moment.markers.size(), 1u);
@@ -103,13 +111,17 @@ TEST_F(JointLoadViewTest, AJointTheOptimiserRaisedIsMarkedWhereItsPeakIs) {
   EXPECT_TRUE(small.moment.markers.empty());
 }
 
-TEST(StrengthLight, GreenAmberRedByTheShareOfTheMaximum) {
+TEST(StrengthLight, GreenAmberRedByTheShareOfTheAthletesStrength) {
   EXPECT_EQ(strength_light(std::nullopt), StrengthLight::kUnknown);
   EXPECT_EQ(strength_light(0.3), StrengthLight::kGreen);
   EXPECT_EQ(strength_light(kAmberShare), StrengthLight::kAmber);
   EXPECT_EQ(strength_light(1.0), StrengthLight::kAmber);
   EXPECT_EQ(strength_light(1.01), StrengthLight::kRed);
-  EXPECT_EQ(strength_light_words(StrengthLight::kRed), "beyond its maximum");
+  EXPECT_EQ(strength_light_words(StrengthLight::kRed), "beyond the athlete's strength");
+  // Red above 100 %, amber near it, green paler towards 0.
+  const Rgb red = strength_light_colour(StrengthLight::kRed);
+  EXPECT_EQ(strength_share_colour(1.3).r, red.r);
+  EXPECT_GT(strength_share_colour(0.05).g, strength_share_colour(0.7).g);
 }
 
 }  // namespace
