@@ -15,6 +15,7 @@
 #include "app/main_window.h"
 #include "app/plots_panel.h"
 #include "app/run_controller.h"
+#include "app/strength_strips.h"
 #include "app/teaching_panel.h"
 #include "app/twist_panel.h"
 #include "core/figures.h"
@@ -144,6 +145,9 @@ int show_motion(const CommandLine& c) {
       if (!rise.joint.empty()) joint = d.file().model.joint_index(rise.joint);
     }
     window.plots().show_joint(joint);
+    QApplication::processEvents();
+  } else if (c.panel == "strength") {
+    window.plots().setCurrentWidget(window.plots().strength());
     QApplication::processEvents();
   } else if (c.panel == "model") {
     window.show_model_panel();

@@ -13,6 +13,7 @@
 #include "app/optimization_runner.h"
 #include "app/optimize_panel.h"
 #include "saltus/evaluation/joint_loads.h"
+#include "saltus/evaluation/strength_demand.h"
 #include "saltus/optim/result_standing.h"
 
 namespace saltus::gui {
@@ -194,6 +195,11 @@ void RunController::on_finished(int tag, bool ok, const QString& error) {
           : tr(" Joints: %1.").arg(QString::fromStdString(joint_load_verdict_words(rise)));
   const std::string human = human_joints_warning(r, rise);
   if (!human.empty()) joints += tr(" Beware: %1.").arg(QString::fromStdString(human));
+  // And what the optimised motion asks of the athlete's strength, as `saltus optimize` says it:
+  // a run within its joint policy may still ask more than the athlete's muscles can give.
+  joints += tr(" Strength: %1.")
+                .arg(QString::fromStdString(strength_verdict_words(ws.document().file().model,
+                                                                   r.after.check.strength_peaks)));
   const QString outcome = tr("Run %1 %2 after %3 iterations in %4 s: average root force %5 → %6.%7")
                               .arg(run.number)
                               .arg(QString::fromStdString(status_text(r.solve.status)))

@@ -1,7 +1,9 @@
 #include "app/strength_strips.h"
 
+#include <QHelpEvent>
 #include <QMouseEvent>
 #include <QPainter>
+#include <QToolTip>
 #include <algorithm>
 
 #include "app/qt_text.h"
@@ -14,6 +16,7 @@ constexpr int kNameWidth = 120;  ///< the joints' names, px
 constexpr int kPeakWidth = 56;   ///< the largest share at a row's end, px
 constexpr int kTitleHeight = 22;
 constexpr int kAxisHeight = 18;
+constexpr int kWordsHeight = 18;  ///< the chosen joint's words under the time axis
 constexpr int kMinRow = 9;
 
 QColor colour(const Rgb& c) {
@@ -39,6 +42,15 @@ void StrengthStrips::set_strips(std::vector<StrengthStrip> strips, const QString
   for (const StrengthStrip& s : strips_)
     if (!s.times.empty()) duration_ = std::max(duration_, s.times.back());
   if (!(duration_ > 0.0)) duration_ = 1.0;
+  // The words stay with the joint chosen; else they are the largest share's.
+  const auto kept = std::find_if(strips_.begin(), strips_.end(),
+                                 [this](const StrengthStrip& s) { return s.segment == chosen_; });
+  if (kept == strips_.end()) {
+    const auto largest = std::max_element(
+        strips_.begin(), strips_.end(),
+        [](const StrengthStrip& a, const StrengthStrip& b) { return a.peak < b.peak; });
+    chosen_ = largest == strips_.end() ? -1 : largest->segment;
+  }
   updateGeometry();
   update();
 }
@@ -49,17 +61,17 @@ void StrengthStrips::set_time(double t) {
 }
 
 QSize StrengthStrips::sizeHint() const {
-  return {600, kTitleHeight + kAxisHeight +
+  return {600, kTitleHeight + kAxisHeight + kWordsHeight +
                    14 * static_cast<int>(std::max<std::size_t>(1, strips_.size()))};
 }
 
 QSize StrengthStrips::minimumSizeHint() const {
-  return {300, kTitleHeight + kAxisHeight + kMinRow * 4};
+  return {300, kTitleHeight + kAxisHeight + kWordsHeight + kMinRow * 4};
 }
 
 QRect StrengthStrips::plot_area() const {
   return QRect(kNameWidth, kTitleHeight, std::max(10, width() - kNameWidth - kPeakWidth),
-               std::max(10, height() - kTitleHeight - kAxisHeight));
+               std::max(10, height() - kTitleHeight - kAxisHeight - kWordsHeight));
 }
 
 double StrengthStrips::x_of(double t) const {
@@ -125,6 +137,15 @@ void StrengthStrips::paintEvent(QPaintEvent*) {
   }
   p.drawText(QRect(area.right() + 4, area.bottom() + 2, kPeakWidth, kAxisHeight),
              Qt::AlignLeft | Qt::AlignVCenter, tr("t (s)"));
+  // The chosen joint's largest share in words, red beyond the athlete's strength.
+  for (const StrengthStrip& strip : strips_)
+    if (strip.segment == chosen_) {
+      const QRect words(4, area.bottom() + kAxisHeight, width() - 8, kWordsHeight);
+      p.setPen(strip.peak > 1.0 ? colour(strength_light_colour(StrengthLight::kRed))
+                                : palette().text().color());
+      p.drawText(words, Qt::AlignLeft | Qt::AlignVCenter,
+                 metrics.elidedText(chosen_words(), Qt::ElideRight, words.width()));
+    }
   QPen cursor(Qt::black);
   cursor.setWidth(2);
   p.setPen(cursor);
@@ -139,14 +160,39 @@ void StrengthStrips::mousePressEvent(QMouseEvent* event) {
     if (event->pos().y() < row.top() || event->pos().y() > row.bottom()) continue;
     if (event->pos().x() < area.left()) {
       // The joint's name: its loads.
+      chosen_ = strip.segment;
+      update();
       emit joint_opened(strip.segment);
     } else if (event->pos().x() <= area.right()) {
       // The strip: that time, that joint.
+      chosen_ = strip.segment;
+      update();
       emit seek_requested(duration_ * (event->pos().x() - area.left()) / area.width());
       emit joint_chosen(strip.segment);
     }
     return;
   }
+}
+
+QString StrengthStrips::chosen_words() const {
+  for (const StrengthStrip& strip : strips_)
+    if (strip.segment == chosen_) return qstr(strip.joint) + ": " + qstr(strip.peak_words);
+  return {};
+}
+
+bool StrengthStrips::event(QEvent* event) {
+  if (event->type() == QEvent::ToolTip) {
+    // Over a row: that joint's largest share in words.
+    const auto* help = static_cast<QHelpEvent*>(event);
+    for (const StrengthStrip& strip : strips_) {
+      const QRect row = row_rect(strip.segment);
+      if (help->pos().y() >= row.top() && help->pos().y() <= row.bottom()) {
+        QToolTip::showText(help->globalPos(), qstr(strip.peak_words), this);
+        return true;
+      }
+    }
+  }
+  return QWidget::event(event);
 }
 
 }  // namespace saltus::gui

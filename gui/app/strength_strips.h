@@ -3,7 +3,9 @@
 /// The Strength tab: every joint's share of the athlete's strength over the flight as a strip, a
 /// row per joint on one time axis (core/joint_load_view.h: strength_strips), pale green at rest,
 /// amber near the athlete's maximum, red above 100 %; each row's largest share written at its
-/// end; the time shown as a line. A click on a row shows that joint's loads; on a time, seeks.
+/// end; the time shown as a line; under them, a joint's largest share in words (the CLI's line
+/// beyond the athlete's strength), also each row's tooltip. A click in a strip goes to that time
+/// and selects that joint; a click on a joint's name opens its loads.
 
 #include <QWidget>
 #include <vector>
@@ -25,6 +27,10 @@ class StrengthStrips : public QWidget {
   /// The row of a joint's strip (tests click there), -1 when it has none.
   QRect row_rect(int segment) const;
 
+  /// The words under the strips: the chosen joint's (the last clicked, else the largest
+  /// share's) largest share, "Left knee: left knee flexion would need 708 % of his strength …".
+  QString chosen_words() const;
+
   QSize sizeHint() const override;
   QSize minimumSizeHint() const override;
 
@@ -36,6 +42,7 @@ class StrengthStrips : public QWidget {
   void seek_requested(double t);
 
  protected:
+  bool event(QEvent* event) override;
   void paintEvent(QPaintEvent* event) override;
   void mousePressEvent(QMouseEvent* event) override;
 
@@ -48,6 +55,7 @@ class StrengthStrips : public QWidget {
   QString of_;
   double time_ = 0.0;
   double duration_ = 1.0;
+  int chosen_ = -1;  ///< the segment whose words show under the strips
 };
 
 }  // namespace saltus::gui

@@ -96,9 +96,10 @@ std::unique_ptr<CLI::App> make_app(CommandLine& c, cli::OptionFlags& flags,
   app->add_option("--panel", c.panel,
                   "bring a panel to the front for the screenshot: twist (where the twist comes "
                   "from, its analysis finished), teaching (why it spins), joints (the joint "
-                  "loads) or model (the Model panel: can this athlete land it?)")
-      ->type_name("twist|teaching|joints|model")
-      ->check(CLI::IsMember({"twist", "teaching", "joints", "model"}).description(""));
+                  "loads), strength (every joint's share of the athlete's strength) or model "
+                  "(the Model panel: can this athlete land it?)")
+      ->type_name("twist|teaching|joints|strength|model")
+      ->check(CLI::IsMember({"twist", "teaching", "joints", "strength", "model"}).description(""));
   app->add_option_function<std::string>(
          "--size",
          [&c](const std::string& v) {

@@ -34,8 +34,9 @@ struct CommandLine {
   std::optional<Stage> stage;
   std::optional<CameraPreset> camera;
   /// A panel brought to the front before the screenshot: "twist" (Where does the twist come
-  /// from?, its analysis finished), "teaching" (Why it spins), "joints" (the Joint loads tab) or
-  /// "model" (the Model panel, with "can this athlete land it?"); "" none.
+  /// from?, its analysis finished), "teaching" (Why it spins), "joints" (the Joint loads tab),
+  /// "strength" (the Strength tab) or "model" (the Model panel, with "can this athlete land it?");
+  /// "" none.
   std::string panel;
   int width = 1600;
   int height = 1000;

@@ -217,8 +217,16 @@ std::vector<StrengthStrip> strength_strips(const BodyModel& model,
     }
     strip.peak = peak->share;
     strip.peak_time_s = peak->time_s;
-    strip.peak_words = strength_direction_words(model, k, *peak) + " " +
-                       percent_words(peak->share) + format_number(" at %.2f s", peak->time_s);
+    if (peak->share > 1.0) {
+      // Beyond the athlete's strength: the line `saltus evaluate` prints for this joint alone.
+      std::vector<JointStrengthPeak> alone(check.strength_peaks.size());
+      alone[static_cast<std::size_t>(k)] = *peak;
+      strip.peak_words = over_strength_lines(model, alone).front();
+    } else {
+      strip.peak_words = strength_direction_words(model, k, *peak) + " " +
+                         percent_words(peak->share) + " of the athlete's strength" +
+                         format_number(" at t = %.2f s", peak->time_s);
+    }
     strips.push_back(std::move(strip));
   }
   return strips;

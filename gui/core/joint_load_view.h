@@ -77,7 +77,9 @@ struct StrengthStrip {
   std::vector<double> shares;  ///< at `times`, 1 = all of the athlete's strength there
   double peak = 0.0;           ///< the dense check's largest share
   double peak_time_s = 0.0;
-  /// "left knee extension 64 % at 0.31 s".
+  /// "left knee extension 64 % of the athlete's strength at t = 0.31 s"; beyond it, the line
+  /// `saltus evaluate` prints ("left knee flexion would need 708 % of his strength at t = 0.04 s
+  /// (29 of 4 N·m at 30°, shortening at 13.7 rad/s)").
   std::string peak_words;
 };
 

@@ -52,12 +52,12 @@ TEST(GuiBatch, OptimisesAndWritesAScreenshotWithoutInteraction) {
     EXPECT_TRUE(std::filesystem::exists(dir.path() / "result" / file)) << file;
 }
 
-TEST(GuiBatch, PanelFlagBringsTheTwistAndTeachingPanelsToTheFront) {
+TEST(GuiBatch, PanelFlagBringsTheTwistTeachingAndStrengthPanelsToTheFront) {
   saltus::test::TempDir dir;
   const std::string m5 = std::string(SALTUS_EXAMPLES_DIR) +
                          "/motions/M5-front-somersault-one-and-a-half-twists.motion.json";
   std::map<std::string, QImage> shots;
-  for (const std::string panel : {"", "twist", "teaching"}) {
+  for (const std::string panel : {"", "twist", "teaching", "strength"}) {
     const std::string png = dir / ("shot-" + (panel.empty() ? "none" : panel) + ".png");
     const saltus::test::CliRun run =
         run_gui("'" + m5 + "' --time 1.0 --size 1366x768 " +
@@ -77,6 +77,8 @@ TEST(GuiBatch, PanelFlagBringsTheTwistAndTeachingPanelsToTheFront) {
   const QRect dock(1000, 100, 300, 500), plots(0, 560, 900, 200);
   EXPECT_GT(changed(shots[""], shots["twist"], dock), 0.05);
   EXPECT_GT(changed(shots[""], shots["teaching"], plots), 0.05);
+  EXPECT_GT(changed(shots[""], shots["strength"], plots), 0.05);
+  EXPECT_GT(changed(shots["teaching"], shots["strength"], plots), 0.05);
   EXPECT_EQ(run_gui("'" + m5 + "' --panel nope --screenshot '" + (dir / "x.png") + "'").status, 2);
 }
 

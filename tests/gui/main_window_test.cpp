@@ -598,6 +598,8 @@ TEST_F(MainWindowTest, StrengthTabDrawsEachJointsShareAndAClickGoesToThatJointAn
   EXPECT_NEAR(window_->time(), 0.4 * duration, 2.0 * duration / row.width());
   EXPECT_EQ(plots.selected_joint(), last.segment);
   EXPECT_EQ(plots.currentWidget(), strips);
+  // Its largest share in words under the strips.
+  EXPECT_EQ(strips->chosen_words(), QString::fromStdString(last.joint + ": " + last.peak_words));
   // A click on the first joint's name opens its loads.
   const StrengthStrip& first = strips->strips().front();
   QTest::mouseClick(strips, Qt::LeftButton, {},

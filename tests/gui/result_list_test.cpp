@@ -22,6 +22,7 @@
 #include "app/run_controller.h"
 #include "gui/support/open_motion_fixture.h"
 #include "saltus/evaluation/joint_loads.h"
+#include "saltus/evaluation/strength_demand.h"
 #include "support/cli_runner.h"
 
 namespace saltus::gui {
@@ -61,6 +62,13 @@ TEST_F(ResultListTest, ASolvedRunStaysShownWhateverComesAfter) {
       window_->document().file().model, solved_result.before.check, solved_result.after.check));
   EXPECT_NE(
       window_->runs().panel()->message().indexOf(QString::fromStdString(" Joints: " + joints)), -1)
+      << window_->runs().panel()->message().toStdString();
+  // And against the athlete's strength, in the words of `saltus optimize`.
+  const std::string strength = strength_verdict_words(window_->document().file().model,
+                                                      solved_result.after.check.strength_peaks);
+  EXPECT_NE(window_->runs().panel()->message().indexOf(
+                QString::fromStdString(" Strength: " + strength + ".")),
+            -1)
       << window_->runs().panel()->message().toStdString();
 
   // A run that stops after one iteration: worse, not solved, listed but not shown.

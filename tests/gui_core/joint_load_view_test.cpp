@@ -79,7 +79,23 @@ TEST_F(JointLoadViewTest, EveryJointWithAStrengthCurveHasAStrip) {
     EXPECT_EQ(strip.peak, before().check.strength_peaks[strip.segment].share);
     // The dense check's peak is at least every sampled share (it looks between the samples).
     EXPECT_GE(strip.peak + 1e-9, *std::max_element(strip.shares.begin(), strip.shares.end()));
+    EXPECT_EQ(strip.peak_words.rfind(
+                  strength_direction_words(model(), strip.segment,
+                                           before().check.strength_peaks[strip.segment]),
+                  0),
+              0u)
+        << strip.peak_words;
   }
+  // A joint beyond the athlete's strength says why in the words of `saltus evaluate`.
+  DenseCheck over = before().check;
+  const int knee = model().joint_index("knee_l");
+  over.strength_peaks[knee].share = 1.3;
+  for (const StrengthStrip& strip : strength_strips(model(), before().samples, over))
+    if (strip.segment == knee) {
+      const std::vector<std::string> lines = over_strength_lines(model(), over.strength_peaks);
+      ASSERT_EQ(lines.size(), 1u);
+      EXPECT_EQ(strip.peak_words, lines.front());
+    }
 }
 
 TEST_F(JointLoadViewTest, AJointTheOptimiserRaisedIsMarkedWhereItsPeakIs) {
