@@ -404,6 +404,16 @@ int StudyVerbs::State::run_job(const StudyJob& job, const StudyArgs& common, con
                   options.shard.text().c_str(), result.cases_run, result.failed,
                   absolute(common.out_dir).c_str());
   }
+  if (!result.partial_kept.empty()) {
+    std::string names;
+    for (std::size_t i = 0; i < result.partial_kept.size() && i < 3; ++i)
+      names += (i ? ", " : "") + message_text(result.partial_kept[i]);
+    if (result.partial_kept.size() > 3) names += ", ...";
+    std::fprintf(stderr,
+                 "saltus: %s is kept: it holds %zu file(s) Saltus did not write (%s); the "
+                 "study's own files there were removed\n",
+                 result.partial_dir.c_str(), result.partial_kept.size(), names.c_str());
+  }
   if (result.failed > 0) {
     std::fprintf(stderr,
                  "saltus: %d cases did not finish (crashed or timed out); they are recorded as "

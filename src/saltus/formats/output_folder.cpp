@@ -12,6 +12,7 @@
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <functional>
@@ -692,6 +693,37 @@ bool write_all(int fd, const std::string& text) {
   return true;
 }
 
+/// The name of a temporary beside `name` without the run's suffix: `.NAME.saltus-tmp-`, with
+/// NAME cut to 200 bytes so that the whole stays within a file name's 255 bytes even for the
+/// longest legal NAME.
+std::string file_temporary_prefix(const std::string& name) {
+  return "." + name.substr(0, 200) + ".saltus-tmp-";
+}
+
+/// Removes what writes of `target` that died (killed, power lost) left beside it: regular files
+/// `.NAME.saltus-tmp-<pid>-<n>` whose process no longer exists. A live run's temporary stays.
+void remove_dead_file_temporaries(const fs::path& target) {
+  const std::string prefix = file_temporary_prefix(target.filename().string());
+  std::error_code ec;
+  std::vector<fs::path> dead;
+  for (fs::directory_iterator it(target.parent_path(), ec), end; !ec && it != end;
+       it.increment(ec)) {
+    const std::string entry = it->path().filename().string();
+    if (entry.compare(0, prefix.size(), prefix) != 0) continue;
+    const std::string suffix = entry.substr(prefix.size());
+    const std::size_t dash = suffix.find('-');
+    if (!is_run_suffix(suffix) || dash == 0 || dash == std::string::npos ||
+        suffix.find('-', dash + 1) != std::string::npos)
+      continue;
+    const long pid = std::strtol(suffix.substr(0, dash).c_str(), nullptr, 10);
+    if (pid <= 0 || pid == ::getpid() || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH)
+      continue;
+    if (fs::is_regular_file(it->symlink_status(ec))) dead.push_back(it->path());
+  }
+  for (const fs::path& file : dead)
+    fs::remove(file, ec);
+}
+
 }  // namespace
 
 std::size_t write_output_file(const std::string& path, const std::string& plain_text,
@@ -715,7 +747,15 @@ std::size_t write_output_file(const std::string& path, const std::string& plain_
     if (S_ISLNK(info.st_mode)) return "is a symbolic link; Saltus writes only to a file of its own";
     if (S_ISDIR(info.st_mode)) return "is a folder, not a file Saltus wrote: give a file name";
     if (!S_ISREG(info.st_mode)) return "is not a file Saltus wrote; it is left as it is";
-    return existing_file_refusal(target.string(), kind);
+    const std::string why = existing_file_refusal(target.string(), kind);
+    // Saltus's own file that the user protected: the system's answer (exit 4), as for a folder.
+    if (why.empty() && !(info.st_mode & S_IWUSR))
+      throw OutputError(path +
+                            " is read-only (its mode has no write permission), so Saltus does not "
+                            "replace it; nothing was written. Make it writable or choose another "
+                            "name",
+                        false);
+    return why;
   };
   if (const std::string why = refusal(); !why.empty()) throw InputError(path, "", why);
   const fs::path parent = target.parent_path();
@@ -723,13 +763,15 @@ std::size_t write_output_file(const std::string& path, const std::string& plain_
   if (ec)
     throw OutputError("cannot create the folder " + parent.string() + ": " + ec.message(), false);
 
+  remove_dead_file_temporaries(target);
   install_interrupt_handlers();
   std::string temporary;
   int fd = -1;
+  const mode_t mode = kind.executable ? 0755 : 0644;
   for (int attempt = 0; fd < 0; ++attempt) {
     temporary =
-        (parent / ("." + target.filename().string() + ".saltus-tmp-" + run_suffix())).string();
-    fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+        (parent / (file_temporary_prefix(target.filename().string()) + run_suffix())).string();
+    fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, mode);
     if (fd < 0 && !(errno == EEXIST && attempt < 16))
       throw OutputError(
           "cannot write " + path + ": " + system_reason(errno) + "; nothing was changed", false);
@@ -754,7 +796,14 @@ std::size_t write_output_file(const std::string& path, const std::string& plain_
   // the move must not replace one that appears meanwhile (RENAME_NOREPLACE); where there is one
   // of Saltus's, a plain rename replaces it.
   for (int attempt = 0;; ++attempt) {
-    if (const std::string why = refusal(); !why.empty()) {
+    std::string why;
+    try {
+      why = refusal();
+    } catch (const OutputError&) {
+      discard();
+      throw;
+    }
+    if (!why.empty()) {
       discard();
       throw InputError(path, "", why);
     }

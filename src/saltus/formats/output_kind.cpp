@@ -41,8 +41,8 @@ std::string unmarked_canonical(nlohmann::json document, const nlohmann::json::js
 
 /// The last line of a kTrailingComment file for `digest`.
 std::string comment_line(const FileKind& kind, const std::string& digest) {
-  return kind.comment_open + kMarkWords + kind.name + " " + digest + " " + kind.comment_close +
-         "\n";
+  const std::string close = kind.comment_close.empty() ? "" : " " + kind.comment_close;
+  return kind.comment_open + kMarkWords + kind.name + " " + digest + close + "\n";
 }
 
 }  // namespace

@@ -88,12 +88,16 @@ struct FileKind {
   std::string comment_close;
   /// kByWriter: whether a file's bytes carry the mark its writer puts there.
   std::function<bool(const std::string& bytes)> carries_mark;
+  /// Whether the file is a program its user runs (a Slurm script): written with mode 0755,
+  /// else 0644 (both less the umask).
+  bool executable = false;
 
   /// A kind whose files have no room for a mark.
   static FileKind unmarked(std::string name);
   /// A JSON kind, marked by an object {"kind", "digest"} at `member`.
   static FileKind json(std::string name, std::string member = std::string("/") + kJsonMark);
-  /// A text kind, marked by a last line `open written by saltus: KIND DIGEST close`.
+  /// A text kind, marked by a last line `open written by saltus: KIND DIGEST close` (no `close`
+  /// for a comment that ends with its line, such as a shell's "#").
   static FileKind commented(std::string name, std::string open, std::string close);
   /// A kind whose writer marks the bytes itself; `carries_mark` recognises the mark.
   static FileKind by_writer(std::string name, std::function<bool(const std::string&)> carries_mark);

@@ -1,18 +1,15 @@
 #include "saltus/formats/slurm_script.h"
 
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <sstream>
 
-#include "saltus/base/input_error.h"
 #include "saltus/formats/output_folder.h"
 
 namespace saltus {
 
 namespace {
 
-/// The line that marks a script as Saltus's own (it may be replaced).
+/// The script's format tag, its second line (what may be replaced is told by the last line,
+/// slurm_script_kind()).
 constexpr const char* kMarker = "# saltus-slurm-array/1";
 
 }  // namespace
@@ -72,22 +69,17 @@ std::string slurm_array_script(const SlurmArrayScript& s) {
   return out.str();
 }
 
+const FileKind& slurm_script_kind() {
+  static const FileKind kind = [] {
+    FileKind k = FileKind::commented("Slurm script", "#", "");
+    k.executable = true;
+    return k;
+  }();
+  return kind;
+}
+
 void write_slurm_array_script(const std::string& path, const SlurmArrayScript& script) {
-  namespace fs = std::filesystem;
-  if (fs::exists(path)) {
-    std::ifstream in(path);
-    std::string first, second;
-    std::getline(in, first);
-    std::getline(in, second);
-    if (!fs::is_regular_file(path) || second != kMarker)
-      throw InputError(path, "",
-                       "exists and is not a Slurm script Saltus wrote; not overwriting it");
-  }
-  const std::string temporary = path + ".tmp";
-  write_text(temporary, slurm_array_script(script));
-  fs::permissions(temporary, fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec,
-                  fs::perm_options::add);
-  fs::rename(temporary, path);
+  write_output_file(path, slurm_array_script(script), slurm_script_kind());
 }
 
 }  // namespace saltus

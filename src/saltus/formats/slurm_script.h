@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "saltus/formats/output_kind.h"
+
 namespace saltus {
 
 struct SlurmArrayScript {
@@ -28,8 +30,12 @@ std::string slurm_merge_command(const SlurmArrayScript& script);
 /// The batch script's text.
 std::string slurm_array_script(const SlurmArrayScript& script);
 
-/// Writes the script (executable). Throws InputError if `path` exists and is not a script that
-/// Saltus wrote.
+/// What the script writer declares (output_kind.h): an executable text file marked by a last
+/// comment line, so a script Saltus wrote, unchanged since, is replaced and no other file is.
+const FileKind& slurm_script_kind();
+
+/// Writes the script (executable) by the one rule for single files (write_output_file). Throws
+/// InputError if `path` exists and is not a script that Saltus wrote, unchanged since.
 void write_slurm_array_script(const std::string& path, const SlurmArrayScript& script);
 
 /// `text` quoted for a POSIX shell ('…', with ' as '\'').

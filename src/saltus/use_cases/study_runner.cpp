@@ -52,6 +52,41 @@ nlohmann::json write_study_outputs(const OutputFolder& folder, const StudyManife
   return study_kind(manifest.study).write_outputs(folder, manifest.definition, ordered);
 }
 
+/// Refuses (InputError) to take into DIR a case's folder in DIR.partial that holds anything
+/// Saltus did not write there: the user's files stay where they are.
+void require_own_case_folders(const fs::path& partial, const std::map<int, CaseRecord>& records) {
+  for (const auto& [index, record] : records) {
+    if (record.folder.empty() || !fs::exists(partial / record.folder)) continue;
+    const std::string why = foreign_content((partial / record.folder).string());
+    if (!why.empty())
+      throw InputError((partial / record.folder).string(), "",
+                       "is case " + std::to_string(index) +
+                           "'s result, which Saltus would move "
+                           "into the study, but " +
+                           why +
+                           ". Move your files away, then run the "
+                           "same command with --resume");
+  }
+}
+
+/// Removes from DIR.partial what the run wrote there (study.json, the case records; the cases'
+/// folders were moved into DIR), and the folder once it is empty. Returns what is left: entries
+/// Saltus did not write, kept for their owner.
+std::vector<std::string> remove_own_partial(const fs::path& partial,
+                                            const std::map<int, CaseRecord>& records) {
+  std::error_code ec;
+  fs::remove(partial / "study.json", ec);
+  for (const auto& [index, record] : records)
+    fs::remove(partial / case_record_name(index), ec);
+  fs::remove(partial / "cases", ec);  // only when empty
+  fs::remove(partial, ec);
+  std::vector<std::string> kept;
+  for (fs::recursive_directory_iterator it(partial, ec), end; !ec && it != end; it.increment(ec))
+    if (!it->is_directory()) kept.push_back(fs::relative(it->path(), partial).string());
+  std::sort(kept.begin(), kept.end());
+  return kept;
+}
+
 }  // namespace
 
 StudyRunResult run_study(const StudyJob& job, const std::string& out_dir,
@@ -93,6 +128,7 @@ StudyRunResult run_study(const StudyJob& job, const std::string& out_dir,
   write_study_folder(partial.string(), manifest, {});
 
   std::map<int, CaseRecord> records = read_case_records(partial.string(), cases, &job.case_names);
+  require_own_case_folders(partial, records);  // before the work, not after an hour of it
   std::vector<int> todo;
   int in_shard = 0;
   StudyProgress progress;
@@ -154,12 +190,13 @@ StudyRunResult run_study(const StudyJob& job, const std::string& out_dir,
     return result;
   }
 
+  require_own_case_folders(partial, records);
   for (const auto& [index, record] : records)
     if (!record.folder.empty() && fs::exists(partial / record.folder))
       fs::rename(partial / record.folder, folder.file(record.folder));
   result.result = write_study_outputs(folder, manifest, records);
   folder.commit();
-  fs::remove_all(partial);
+  result.partial_kept = remove_own_partial(partial, records);
   result.complete = true;
   return result;
 }

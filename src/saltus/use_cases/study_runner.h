@@ -52,12 +52,18 @@ struct StudyRunResult {
   int cases_run = 0;
   int failed = 0;           ///< records of the shard whose process crashed or timed out
   std::string partial_dir;  ///< DIR.partial
-  nlohmann::json result;    ///< DIR/result.json when complete
+  /// Entries of DIR.partial that Saltus did not write (relative paths): when the study is
+  /// complete they are kept there, and only they; empty when DIR.partial was removed.
+  std::vector<std::string> partial_kept;
+  nlohmann::json result;  ///< DIR/result.json when complete
 };
 
-/// Runs the shard's missing cases and, when all are there, writes DIR. Throws InputError when
+/// Runs the shard's missing cases and, when all are there, writes DIR and removes from
+/// DIR.partial what the run wrote (a file the user put there stays). Throws InputError when
 /// DIR is not replaceable (OutputFolder's rule), when DIR.partial holds a run and `resume` is
-/// off, or when it holds another study (naming the first field that differs).
+/// off, when it holds another study (naming the first field that differs), or when a case's
+/// folder there holds files Saltus did not write (checked before any case runs, and again
+/// before the folder is moved into DIR).
 StudyRunResult run_study(const StudyJob& job, const std::string& out_dir,
                          const StudyRunOptions& options);
 

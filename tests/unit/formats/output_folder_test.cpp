@@ -155,6 +155,56 @@ TEST(WriteOutputFile, ASystemRefusalIsAnOutputError) {
   EXPECT_EQ(test::read_text(dir / "plain"), "a file, not a folder");
 }
 
+TEST(WriteOutputFile, ReplacesItsOwnMarkedFileUnlessTheUserProtectedIt) {
+  test::TempDir dir;
+  const FileKind page = FileKind::commented("flight page", "<!--", "-->");
+  const std::string path = dir / "flight.html";
+  write_output_file(path, "<p>first</p>\n", page);
+  write_output_file(path, "<p>second</p>\n", page);  // its own, unchanged: replaced
+  EXPECT_EQ(test::read_text(path).find("<p>second</p>\n"), 0u);
+  // Made read-only by its user: refused as the system's answer (exit 4), left as it was.
+  const std::string before = test::read_text(path);
+  fs::permissions(path, fs::perms::owner_read | fs::perms::group_read);
+  try {
+    write_output_file(path, "<p>third</p>\n", page);
+    ADD_FAILURE() << "replaced a read-only file";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("read-only"), std::string::npos) << e.what();
+    EXPECT_FALSE(e.busy());
+  }
+  EXPECT_EQ(test::read_text(path), before);
+  EXPECT_EQ(names_in(dir.path()), std::set<std::string>{"flight.html"});
+}
+
+TEST(WriteOutputFile, RemovesWhatKilledWritesLeftAndKeepsALiveRunsTemporary) {
+  test::TempDir dir;
+  // A process that has ended: its pid is free, as after a kill -9 before the rename.
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  ASSERT_GT(child, 0);
+  ::waitpid(child, nullptr, 0);
+  const std::string dead = dir / (".flight.bvh.saltus-tmp-" + std::to_string(child) + "-0");
+  const std::string live = dir / (".flight.bvh.saltus-tmp-" + std::to_string(::getppid()) + "-3");
+  const std::string other = dir / (".other.bvh.saltus-tmp-" + std::to_string(child) + "-0");
+  const std::string mine = dir / (".flight.bvh.saltus-tmp-" + std::to_string(child) + "-0-x");
+  for (const std::string& f : {dead, live, other, mine})
+    test::write_text(f, "half");
+  write_output_file(dir / "flight.bvh", "HIERARCHY\n", kBvh);
+  EXPECT_EQ(names_in(dir.path()),
+            (std::set<std::string>{"flight.bvh", fs::path(live).filename().string(),
+                                   fs::path(other).filename().string(),
+                                   fs::path(mine).filename().string()}))
+      << "only the dead write's temporary of this file goes";
+}
+
+TEST(WriteOutputFile, TheLongestLegalNameIsWritten) {
+  test::TempDir dir;
+  const std::string name = std::string(250, 'a') + ".bvh";  // 254 bytes: legal
+  write_output_file(dir / name, "HIERARCHY\n", kBvh);
+  EXPECT_EQ(test::read_text(dir / name), "HIERARCHY\n");
+  EXPECT_EQ(names_in(dir.path()), std::set<std::string>{name});
+}
+
 namespace hardening {
 
 namespace fs = std::filesystem;

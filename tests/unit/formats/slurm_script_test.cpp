@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -130,10 +131,16 @@ TEST(SlurmScript, ReplacesItsOwnScriptButNoOtherFile) {
     FAIL() << "overwrote a file Saltus did not write";
   } catch (const InputError& e) {
     EXPECT_EQ(e.file(), mine);
-    EXPECT_NE(std::string(e.what()).find("not overwriting it"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("is not a Slurm script Saltus wrote"), std::string::npos)
+        << e.what();
   }
   EXPECT_EQ(test::read_text(mine), "#!/bin/sh\necho mine\n");
-  EXPECT_FALSE(fs::exists(mine + ".tmp"));
+  EXPECT_EQ(test::names_in(dir.path()), (std::set<std::string>{"report.sbatch", "mine.sh"}))
+      << "no temporary is left beside the files";
+  // Saltus's script edited by hand is the user's now.
+  test::write_text(script, test::read_text(script) + "# my note\n");
+  EXPECT_THROW(write_slurm_array_script(script, s), InputError);
+  EXPECT_NE(test::read_text(script).find("# my note"), std::string::npos);
   fs::create_directories(dir / "folder.sbatch");
   EXPECT_THROW(write_slurm_array_script(dir / "folder.sbatch", s), InputError);
 }
