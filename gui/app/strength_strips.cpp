@@ -107,12 +107,18 @@ void StrengthStrips::paintEvent(QPaintEvent*) {
   }
   const QRect area = plot_area();
   const QFontMetrics metrics(font());
+  // Names and peaks in a smaller font where the rows are lower than a line (a laptop's screen).
+  const int row_height = area.height() / static_cast<int>(strips_.size());
+  QFont row_font = font();
+  if (metrics.height() > row_height + 1) row_font.setPixelSize(std::max(8, row_height));
+  p.setFont(row_font);
+  const QFontMetrics row_metrics(row_font);
   for (const StrengthStrip& strip : strips_) {
     const QRect row = row_rect(strip.segment).adjusted(0, 1, 0, -1);
     // The name, elided to its column; the strip; the largest share at its end.
     p.setPen(palette().text().color());
     p.drawText(QRect(2, row.top(), kNameWidth - 6, row.height()), Qt::AlignRight | Qt::AlignVCenter,
-               metrics.elidedText(qstr(strip.joint), Qt::ElideRight, kNameWidth - 6));
+               row_metrics.elidedText(qstr(strip.joint), Qt::ElideRight, kNameWidth - 6));
     for (std::size_t i = 0; i + 1 < strip.times.size(); ++i) {
       const double x0 = x_of(strip.times[i]), x1 = x_of(strip.times[i + 1]);
       const double share = std::max(strip.shares[i], strip.shares[i + 1]);
@@ -124,6 +130,7 @@ void StrengthStrips::paintEvent(QPaintEvent*) {
                Qt::AlignLeft | Qt::AlignVCenter,
                QString("%1 %").arg(100.0 * strip.peak, 0, 'f', 0));
   }
+  p.setFont(font());
   // The time axis: a tick a half second, and the time shown.
   p.setPen(palette().mid().color());
   p.drawRect(area.adjusted(0, 0, -1, -1));
@@ -176,7 +183,11 @@ void StrengthStrips::mousePressEvent(QMouseEvent* event) {
 
 QString StrengthStrips::chosen_words() const {
   for (const StrengthStrip& strip : strips_)
-    if (strip.segment == chosen_) return qstr(strip.joint) + ": " + qstr(strip.peak_words);
+    if (strip.segment == chosen_) {
+      QString words = qstr(strip.peak_words);
+      if (!words.isEmpty()) words[0] = words[0].toUpper();
+      return words;
+    }
   return {};
 }
 

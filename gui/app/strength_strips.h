@@ -28,7 +28,7 @@ class StrengthStrips : public QWidget {
   QRect row_rect(int segment) const;
 
   /// The words under the strips: the chosen joint's (the last clicked, else the largest
-  /// share's) largest share, "Left knee: left knee flexion would need 708 % of his strength …".
+  /// share's) largest share, "Left knee flexion would need 708 % of his strength …".
   QString chosen_words() const;
 
   QSize sizeHint() const override;

@@ -85,6 +85,15 @@ std::string RunList::label(int index, bool with_settings) const {
          " iterations · " + format_number("%.3g", r.before.metrics.avg_root_force) + " → " +
          format_number("%.3g", r.after.metrics.avg_root_force) + " N";
   if (!joints.empty()) out += " · " + joints;
+  // And the joints the optimised motion asks more of than the athlete's strength (the dense
+  // check's largest shares; the run's summary names them as `saltus optimize` does).
+  int beyond = 0;
+  for (std::size_t k = 1; k < r.after.check.strength_peaks.size(); ++k)
+    beyond += r.after.check.strength_peaks[k].coordinate >= 0 &&
+              r.after.check.strength_peaks[k].share > 1.0;
+  if (beyond > 0)
+    out += " · " + std::to_string(beyond) + (beyond == 1 ? " joint" : " joints") +
+           " beyond the athlete's strength";
   if (with_settings) out += " · " + settings_summary(run.settings);
   return out;
 }

@@ -59,8 +59,10 @@ class RunList {
   void mark_saved(int index);
 
   /// One line for the list: "Best · Run 2 · solved after 40 iterations · 118 → 11.2 N · every
-  /// joint within 1.27x of its peak load before · relaxed, K = 1, 101 samples" ("Best · " for
-  /// preferred() only; the joints in joint_load_verdict_words, as `saltus optimize` says them).
+  /// joint within 1.27x of its peak load before · 2 joints beyond the athlete's strength ·
+  /// relaxed, K = 1, 101 samples" ("Best · " for preferred() only; the joints in
+  /// joint_load_verdict_words, as `saltus optimize` says them; the strength part only when a
+  /// joint of the optimised motion is beyond it).
   /// `with_settings` false leaves the settings out (the panel's list: they go to its tooltip).
   std::string label(int index, bool with_settings = true) const;
 

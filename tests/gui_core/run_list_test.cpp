@@ -118,6 +118,19 @@ TEST(RunList, ACancelledRunOrOneWhoseJointsPayNeverOutranksAFullRunWithinTheJoin
   EXPECT_NE(list.label(1).find("every joint within 1.27x of its peak load before"),
             std::string::npos)
       << list.label(1);
+  EXPECT_EQ(list.label(1).find("strength"), std::string::npos) << list.label(1);
+  // A run whose optimised motion asks two joints for more than the athlete's strength says so.
+  RunRecord strained = run("solved", 169.0, 0.239, 1.27);
+  auto result = std::make_shared<OptimizationResult>(*strained.result);
+  result->after.check.strength_peaks.resize(4);
+  for (int k : {1, 2, 3}) {
+    result->after.check.strength_peaks[k].coordinate = 0;
+    result->after.check.strength_peaks[k].share = k == 1 ? 0.9 : 9.62;
+  }
+  strained.result = result;
+  add_all(list, {strained});
+  EXPECT_NE(list.label(5).find(" · 2 joints beyond the athlete's strength"), std::string::npos)
+      << list.label(5);
 }
 
 TEST(RunList, CountsUnsavedRunsAndLabelsThemInWords) {
