@@ -522,7 +522,17 @@ MocapClip export_motion_clip(const MotionFile& motion, double fps) {
                          std::to_string(kMaxBvhFrames) +
                          " frames, the most a BVH file Saltus reads may hold");
   const Trajectory<double> trajectory = motion_trajectory(motion.motion, motion.model);
-  return motion_clip(motion.model, trajectory, fps);
+  MocapClip clip = motion_clip(motion.model, trajectory, fps);
+  // Nor frames further apart or closer than `import` reads (check_frame_time's bounds).
+  if (!(clip.frame_time >= plausible::kMinCaptureFrameTime &&
+        clip.frame_time <= plausible::kMaxCaptureFrameTime))
+    throw InputError("--fps", "",
+                     message_number(fps) + " frames per second give frames " +
+                         message_number(clip.frame_time) + " s apart, outside the [" +
+                         message_number(plausible::kMinCaptureFrameTime) + ", " +
+                         message_number(plausible::kMaxCaptureFrameTime) +
+                         "] s a BVH file Saltus reads back may have (1 to 1000 frames per second)");
+  return clip;
 }
 
 MocapClip export_motion_bvh(const MotionFile& motion, const std::string& out_path, double fps) {

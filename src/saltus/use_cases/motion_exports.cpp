@@ -232,6 +232,10 @@ ExportSummary export_loaded(const MotionFile& motion, const ExportFormat& format
   if (!format.sampled)
     throw InputError("--format", "", format.name + " is exported from a file or folder");
   if (!options.capture.empty()) throw InputError("--capture", "", "applies to --format html only");
+  if (!(options.fps >= 0 && std::isfinite(options.fps)))  // 0: the default; NaN was taken for it
+    throw InputError(
+        "--fps", "",
+        "must be a positive number of frames per second, found " + message_number(options.fps));
   const double fps = options.fps > 0 ? options.fps : default_export_fps(motion.motion);
   ExportSummary s = format.name == "bvh" ? export_bvh(motion, out, fps)
                                          : export_sampled(motion, format, out, fps, source);

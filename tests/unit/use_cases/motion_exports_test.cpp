@@ -14,7 +14,9 @@
 #include <sstream>
 
 #include "saltus/base/input_error.h"
+#include "saltus/formats/bvh_file.h"
 #include "saltus/formats/csv_table.h"
+#include "saltus/formats/plausible_ranges.h"
 #include "support/input_errors.h"
 #include "support/temp_path.h"
 #include "support/test_motions.h"
@@ -107,6 +109,31 @@ TEST(MotionExports, FlagsThatDoNotApplyAreRefused) {
             }).find("--format"),
             std::string::npos);
   EXPECT_FALSE(fs::exists(test::temp_path("c")));
+}
+
+TEST(MotionExports, ABvhIsWrittenOnlyAtFrameTimesItsReaderTakes) {
+  const MotionFile source = tuck_file();
+  for (const double fps : {2000.0, std::nan(""), -1.0, HUGE_VAL}) {
+    SCOPED_TRACE(fps);
+    ExportOptions options;
+    options.fps = fps;
+    const std::string out = test::temp_path("fps.bvh").string();
+    EXPECT_NE(test::input_error([&] { export_motion(source, "bvh", out, options); }).find("--fps"),
+              std::string::npos);
+    EXPECT_FALSE(fs::exists(out));
+  }
+  // Near the edge and at the default: written, and read back by the reader `import` uses.
+  for (const double fps : {999.0, 60.0}) {
+    ExportOptions options;
+    options.fps = fps;
+    const std::string out = test::temp_path("edge" + std::to_string(int(fps)) + ".bvh").string();
+    fs::remove(out);
+    const ExportSummary s = export_motion(source, "bvh", out, options);
+    const MocapClip back = load_bvh_file(out);
+    EXPECT_EQ(back.frame_time, s.frame_time);
+    EXPECT_GE(back.frame_time, plausible::kMinCaptureFrameTime);
+    EXPECT_LE(back.frame_time, plausible::kMaxCaptureFrameTime);
+  }
 }
 
 }  // namespace
