@@ -256,6 +256,18 @@ TEST(AthleteFamily, ADiveWhoseJointsPaidKeepsABoundedTry) {
   EXPECT_LE(simulate_motion(result.optimized_motion, file.model).landing_vs_motion_deg, 3.0);
   EXPECT_LE(result.after.check.metrics.avg_root_force,
             polish.knots_refined ? kPolishMaxRootForce : kPolishMaxRootForceOverPayingJoints);
+  if (!polish.knots_refined) return;
+  // Refined: on more spans than any level ended with.
+  int level_spans = 0, returned_spans = 0;
+  for (const OptimizationResult::Level& level : result.levels) {
+    int spans_of_level = 0;
+    for (const int spans : level.subdivisions)
+      spans_of_level += spans;
+    level_spans = std::max(level_spans, spans_of_level);
+  }
+  for (const int spans : result.subdivisions)
+    returned_spans += spans;
+  EXPECT_GT(returned_spans, level_spans) << "finer knots than the levels'";
 }
 
 /// The same dive at a resolution the user fixed, three spans an interval (the knots are the
