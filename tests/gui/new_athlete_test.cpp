@@ -44,19 +44,10 @@
 #include "saltus/formats/model_file.h"
 #include "saltus/use_cases/athlete_models.h"
 #include "support/cli_runner.h"
+#include "support/junior_athlete.h"
 
 namespace saltus::gui {
 namespace {
-
-/// The library's junior: what the dialog must make of 1.45 m, 38 kg, female.
-BodyModel library_junior() {
-  AthleteSize size;
-  size.height_m = 1.45;
-  size.mass_kg = 38.0;
-  size.sex = Sex::kFemale;
-  size.name = "junior";
-  return new_athlete_model(size);
-}
 
 /// Replaces a field's text by `text` typed on the keyboard.
 void type_into(QWidget* field, const QString& text) {
@@ -133,7 +124,7 @@ TEST_F(NewAthleteTest, AJuniorIsTheLibrarysModelSavedAndFliesTheOpenMotion) {
 
   // The preview is the library's junior: its figures and its standing height, beside the model
   // in use (1.70 m).
-  const BodyModel expected = library_junior();
+  const BodyModel expected = saltus::test::junior_athlete();
   const StandingBody standing = standing_body(expected);
   ASSERT_TRUE(dialog->draft().model) << dialog->problem().toStdString();
   EXPECT_TRUE(dialog->problem().isEmpty()) << dialog->problem().toStdString();
@@ -360,7 +351,7 @@ TEST_F(NewAthleteTest, CanTheJuniorLandM7IsSaidFirstInTheDialogTheCompareWindowA
   const AthleteLanding* landing = dialog->landing();
   ASSERT_NE(landing, nullptr);
   const AthleteLanding expected =
-      athlete_landing(motion_on_athlete(window_->document().file(), library_junior()),
+      athlete_landing(motion_on_athlete(window_->document().file(), saltus::test::junior_athlete()),
                       window_->document().evaluate_options());
   EXPECT_FALSE(landing->lands);
   EXPECT_EQ(landing->headline, expected.headline);
@@ -403,7 +394,7 @@ TEST_F(NewAthleteTest, CanTheJuniorLandM7IsSaidFirstInTheDialogTheCompareWindowA
 
 TEST_F(NewAthleteTest, BatchCompareWithAModelFileShowsTwoAthletes) {
   const std::string model = dir_ / "junior.model.json";
-  write_athlete_model(model, library_junior());
+  write_athlete_model(model, saltus::test::junior_athlete());
   const QString png = QString::fromStdString(dir_ / "two-athletes.png");
   ASSERT_EQ(
       write_compare_screenshot(*window_, QString::fromStdString(model), 0.5, QSize(1400, 900), png),

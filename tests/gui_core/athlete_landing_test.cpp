@@ -14,6 +14,7 @@
 #include "saltus/formats/motion_file.h"
 #include "saltus/optim/result_standing.h"
 #include "saltus/use_cases/athlete_models.h"
+#include "support/junior_athlete.h"
 
 namespace saltus::gui {
 namespace {
@@ -21,15 +22,6 @@ namespace {
 MotionFile m7() {
   return load_motion_file(std::string(SALTUS_EXAMPLES_DIR) +
                           "/motions/M7-double-front-one-and-a-half-twists.motion.json");
-}
-
-BodyModel junior() {
-  AthleteSize size;
-  size.height_m = 1.45;
-  size.mass_kg = 38.0;
-  size.sex = Sex::kFemale;
-  size.name = "junior";
-  return new_athlete_model(size);
 }
 
 TEST(AthleteLanding, M7LandsOnItsOwnBody) {
@@ -42,7 +34,7 @@ TEST(AthleteLanding, M7LandsOnItsOwnBody) {
 }
 
 TEST(AthleteLanding, AJuniorWithTheSameSpinDoesNotAndTheCheckSaysSoFirst) {
-  const MotionFile on_junior = motion_on_athlete(m7(), junior());
+  const MotionFile on_junior = motion_on_athlete(m7(), saltus::test::junior_athlete());
   const EvaluateOptions options;
   const AthleteLanding check = athlete_landing(on_junior, options);
   EXPECT_FALSE(check.lands);
@@ -79,7 +71,7 @@ TEST(AthleteLanding, AJuniorWithTheSameSpinDoesNotAndTheCheckSaysSoFirst) {
 }
 
 TEST(AthleteLanding, ARunOnTheAthleteAddsTheWarningsOfSaltusOptimize) {
-  const MotionFile on_junior = motion_on_athlete(m7(), junior());
+  const MotionFile on_junior = motion_on_athlete(m7(), saltus::test::junior_athlete());
   // A run whose left hip carries 3.52x its input and whose bounded try lands 171° off.
   OptimizationResult run;
   run.before = evaluate_motion(on_junior.motion, on_junior.model, EvaluateOptions{});
