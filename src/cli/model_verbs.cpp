@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "saltus/base/text_format.h"
 #include "saltus/body/joint_strength.h"
 #include "saltus/body/segment_names.h"
 #include "saltus/formats/model_file.h"
@@ -50,9 +51,9 @@ void print_strength(const saltus::BodyModel& model) {
 }
 
 void print_written(const char* verb, const saltus::BodyModel& model, const std::string& path) {
-  std::printf("saltus model %s: %s\n", verb, model.name.c_str());
+  std::printf("saltus model %s: %s\n", verb, saltus::printable(model.name).c_str());
   print_summary(saltus::summarize_model(model));
-  std::printf("  wrote %s\n", absolute_model_path(path).c_str());
+  std::printf("  wrote %s\n", saltus::printable(absolute_model_path(path)).c_str());
 }
 
 int run_new(const ModelArgs& args) {
@@ -75,7 +76,8 @@ int run_info(const ModelArgs& args) {
     std::printf("%s\n", saltus::model_summary_to_json(summary).dump(2).c_str());
     return 0;
   }
-  std::printf("saltus model info: %s (%s)\n", model.name.c_str(), args.model.c_str());
+  std::printf("saltus model info: %s (%s)\n", saltus::printable(model.name).c_str(),
+              saltus::printable(args.model).c_str());
   print_summary(summary);
   print_strength(model);
   return 0;
@@ -105,8 +107,8 @@ int run_yeadon(const ModelArgs& args) {
   }
   std::fflush(stdout);
   for (const std::string& warning : made.warnings)
-    std::fprintf(stderr, "saltus model yeadon: warning: %s: %s\n", args.model.c_str(),
-                 warning.c_str());
+    std::fprintf(stderr, "saltus model yeadon: warning: %s: %s\n",
+                 saltus::printable(args.model).c_str(), warning.c_str());
   return 0;
 }
 

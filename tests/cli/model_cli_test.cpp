@@ -98,5 +98,31 @@ TEST(CliModel, YeadonMeasurementsMakeAModelOrAreRefusedByKey) {
   EXPECT_FALSE(std::filesystem::exists(female));
 }
 
+TEST(CliModel, NamesThatAreNotUtf8ExitTwoNamingTheFlagOrFile) {
+  // Once exit 1 "internal error": the JSON writer met the bytes (issue 49 item 4).
+  test::TempDir dir;
+  const std::string out = dir / "x.model.json";
+  const std::string yeadon = std::string(SALTUS_EXAMPLES_DIR) + "/athletes/yeadon-male1.txt";
+  const std::string bad = "'j\xff'";
+  for (const std::string& command :
+       {"model new --height 1.45 --mass 38 --sex female --name " + bad + " --out " + out,
+        "model scale zatsiorsky-66kg --height 1.45 --mass 38 --name " + bad + " --out " + out,
+        "model yeadon " + yeadon + " --name " + bad + " --out " + out}) {
+    const auto run = test::run_cli(command);
+    EXPECT_EQ(run.status, 2) << command << "\n" << run.output;
+    EXPECT_NE(run.output.find("--name"), std::string::npos) << run.output;
+  }
+  const std::string renamed = dir / "male\xff.txt";
+  std::filesystem::copy_file(yeadon, renamed);
+  const auto file = test::run_cli("model yeadon '" + renamed + "' --out " + out);
+  EXPECT_EQ(file.status, 2) << file.output;
+  EXPECT_NE(file.output.find("male\\xFF.txt"), std::string::npos) << file.output;
+  const auto written = test::run_cli("model new --height 1.45 --mass 38 --sex female --out '" +
+                                     (dir / "j\xff.model.json") + "'");
+  EXPECT_EQ(written.status, 2) << written.output;
+  EXPECT_NE(written.output.find("UTF-8"), std::string::npos) << written.output;
+  EXPECT_EQ(test::names_in(dir.path()), std::set<std::string>{"male\xff.txt"});
+}
+
 }  // namespace
 }  // namespace saltus

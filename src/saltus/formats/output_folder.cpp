@@ -34,13 +34,25 @@ std::string system_reason(int error) {
   return std::strerror(error);
 }
 
+/// Refuses an output path whose absolute form `target` is not UTF-8 (`given` in the message):
+/// Saltus would write it and then refuse to read it back (base/input_file.h), and results record
+/// paths in UTF-8 JSON.
+void check_readable_name(const fs::path& target, const std::string& given) {
+  if (!is_valid_utf8(target.string()))
+    throw InputError(given, "",
+                     "the path is not valid UTF-8, so Saltus could not read back what it wrote "
+                     "there (it reads only UTF-8 file names, which its results record): choose "
+                     "another name");
+}
+
 /// The absolute, normalised folder a --out argument names. Throws InputError for paths that name
-/// no folder ("", "/").
+/// no folder ("", "/") or that Saltus could not read back (check_readable_name).
 fs::path target_of(const std::string& final_path) {
   if (final_path.empty()) throw InputError("--out", "", "the output folder path is empty");
   std::error_code ec;
   fs::path target = fs::absolute(final_path, ec).lexically_normal();
   if (ec) throw OutputError("cannot resolve " + final_path + ": " + ec.message(), false);
+  check_readable_name(target, final_path);
   if (target.filename().empty()) target = target.parent_path();  // "out/" -> "out"
   const std::string name = target.filename().string();
   if (name.empty() || name == "." || name == "..")
@@ -734,6 +746,7 @@ std::size_t write_output_file(const std::string& path, const std::string& plain_
   if (ec) throw OutputError("cannot resolve " + path + ": " + ec.message(), false);
   if (target.filename().empty() || target.filename() == "." || target.filename() == "..")
     throw InputError(path, "", "names no file Saltus can write");
+  check_readable_name(target, path);
   const std::string text = marked_text(kind, plain_text);
   const bool own = kind.mark != FileMark::kNone;
   const std::string never = "exists and " + unmarked_reason(kind, "") +

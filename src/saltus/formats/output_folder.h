@@ -47,7 +47,7 @@ class OutputFolder {
   /// Takes the lock of `final_path`, removes temporaries of dead runs, checks the folder may be
   /// replaced and creates the temporary folder for a result of `kind` (what its writer writes).
   /// Creates missing parent folders. Throws InputError (bad --out: a file, a link, someone
-  /// else's folder), OutputError (busy, or the system refused).
+  /// else's folder, a path that is not UTF-8), OutputError (busy, or the system refused).
   OutputFolder(std::string final_path, FolderKind kind);
   /// Removes the temporary folder unless commit() succeeded, and releases the lock.
   ~OutputFolder();
@@ -89,7 +89,8 @@ class OutputFolder {
 /// regular file of `kind` as Saltus wrote it (unmarked_reason is ""; asked again just before the
 /// move); a kind without a mark (BVH) never replaces a file: the move is renameat2
 /// RENAME_NOREPLACE, or link + unlink where the file system lacks it. Missing parent folders are
-/// created. Throws InputError when `path` may not be written (exit 2), OutputError when the
+/// created. Throws InputError when `path` may not be written (exit 2; also a path that is not
+/// UTF-8, which Saltus could not read back), OutputError when the
 /// system refuses (exit 4); either way nothing is left behind. Returns the bytes written.
 std::size_t write_output_file(const std::string& path, const std::string& text,
                               const FileKind& kind);

@@ -2,11 +2,10 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include "saltus/base/input_error.h"
+#include "saltus/base/input_file.h"
 #include "saltus/base/json_reader.h"
 #include "saltus/base/text_format.h"
 #include "saltus/body/yeadon_model.h"
@@ -16,7 +15,7 @@ namespace saltus {
 
 namespace {
 
-constexpr std::uintmax_t kMaxMeasurementFileBytes = 1u << 20;
+constexpr std::size_t kMaxMeasurementFileBytes = 1u << 20;
 
 std::string trimmed(const std::string& text) {
   const auto first = text.find_first_not_of(" \t\r");
@@ -115,17 +114,8 @@ YeadonMeasurementsFile parse_yeadon_measurements(const std::string& text, const 
 }
 
 YeadonMeasurementsFile load_yeadon_measurements(const std::string& path) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec))
-    throw InputError(path, "", "no such file (or not a regular file)");
-  if (fs::file_size(path, ec) > kMaxMeasurementFileBytes)
-    throw InputError(path, "", "larger than 1 MiB: not a measurement file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "", "cannot open the file");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  return parse_yeadon_measurements(buffer.str(), path);
+  return parse_yeadon_measurements(
+      read_input_file(path, kMaxMeasurementFileBytes, "measurement files"), path);
 }
 
 }  // namespace saltus

@@ -28,6 +28,16 @@ BodyModel checked(const BodyModel& model) {
   return parse_body_model(body_model_to_json(model), model.name);
 }
 
+/// `name` (--name) as a model's name: UTF-8 text, as a model file holds it (JSON).
+const std::string& checked_name(const std::string& name) {
+  if (!is_valid_utf8(name))
+    throw InputError("--name", "",
+                     "\"" + message_text(name) +
+                         "\" is not valid UTF-8 text; a model's name is written into its model "
+                         "file, which is UTF-8 JSON");
+  return name;
+}
+
 }  // namespace
 
 Sex parse_sex(const std::string& text, const std::string& field) {
@@ -79,6 +89,7 @@ StrengthSpec strength_from_flags(const std::string& reference, const std::string
 
 BodyModel new_athlete_model(const AthleteSize& size) {
   check_person_size(size.height_m, size.mass_kg, "--height", "--mass");
+  checked_name(size.name);
   return checked(de_leva_model(size));
 }
 
@@ -97,12 +108,12 @@ BodyModel load_model_argument(const std::string& model) {
 BodyModel scaled_athlete_model(const BodyModel& model, double height_m, double mass_kg,
                                const std::string& name) {
   check_person_size(height_m, mass_kg, "--height", "--mass");
+  std::string scaled_name = checked_name(name);
   const double height = standing_body(model).height();
   if (!(height > 0.0))
     throw InputError(model.name, "",
                      "the model has no standing height (no drawing shapes or joint offsets "
                      "along its segments), so it cannot be scaled to a height");
-  std::string scaled_name = name;
   if (scaled_name.empty()) {
     char text[64];
     std::snprintf(text, sizeof text, "-%.2fm-%.1fkg", height_m, mass_kg);
@@ -129,6 +140,7 @@ YeadonModel yeadon_athlete_model(const std::string& path, const std::string& den
                      "a mass of " + message_number(mass_kg) + " kg is outside the human range [" +
                          message_number(plausible::kMinBodyMass) + ", " +
                          message_number(plausible::kMaxBodyMass) + "] kg");
+  checked_name(name);
   const YeadonMeasurementsFile file = load_yeadon_measurements(path);
   input.file = path;
   input.measured = file.measured;

@@ -30,14 +30,16 @@ void check_person_size(double height_m, double mass_kg, const std::string& heigh
                        const std::string& mass_field);
 
 /// de Leva's model of a person (de_leva_model), after check_person_size on "--height" and
-/// "--mass", and read back through the model reader's checks, so every verb accepts it.
+/// "--mass" and a name of UTF-8 text ("--name"), and read back through the model reader's checks,
+/// so every verb accepts it.
 BodyModel new_athlete_model(const AthleteSize& size);
 
 /// A model file's path, or a bundled model's name (resources/models/); InputError if neither.
 BodyModel load_model_argument(const std::string& model);
 
 /// `model` scaled to a person `height_m` tall (its standing height, standing_body) weighing
-/// `mass_kg` (scale_body_model), after check_person_size; named `name`, or
+/// `mass_kg` (scale_body_model), after check_person_size; named `name` (UTF-8 text, else
+/// InputError naming --name), or
 /// "<model>-<H>m-<M>kg" when empty.
 BodyModel scaled_athlete_model(const BodyModel& model, double height_m, double mass_kg,
                                const std::string& name);
@@ -45,7 +47,8 @@ BodyModel scaled_athlete_model(const BodyModel& model, double height_m, double m
 /// Yeadon's model of the person measured in `path` (formats/yeadon_measurements_file.h):
 /// `densities` "dempster", "chandler" or "clauser" (else InputError naming --densities);
 /// `mass_kg` > 0 scales every density so the body weighs it (else the file's `totalmass`, if
-/// any); named `name`, or the file's name without its extension. The model must stand and weigh
+/// any); named `name` (UTF-8 text, else InputError naming --name), or the file's name without
+/// its extension. The model must stand and weigh
 /// like a person (check_person_size, naming the file) and pass the model reader.
 YeadonModel yeadon_athlete_model(const std::string& path, const std::string& densities,
                                  double mass_kg, const std::string& name);

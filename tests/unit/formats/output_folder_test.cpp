@@ -205,6 +205,24 @@ TEST(WriteOutputFile, TheLongestLegalNameIsWritten) {
   EXPECT_EQ(names_in(dir.path()), std::set<std::string>{name});
 }
 
+TEST(WriteOutputFile, AndOutputFolderRefuseANameSaltusCouldNotReadBack) {
+  test::TempDir dir;
+  const std::string file = dir / "flight\xff.bvh";  // not UTF-8: the readers refuse it
+  try {
+    write_output_file(file, "HIERARCHY\n", kBvh);
+    ADD_FAILURE() << "wrote " << file;
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), file);
+    EXPECT_NE(e.problem().find("UTF-8"), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).find('\xff'), std::string::npos) << "raw byte printed";
+  }
+  EXPECT_THROW(check_output_folder(dir / "run\xc3"), InputError);  // a cut two-byte character
+  EXPECT_THROW(OutputFolder(dir / "run\xc3", kRun), InputError);
+  EXPECT_TRUE(names_in(dir.path()).empty());
+  write_output_file(dir / "flight \u00e9.bvh", "HIERARCHY\n", kBvh);  // UTF-8: written
+  EXPECT_EQ(names_in(dir.path()), std::set<std::string>{"flight \u00e9.bvh"});
+}
+
 namespace hardening {
 
 namespace fs = std::filesystem;

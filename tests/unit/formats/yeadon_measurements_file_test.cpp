@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "saltus/base/input_error.h"
+#include "support/cli_runner.h"
 
 namespace saltus {
 namespace {
@@ -77,6 +78,27 @@ TEST(YeadonMeasurementsFile, BadLinesAreNamedByLineAndKey) {
   metres.replace(metres.find("= .01"), 5, "= 1.");
   EXPECT_NE(ymf_error_at(metres, &problem), "");
   EXPECT_NE(problem.find("measurementconversionfactor"), std::string::npos) << problem;
+}
+
+TEST(YeadonMeasurementsFile, TheFileGuardsOfEveryReader) {
+  // Through base/input_file.h: a name that is not UTF-8, a folder, a file too large.
+  test::TempDir dir;
+  const std::string bad_name = dir / "male\xff.txt";
+  test::write_text(bad_name, ymf_text("yeadon-male1.txt"));
+  try {
+    load_yeadon_measurements(bad_name);
+    ADD_FAILURE() << "read";
+  } catch (const InputError& e) {
+    EXPECT_NE(e.problem().find("UTF-8"), std::string::npos) << e.what();
+  }
+  try {
+    load_yeadon_measurements(dir.path().string());
+    ADD_FAILURE() << "read";
+  } catch (const InputError& e) {
+    EXPECT_NE(e.problem().find("folder"), std::string::npos) << e.what();
+  }
+  test::write_text(dir / "big.txt", std::string((1u << 20) + 1, '#'));
+  EXPECT_THROW(load_yeadon_measurements(dir / "big.txt"), InputError);
 }
 
 }  // namespace

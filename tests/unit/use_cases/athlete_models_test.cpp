@@ -45,6 +45,21 @@ TEST(AthleteModels, RefusesPeopleOutsideTheHumanRangeNamingTheFlag) {
   EXPECT_EQ(parse_sex("female", "--sex"), Sex::kFemale);
 }
 
+TEST(AthleteModels, ANameThatIsNotUtf8IsRefusedNamingTheFlag) {
+  AthleteSize size;
+  size.height_m = 1.6;
+  size.mass_kg = 50;
+  size.name = "junior\xfe";
+  EXPECT_EQ(ath_error_of([&] { new_athlete_model(size); }).file(), "--name");
+  const BodyModel bundled = load_model_argument("zatsiorsky-66kg");
+  EXPECT_EQ(ath_error_of([&] { scaled_athlete_model(bundled, 1.6, 50, "\xc3"); }).file(), "--name");
+  const std::string yeadon = std::string(SALTUS_EXAMPLES_DIR) + "/athletes/yeadon-male1.txt";
+  EXPECT_EQ(ath_error_of([&] { yeadon_athlete_model(yeadon, "dempster", 0, "\xff"); }).file(),
+            "--name");
+  size.name = "jüngste";  // UTF-8: kept
+  EXPECT_EQ(new_athlete_model(size).name, "jüngste");
+}
+
 TEST(AthleteModels, AFamilyOfAthletesAllPassTheModelReader) {
   std::mt19937 random(25);
   std::uniform_real_distribution<double> height(1.2, 2.0);
