@@ -21,6 +21,7 @@
 #include "app/legend_strip.h"
 #include "app/scene_widget.h"
 #include "app/timeline_widget.h"
+#include "app/verdict_text.h"
 #include "core/compare.h"
 #include "core/plot_series.h"
 #include "core/screen_fit.h"
@@ -196,6 +197,7 @@ void CompareWindow::set_runs(Run first, Run second, bool keep_time) {
     const QString model_part =
         r.label.contains(model) ? QString() : tr(" · model %1").arg(model.toHtmlEscaped());
     // The run's name on a line of its own, larger: which side is which must read at a glance.
+    QString tooltip;
     QString title =
         tr("<span style='color:%1; font-size:large'><b>%2</b></span><br>%3%4 · %5 · average root "
            "force <b>%6&nbsp;N</b>")
@@ -205,23 +207,19 @@ void CompareWindow::set_runs(Run first, Run second, bool keep_time) {
             .arg(e.metrics.avg_root_force, 0, 'g', 3);
     if (r.landing) {
       // Can this athlete land it? The verdict before anything that could read as success.
-      const AthleteLanding& l = *r.landing;
-      title += tr("<br><span style='color:%1'><b>%2</b></span><br>%3")
-                   .arg(l.lands ? "#1e7a34" : "#b00020",
-                        QString::fromStdString(l.headline).toHtmlEscaped(),
-                        QString::fromStdString(l.flight_words).toHtmlEscaped());
-      std::vector<std::string> warnings = l.over_strength;
-      warnings.insert(warnings.end(), l.warnings.begin(), l.warnings.end());
-      for (const std::string& warning : warnings)
-        title += tr("<br><span style='color:#b00020'>⚠ %1</span>")
-                     .arg(QString::fromStdString(warning).toHtmlEscaped());
+      const AthleteVerdict& v = r.landing->verdict;
+      // The verdict and its first reason; the others in the title's tooltip, so that the views
+      // keep their room.
+      title += "<br>" + verdict_html(v, true, 1);
+      tooltip = verdict_html(v);
       scenes_[i]->scene().set_what_if(
-          l.flight.samples, l.lands ? "free flight: lands it" : "free flight: does not land it",
+          v.flight.samples, verdict_figure_label(v),
           "this body's free flight from the same take-off (the same spin)");
     } else {
       scenes_[i]->scene().set_what_if({}, "");
     }
     titles_[i]->setText(title);
+    titles_[i]->setToolTip(tooltip);
     duration = compare_duration(duration, r.document->duration());
     frames = std::max(frames, r.document->frame_count(r.stage));
   }

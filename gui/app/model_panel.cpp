@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 
+#include "app/verdict_text.h"
 #include "core/model_edit.h"
 #include "saltus/body/segment_names.h"
 
@@ -112,22 +113,8 @@ void ModelPanel::refresh_landing() {
     landing_->clear();
     return;
   }
-  const Rgb light = strength_light_colour(l->strength_light);
-  QString text =
-      tr("<b>Can this athlete land it?</b><br><span style='color:%1'><b>%2</b></span><br>%3.<br>"
-         "<span style='color: rgb(%4, %5, %6)'>●</span> Joints: %7.")
-          .arg(l->lands ? "#1e7a34" : "#b00020",
-               QString::fromStdString(l->headline).toHtmlEscaped(),
-               QString::fromStdString(l->flight_words).toHtmlEscaped())
-          .arg(static_cast<int>(255 * light.r))
-          .arg(static_cast<int>(255 * light.g))
-          .arg(static_cast<int>(255 * light.b))
-          .arg(QString::fromStdString(l->strength_words).toHtmlEscaped());
-  std::vector<std::string> warnings = l->over_strength;
-  warnings.insert(warnings.end(), l->warnings.begin(), l->warnings.end());
-  for (const std::string& warning : warnings)
-    text += tr("<br><span style='color:#b00020'>⚠ %1</span>")
-                .arg(QString::fromStdString(warning).toHtmlEscaped());
+  // The library's one verdict: green only when it lands within the athlete's strength.
+  const QString text = tr("<b>Can this athlete land it?</b><br>") + verdict_html(l->verdict);
   landing_->setText(text);
 }
 

@@ -18,6 +18,7 @@
 #include <exception>
 
 #include "app/qt_text.h"
+#include "app/verdict_text.h"
 #include "app/vtk_image_widget.h"
 #include "saltus/body/athlete_model.h"
 #include "saltus/use_cases/athlete_models.h"
@@ -285,10 +286,10 @@ void NewAthleteDialog::refresh_landing() {
   }
   std::vector<StandingFigures::Figure> shown;
   if (landing_)
-    shown.push_back(
-        {*draft_.model, figure_label("", *draft_.model), false, landing_->flight.samples.back()});
+    shown.push_back({*draft_.model, figure_label("", *draft_.model), false,
+                     landing_->verdict.flight.samples.back()});
   shown.push_back({open_->model, figure_label(tr("in use:").toStdString(), open_->model), true,
-                   current_landing_->flight.samples.back()});
+                   current_landing_->verdict.flight.samples.back()});
   landing_figures_->set_figures(shown);
   landing_view_->request_render();
   landing_title_->setText(
@@ -299,22 +300,18 @@ void NewAthleteDialog::refresh_landing() {
     landing_details_->clear();
     return;
   }
-  const AthleteLanding& l = *landing_;
-  landing_headline_->setText(qstr(l.headline));
-  landing_headline_->setStyleSheet(l.lands ? "color: #1e7a34; font-weight: bold; font-size: 14pt;"
-                                           : "color: #b00020; font-weight: bold; font-size: 14pt;");
-  const Rgb light = strength_light_colour(l.strength_light);
+  // The library's one verdict on the new body, and the one on the body in use beside it.
+  const AthleteVerdict& v = landing_->verdict;
+  const AthleteVerdict& in_use = current_landing_->verdict;
+  landing_headline_->setText(qstr(v.headline));
+  landing_headline_->setStyleSheet(QString("color: %1; font-weight: bold; font-size: 14pt;")
+                                       .arg(QString::fromStdString(verdict_html_colour(v.light))));
   QStringList details;
-  details << qstr(l.flight_words) + ".";
-  details << tr("In use (%1): %2.").arg(qstr(open_->model.name), qstr(current_landing_->headline));
-  details << tr("<span style=\"color: rgb(%1, %2, %3);\">●</span> Joints of the keyframes "
-                "on this body: %4.")
-                 .arg(static_cast<int>(255 * light.r))
-                 .arg(static_cast<int>(255 * light.g))
-                 .arg(static_cast<int>(255 * light.b))
-                 .arg(qstr(l.strength_words).toHtmlEscaped());
-  for (const std::string& line : l.over_strength)
-    details << tr("<span style=\"color: #b00020;\">⚠ %1</span>").arg(qstr(line).toHtmlEscaped());
+  details << verdict_html(v, false);  // the headline is the label above, larger
+  details << tr("In use (%1): <span style=\"color: %2;\">%3</span>.")
+                 .arg(qstr(open_->model.name).toHtmlEscaped(),
+                      QString::fromStdString(verdict_html_colour(in_use.light)),
+                      qstr(in_use.headline).toHtmlEscaped());
   landing_details_->setText(details.join("<br>"));
 }
 

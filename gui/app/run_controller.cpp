@@ -13,8 +13,8 @@
 #include "app/optimization_runner.h"
 #include "app/optimize_panel.h"
 #include "saltus/evaluation/joint_loads.h"
-#include "saltus/evaluation/strength_demand.h"
 #include "saltus/optim/result_standing.h"
+#include "saltus/use_cases/athlete_verdict.h"
 
 namespace saltus::gui {
 
@@ -186,20 +186,22 @@ void RunController::on_finished(int tag, bool ok, const QString& error) {
   const OptimizationResult& r = *run.result;
   // The joints' verdict beside the root force: a run that zeroes the root force by making a
   // joint carry many times its input load is not physics to read as the athlete's. In the
-  // words of `saltus optimize`, with its warning when this body does not fly the keyframes
-  // with human joints.
+  // words of `saltus optimize`. Then the one verdict it prints (use_cases/athlete_verdict.h):
+  // whether the optimised motion lands within the athlete's strength, so that a run within its
+  // joint policy that asks more than the athlete's muscles give does not read as a success.
   const JointLoadRise& rise = run.standing.largest_rise;
   QString joints =
       rise.joint.empty()
           ? QString()
           : tr(" Joints: %1.").arg(QString::fromStdString(joint_load_verdict_words(rise)));
-  const std::string human = human_joints_warning(r, rise);
-  if (!human.empty()) joints += tr(" Beware: %1.").arg(QString::fromStdString(human));
-  // And what the optimised motion asks of the athlete's strength, as `saltus optimize` says it:
-  // a run within its joint policy may still ask more than the athlete's muscles can give.
-  joints += tr(" Strength: %1.")
-                .arg(QString::fromStdString(strength_verdict_words(ws.document().file().model,
-                                                                   r.after.check.strength_peaks)));
+  try {
+    const Document& d = ws.document();
+    joints += tr(" Can this athlete land it? %1.")
+                  .arg(QString::fromStdString(
+                      athlete_verdict(d.file(), d.evaluate_options(), r).headline));
+  } catch (const std::exception&) {
+    // Options the library refuses: the run itself says what went wrong.
+  }
   const QString outcome = tr("Run %1 %2 after %3 iterations in %4 s: average root force %5 → %6.%7")
                               .arg(run.number)
                               .arg(QString::fromStdString(status_text(r.solve.status)))

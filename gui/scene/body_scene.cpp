@@ -82,6 +82,8 @@ struct BodyScene::Impl {
   vtkNew<vtkBillboardTextActor3D> what_if_label;
   std::string what_if_legend;  ///< the legend's line for the gold figure
   std::vector<SampleRecord> what_if_samples;
+  /// The screen boxes of the figures' labels placed in this picture, so that none covers another.
+  std::vector<std::array<double, 4>> placed_labels;
   std::optional<SampleRecord> what_if_now;  ///< posed, its offset included
   scene::EnvironmentLayer environment{renderer};
   scene::PathLayer paths{renderer, overlay};
@@ -183,8 +185,9 @@ struct BodyScene::Impl {
   }
 
   /// Puts a label above a figure posed at `sample` moved by `offset`; where that would be drawn
-  /// over the words in the view's corners (the title of a short view), below its feet, else
-  /// beside it at its CoM's height (`side`: -1 to the left on the screen, +1 to the right).
+  /// over other words (over_words: the title of a short view, the inset, another figure's
+  /// label) or cut at the view's edge, below its feet, else beside it at its CoM's height
+  /// (`side`: -1 to the left on the screen, +1 to the right).
   void label_above(vtkBillboardTextActor3D* label, const SampleRecord& sample,
                    const Eigen::Vector3d& offset, int side) {
     const Eigen::Vector3d centre = sample.com + offset;
@@ -195,12 +198,15 @@ struct BodyScene::Impl {
     std::vector<Eigen::Vector3d> places = {above, below};
     if (const std::optional<Eigen::Vector3d> beside = beside_on_screen(label, centre, side))
       places.push_back(*beside);
+    Eigen::Vector3d chosen = above;
     for (const Eigen::Vector3d& at : places)
       if (!over_words(label, at)) {
-        label->SetPosition(at.x(), at.y(), at.z());
-        return;
+        chosen = at;
+        break;
       }
-    label->SetPosition(above.x(), above.y(), above.z());
+    label->SetPosition(chosen.x(), chosen.y(), chosen.z());
+    if (const std::optional<std::array<double, 4>> box = label_box(label, chosen))
+      placed_labels.push_back(*box);
   }
 
   /// The world point a label's width away from `at` on the screen, to the `side`, at its depth.
@@ -222,26 +228,49 @@ struct BodyScene::Impl {
   }
 
   /// Whether a label at `at` (world) would be drawn over the title, the numbers or the legend.
-  bool over_words(vtkBillboardTextActor3D* label, const Eigen::Vector3d& at) {
+  /// A label's box on the screen at `at` (x0, x1, y0, y1): centred on the point, its text as wide
+  /// as its characters; nullopt before the view has a size.
+  std::optional<std::array<double, 4>> label_box(vtkBillboardTextActor3D* label,
+                                                 const Eigen::Vector3d& at) {
     const int* size = renderer->GetSize();
-    if (size[0] <= 0 || size[1] <= 0) return false;
+    if (size[0] <= 0 || size[1] <= 0) return std::nullopt;
     renderer->SetWorldPoint(at.x(), at.y(), at.z(), 1.0);
     renderer->WorldToDisplay();
     const double* p = renderer->GetDisplayPoint();
-    // The label's box: centred on the point, its text as wide as its characters.
     const double font = label->GetTextProperty()->GetFontSize();
     const double half_width = 0.32 * font * std::strlen(label->GetInput() ? label->GetInput() : "");
-    const std::array<double, 4> box{p[0] - half_width, p[0] + half_width, p[1] - 0.2 * font,
-                                    p[1] + 1.2 * font};
+    return std::array<double, 4>{p[0] - half_width, p[0] + half_width, p[1] - 0.2 * font,
+                                 p[1] + 1.2 * font};
+  }
+
+  /// Whether a label at `at` would be cut at the view's edge or cover the words in its corners,
+  /// the whole-flight inset or a figure's label placed before it in this picture.
+  bool over_words(vtkBillboardTextActor3D* label, const Eigen::Vector3d& at) {
+    const std::optional<std::array<double, 4>> box = label_box(label, at);
+    if (!box) return false;
+    const auto overlaps = [&](const std::array<double, 4>& other) {
+      return (*box)[0] < other[1] && other[0] < (*box)[1] && (*box)[2] < other[3] &&
+             other[2] < (*box)[3];
+    };
+    const int* size = renderer->GetSize();
+    if ((*box)[0] < 0 || (*box)[1] > size[0] || (*box)[2] < 0 || (*box)[3] > size[1])
+      return true;  // cut at the view's edge
     for (const std::array<double, 4>& words : texts.boxes(renderer))
-      if (box[0] < words[1] && words[0] < box[1] && box[2] < words[3] && words[2] < box[3])
-        return true;
+      if (overlaps(words)) return true;
+    for (const std::array<double, 4>& placed : placed_labels)
+      if (overlaps(placed)) return true;
+    if (inset->GetDraw()) {  // the whole-flight inset, drawn over its corner of the view
+      const std::array<double, 4> corner{kInsetViewport[0] * size[0], kInsetViewport[2] * size[0],
+                                         kInsetViewport[1] * size[1], kInsetViewport[3] * size[1]};
+      if (overlaps(corner)) return true;
+    }
     return false;
   }
 
   /// Poses the figures beside the athlete, the capture's and the what-if flight's (again after
   /// the camera turned), and labels them.
   void place_beside(const SampleRecord& athlete) {
+    placed_labels.clear();
     if (capture_shown() && capture_now) {
       capture_body.pose(*capture_now, capture_offset());
       label_above(capture_label, *capture_now, capture_offset(), +1);

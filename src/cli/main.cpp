@@ -35,6 +35,7 @@
 #include "saltus/optim/result_standing.h"
 #include "saltus/optim/solver_memory.h"
 #include "saltus/use_cases/athlete_models.h"
+#include "saltus/use_cases/athlete_verdict.h"
 #include "saltus/use_cases/captures.h"
 #include "saltus/use_cases/result_folders.h"
 #include "study_verbs.h"
@@ -189,11 +190,14 @@ void print_outputs(const std::string& out_dir, double seconds) {
               absolute(out_dir).c_str(), seconds);
 }
 
-/// The motion against the athlete's strength: the verdict, then one line per joint beyond it.
-void print_strength(const saltus::BodyModel& model, const saltus::DenseCheck& check) {
-  std::printf("  strength: %s\n",
-              saltus::strength_verdict_words(model, check.strength_peaks).c_str());
-  for (const std::string& line : saltus::over_strength_lines(model, check.strength_peaks))
+/// The motion against the athlete's strength, then "can this athlete land it?" as the app says
+/// it (use_cases/athlete_verdict.h): the one verdict, then its reasons (each joint beyond the
+/// athlete's strength, with a run the joints' warnings).
+void print_verdict(const saltus::AthleteVerdict& verdict) {
+  std::printf("  strength: %s\n", verdict.strength_words.c_str());
+  std::printf("  can this athlete land it? %s: %s\n",
+              saltus::verdict_light_name(verdict.light).c_str(), verdict.headline.c_str());
+  for (const std::string& line : verdict.reasons)
     std::printf("    %s\n", line.c_str());
 }
 
@@ -215,7 +219,7 @@ int run_evaluate(const CommonArgs& args) {
                 e.keyframe_errors.max_rotation_error_deg);
     std::printf("  Yeadon's angles: %s\n",
                 rotation_words(written.at("rotation").at("before")).c_str());
-    print_strength(file.model, e.check);
+    print_verdict(saltus::athlete_verdict(file, options, e));
     print_apparatus(written);
     print_outputs(args.out_dir, seconds);
   }
@@ -393,9 +397,7 @@ int run_optimize(const CommonArgs& args) {
       std::printf("  joint loads: %s; largest rise at %s\n",
                   saltus::joint_load_verdict_words(rise).c_str(),
                   saltus::joint_load_rise_words(rise, saltus::body_weight_N(file.model)).c_str());
-    const std::string human_joints = saltus::human_joints_warning(result, rise);
-    if (!human_joints.empty()) std::printf("  %s\n", human_joints.c_str());
-    print_strength(file.model, result.after.check);
+    print_verdict(saltus::athlete_verdict(file, values.evaluate_options(), result));
     std::printf(
         "  wrote %s/{result.json, trajectory_before.csv, trajectory_after.csv, model.json, "
         "optimized.motion.json} in %.3f s\n",

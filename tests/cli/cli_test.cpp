@@ -102,6 +102,7 @@ TEST(Cli, EvaluateWritesTheDocumentedOutputs) {
 // the athlete's strength, largest first, each the share of result.json's entry for that joint;
 // and every share is its moment over its capacity. M5's interpolated input needs more than the
 // bundled athlete has at its elbow and shoulder; a junior made with `model new` has less still.
+// The verdict "can this athlete land it?" is then amber or red, never green.
 TEST(Cli, EvaluatePrintsTheJointsBeyondTheAthletesStrength) {
   TempDir dir;
   const std::string m5 = std::string(SALTUS_EXAMPLES_DIR) +
@@ -133,6 +134,17 @@ TEST(Cli, EvaluatePrintsTheJointsBeyondTheAthletesStrength) {
     EXPECT_GE(over, 1);
     EXPECT_NE(before["verdict"].get<std::string>().find(std::to_string(over) + " joint"),
               std::string::npos);
+    // The one verdict the app shows too: with a joint beyond the athlete's strength never green,
+    // and when it lands, it says which joints in the strength line's words.
+    const std::size_t said = run.output.find("  can this athlete land it? ");
+    ASSERT_NE(said, std::string::npos) << run.output;
+    const std::string line = run.output.substr(said, run.output.find('\n', said) - said);
+    EXPECT_EQ(line.find("? green:"), std::string::npos) << line;
+    if (line.find("? amber: Lands it") != std::string::npos)
+      EXPECT_NE(line.find(", but " + before["verdict"].get<std::string>()), std::string::npos)
+          << line;
+    else
+      EXPECT_NE(line.find("? red: Does not land it"), std::string::npos) << line;
     std::filesystem::remove_all(dir / "out");
   }
 }

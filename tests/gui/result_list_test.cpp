@@ -22,7 +22,7 @@
 #include "app/run_controller.h"
 #include "gui/support/open_motion_fixture.h"
 #include "saltus/evaluation/joint_loads.h"
-#include "saltus/evaluation/strength_demand.h"
+#include "saltus/use_cases/athlete_verdict.h"
 #include "support/cli_runner.h"
 
 namespace saltus::gui {
@@ -63,11 +63,12 @@ TEST_F(ResultListTest, ASolvedRunStaysShownWhateverComesAfter) {
   EXPECT_NE(
       window_->runs().panel()->message().indexOf(QString::fromStdString(" Joints: " + joints)), -1)
       << window_->runs().panel()->message().toStdString();
-  // And against the athlete's strength, in the words of `saltus optimize`.
-  const std::string strength = strength_verdict_words(window_->document().file().model,
-                                                      solved_result.after.check.strength_peaks);
+  // And the one verdict `saltus optimize` prints: can this athlete land it, the optimised motion
+  // against the athlete's strength (use_cases/athlete_verdict.h).
+  const AthleteVerdict verdict = athlete_verdict(
+      window_->document().file(), window_->document().evaluate_options(), solved_result);
   EXPECT_NE(window_->runs().panel()->message().indexOf(
-                QString::fromStdString(" Strength: " + strength + ".")),
+                QString::fromStdString(" Can this athlete land it? " + verdict.headline + ".")),
             -1)
       << window_->runs().panel()->message().toStdString();
 
