@@ -197,8 +197,11 @@ int show_motion(const CommandLine& c) {
   }
   if (c.benchmark) {
     const double fps = window.benchmark_playback(c.benchmark_seconds);
-    std::printf("playback: %.1f frames per second at %dx%d over %.1f s (%d 3D renders)\n", fps,
-                c.width, c.height, c.benchmark_seconds, window.benchmark_renders());
+    std::printf(
+        "playback: %.1f frames per second at %dx%d over %.1f s (%d 3D renders, %.1f ms CPU a "
+        "frame)\n",
+        fps, c.width, c.height, c.benchmark_seconds, window.benchmark_renders(),
+        window.benchmark_cpu_ms_per_frame());
   }
   return 0;
 }

@@ -32,8 +32,8 @@ constexpr double kOutlineMinWidth = 0.015;  ///< m
 /// Brightness added to the picked segment (its ambient light).
 constexpr double kHighlightAmbient = 0.45;
 constexpr double kGhostRadiusFactor = 0.35;  ///< keyframe poses drawn as thin figures
-constexpr int kRoundResolution = 28;         ///< around a capsule or an ellipsoid
-constexpr int kLengthResolution = 16;        ///< along them
+constexpr int kRoundResolution = 18;         ///< around a capsule or an ellipsoid
+constexpr int kLengthResolution = 10;        ///< along them
 
 /// The library's drawing colours (body/drawing_colours.h), which the flight page draws too.
 Rgb rgb(const DrawingColour& c) {

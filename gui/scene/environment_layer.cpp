@@ -1,11 +1,15 @@
 #include "scene/environment_layer.h"
 
+#include <vtkCellArray.h>
 #include <vtkCubeSource.h>
 #include <vtkPlaneSource.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 
 #include <cmath>
+#include <utility>
 
 #include "scene/vtk_util.h"
 
@@ -24,6 +28,10 @@ const Rgb kConcreteColour{0.70, 0.70, 0.68};
 const Rgb kPlatformTopColour{0.62, 0.50, 0.40};  ///< the non-slip surface
 const Rgb kWaterColour{0.12, 0.42, 0.64};
 const Rgb kGridColour{0.55, 0.58, 0.65};
+/// The grid's lines as if 55 % opaque over what is behind them: the view's background below the
+/// trampoline (the middle of its gradient), or the water.
+constexpr double kGridOpacity = 0.55;
+const Rgb kBehindFloorGrid{0.18, 0.21, 0.28};
 
 vtkSmartPointer<vtkActor> box(const Eigen::Vector3d& centre, const Eigen::Vector3d& size,
                               const Rgb& colour, const Eigen::Affine3d& pose) {
@@ -43,23 +51,53 @@ vtkSmartPointer<vtkActor> box(const Eigen::Vector3d& centre, const Eigen::Vector
   return actor;
 }
 
-vtkSmartPointer<vtkActor> plane(const Eigen::Vector3d& centre, double size, int cells,
-                                const Rgb& colour, bool wireframe) {
+vtkSmartPointer<vtkActor> plane(const Eigen::Vector3d& centre, double size, const Rgb& colour) {
   vtkNew<vtkPlaneSource> source;
   const double h = 0.5 * size;
   source->SetOrigin(centre.x() - h, centre.y(), centre.z() - h);
   source->SetPoint1(centre.x() + h, centre.y(), centre.z() - h);
   source->SetPoint2(centre.x() - h, centre.y(), centre.z() + h);
-  source->SetResolution(cells, cells);
   auto actor = actor_for(mapper_for(source->GetOutputPort()));
   set_colour(actor, colour);
-  if (wireframe) {
-    actor->GetProperty()->SetRepresentationToWireframe();
-    actor->GetProperty()->SetLighting(false);
-    actor->GetProperty()->SetOpacity(0.55);
-  }
   actor->PickableOff();
   return actor;
+}
+
+/// A square grid of `cells` × `cells` on the horizontal plane through `centre`: one line per grid
+/// line (not a wireframe of quads, which draws every inner edge twice), opaque and unlit in
+/// `colour`, the grid's colour already mixed with what lies behind it. A translucent grid would
+/// make VTK add its order-independent translucency passes over the whole view, which with
+/// software OpenGL cost a third of each frame during playback (docs/performance.md).
+vtkSmartPointer<vtkActor> grid(const Eigen::Vector3d& centre, double size, int cells,
+                               const Rgb& colour) {
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> lines;
+  const double h = 0.5 * size;
+  for (int i = 0; i <= cells; ++i) {
+    const double u = -h + size * i / cells;
+    for (const auto& [a, b] : {std::pair{Eigen::Vector3d(u, 0, -h), Eigen::Vector3d(u, 0, h)},
+                               std::pair{Eigen::Vector3d(-h, 0, u), Eigen::Vector3d(h, 0, u)}}) {
+      const Eigen::Vector3d from = centre + a, to = centre + b;
+      const vtkIdType ends[2] = {points->InsertNextPoint(from.data()),
+                                 points->InsertNextPoint(to.data())};
+      lines->InsertNextCell(2, ends);
+    }
+  }
+  vtkNew<vtkPolyData> data;
+  data->SetPoints(points);
+  data->SetLines(lines);
+  auto actor = actor_for(mapper_for(data));
+  set_colour(actor, colour);
+  actor->GetProperty()->SetLighting(false);
+  actor->PickableOff();
+  return actor;
+}
+
+/// `front` over `behind` at `opacity`: the colour a translucent line would have had.
+Rgb over(const Rgb& front, const Rgb& behind, double opacity) {
+  return {opacity * front.r + (1 - opacity) * behind.r,
+          opacity * front.g + (1 - opacity) * behind.g,
+          opacity * front.b + (1 - opacity) * behind.b};
 }
 
 }  // namespace
@@ -102,8 +140,8 @@ void EnvironmentLayer::build(const Apparatus& a, const Eigen::AlignedBox3d& flig
         true);
     add(box({0, -0.5 * kBedThickness, 0}, {kBedWidth, kBedThickness, kBedLength}, kBedColour, pose),
         true);
-    add(plane(a.takeoff_point - Eigen::Vector3d(0, 0.08, 0), kWaterSize / 2, kGridCells / 2,
-              kGridColour, true),
+    add(grid(a.takeoff_point - Eigen::Vector3d(0, 0.08, 0), kWaterSize / 2, kGridCells / 2,
+             over(kGridColour, kBehindFloorGrid, kGridOpacity)),
         false);
     for (double x : {-kFrameWidth / 2, kFrameWidth / 2})
       for (double z : {-kFrameLength / 2, kFrameLength / 2})
@@ -124,13 +162,13 @@ void EnvironmentLayer::build(const Apparatus& a, const Eigen::AlignedBox3d& flig
             pose),
         true);
     const Eigen::Vector3d water_centre(a.takeoff_point.x(), a.landing_height, a.takeoff_point.z());
-    auto water = plane(water_centre, kWaterSize, 1, kWaterColour, false);
+    auto water = plane(water_centre, kWaterSize, kWaterColour);
     water->GetProperty()->SetAmbient(0.35);
     water->GetProperty()->SetSpecular(0.4);
     water->GetProperty()->SetSpecularPower(40.0);
     add(water, true);
-    add(plane(water_centre + Eigen::Vector3d(0, 0.003, 0), kWaterSize, kGridCells,
-              lighter(kWaterColour, 0.35), true),
+    add(grid(water_centre + Eigen::Vector3d(0, 0.003, 0), kWaterSize, kGridCells,
+             over(lighter(kWaterColour, 0.35), kWaterColour, kGridOpacity)),
         false);
     for (double x : {-kPlatformWidth / 2, kPlatformWidth / 2})
       for (double z : {back * 0.4, kPlatformEdgeAhead})
