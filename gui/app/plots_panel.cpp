@@ -101,6 +101,11 @@ PlotsPanel::PlotsPanel(AppContext& context, QWidget* parent)
   auto* joint_charts = new QHBoxLayout;
   joint_force_chart_ = new ChartWidget(joint_tab_);
   joint_moment_chart_ = new ChartWidget(joint_tab_);
+  // Lower than the root force's charts may be: under the peaks' two lines and the optimiser's
+  // rise, a 1366x768 screen leaves them about 130 px, and a taller minimum cut their time axis
+  // off at the tab's bottom.
+  for (ChartWidget* chart : {joint_force_chart_, joint_moment_chart_})
+    chart->setMinimumHeight(110);
   joint_charts->addWidget(with_legend_strip(joint_force_chart_, joint_tab_));
   joint_charts->addWidget(with_legend_strip(joint_moment_chart_, joint_tab_));
   joint_layout->addLayout(joint_charts, 1);

@@ -194,22 +194,23 @@ void RunController::on_finished(int tag, bool ok, const QString& error) {
       rise.joint.empty()
           ? QString()
           : tr(" Joints: %1.").arg(QString::fromStdString(joint_load_verdict_words(rise)));
+  QString verdict;  // in a few words for the status bar, where a long line is cut
   try {
     const Document& d = ws.document();
-    joints += tr(" Can this athlete land it? %1.")
-                  .arg(QString::fromStdString(
-                      athlete_verdict(d.file(), d.evaluate_options(), r).headline));
+    const AthleteVerdict v = athlete_verdict(d.file(), d.evaluate_options(), r);
+    joints += tr(" Can this athlete land it? %1.").arg(QString::fromStdString(v.headline));
+    verdict = tr(" %1 (Optimise panel).").arg(QString::fromStdString(v.summary));
   } catch (const std::exception&) {
     // Options the library refuses: the run itself says what went wrong.
   }
-  const QString outcome = tr("Run %1 %2 after %3 iterations in %4 s: average root force %5 → %6.%7")
-                              .arg(run.number)
-                              .arg(QString::fromStdString(status_text(r.solve.status)))
-                              .arg(r.solve.iterations)
-                              .arg(r.solve.seconds, 0, 'f', 1)
-                              .arg(newtons(r.before.metrics.avg_root_force))
-                              .arg(newtons(r.after.metrics.avg_root_force))
-                              .arg(joints);
+  const QString forces = tr("Run %1 %2 after %3 iterations in %4 s: average root force %5 → %6.")
+                             .arg(run.number)
+                             .arg(QString::fromStdString(status_text(r.solve.status)))
+                             .arg(r.solve.iterations)
+                             .arg(r.solve.seconds, 0, 'f', 1)
+                             .arg(newtons(r.before.metrics.avg_root_force))
+                             .arg(newtons(r.after.metrics.avg_root_force));
+  const QString outcome = forces + joints;
   QString where;
   if (ws.shown_run() == index) {
     where = tr(" Shown now (View > After).");
@@ -227,7 +228,7 @@ void RunController::on_finished(int tag, bool ok, const QString& error) {
     where = tr(" Not better than the interpolated keyframes; choose it in the list to see it.");
   }
   panel_->show_message(outcome + where);
-  context_.status(outcome, 10000);
+  context_.status(forces + verdict, 10000);
   emit finished(true);
 }
 

@@ -10,6 +10,7 @@
 #include <QLabel>
 #include <QListWidget>
 #include <QProgressBar>
+#include <QStatusBar>
 #include <QTest>
 #include <cctype>
 #include <filesystem>
@@ -71,6 +72,11 @@ TEST_F(ResultListTest, ASolvedRunStaysShownWhateverComesAfter) {
                 QString::fromStdString(" Can this athlete land it? " + verdict.headline + ".")),
             -1)
       << window_->runs().panel()->message().toStdString();
+  // The status bar, where a long line is cut, gives it in a few words.
+  EXPECT_NE(window_->statusBar()->currentMessage().indexOf(
+                QString::fromStdString(" " + verdict.summary + " (Optimise panel).")),
+            -1)
+      << window_->statusBar()->currentMessage().toStdString();
 
   // A run that stops after one iteration: worse, not solved, listed but not shown.
   const int early = run(1);

@@ -55,12 +55,14 @@ AthleteVerdict verdict_of(const Motion& flown, const BodyModel& model,
     out.light = VerdictLight::kRed;
     out.headline = "Does not land it: " + landing.verdict +
                    format_number(" (more than %.0f° off)", out.tolerance_deg);
+    out.summary = "Does not land it";
   } else if (!human.empty()) {
     // It lands only because a joint pays: with the joints its input needs, it does not.
     out.light = VerdictLight::kRed;
     out.headline =
         "Does not land it with human joints: the optimised motion lands only because a joint "
         "carries many times its load";
+    out.summary = "Does not land it with human joints";
   } else {
     const std::string landed =
         "Lands it" +
@@ -70,15 +72,19 @@ AthleteVerdict verdict_of(const Motion& flown, const BodyModel& model,
     if (!strength_known) {
       out.light = VerdictLight::kAmber;
       out.headline = landed + ", but its joints cannot be checked: " + out.strength_words;
+      out.summary = "Lands it; its joints cannot be checked";
     } else if (!within_strength) {
       out.light = VerdictLight::kAmber;
       out.headline = landed + ", but " + out.strength_words;
+      out.summary = "Lands it, but " + out.strength_words.substr(0, out.strength_words.find(" ("));
     } else if (!pays.empty()) {
       out.light = VerdictLight::kAmber;
       out.headline = landed + ", but the optimiser made a joint pay for the root force";
+      out.summary = "Lands it, but a joint pays for the root force";
     } else {
       out.light = VerdictLight::kGreen;
       out.headline = landed + ", " + out.strength_words;
+      out.summary = "Lands it within the athlete's strength";
     }
   }
   return out;

@@ -32,6 +32,10 @@ struct AthleteVerdict {
   /// athlete's strength (largest: left hip extension, 352 % at t = 0.84 s)", "Does not land it:
   /// you land 91° short in somersault, 180° over in twist (more than 15° off)".
   std::string headline;
+  /// The verdict in a few words, for a line with no room (a status bar): "Lands it within the
+  /// athlete's strength", "Lands it, but 8 joints beyond the athlete's strength", "Does not
+  /// land it".
+  std::string summary;
   /// The lines under it, in the CLI's words: each joint beyond the athlete's strength
   /// (over_strength_lines), and with a run joint_load_verdict_words when a joint pays and
   /// human_joints_warning when it applies.

@@ -53,6 +53,7 @@ TEST(AthleteVerdict, GreenWhenItLandsWithinTheAthletesStrength) {
   EXPECT_LE(std::abs(v.somersault_over_deg), v.tolerance_deg);
   EXPECT_LE(std::abs(v.twist_over_deg), v.tolerance_deg);
   EXPECT_EQ(verdict_light_name(v.light), "green");
+  EXPECT_EQ(v.summary, "Lands it within the athlete's strength");
 }
 
 TEST(AthleteVerdict, AmberWhenItLandsButAJointIsBeyondTheAthletesStrength) {
@@ -73,6 +74,9 @@ TEST(AthleteVerdict, AmberWhenItLandsButAJointIsBeyondTheAthletesStrength) {
   EXPECT_EQ(v.reasons, over_strength_lines(weak, check.strength_peaks));
   EXPECT_FALSE(v.reasons.empty());
   EXPECT_EQ(verdict_light_name(v.light), "amber");
+  const int over = static_cast<int>(v.reasons.size());
+  EXPECT_EQ(v.summary, "Lands it, but " + std::to_string(over) +
+                           (over == 1 ? " joint" : " joints") + " beyond the athlete's strength");
 }
 
 TEST(AthleteVerdict, RedWhenItDoesNotLandWhateverTheJoints) {
@@ -90,6 +94,7 @@ TEST(AthleteVerdict, RedWhenItDoesNotLandWhateverTheJoints) {
   EXPECT_LT(v.somersault_over_deg, -90.0);
   EXPECT_NEAR(v.landing_error_deg, simulated.landing_root_error_deg, 1e-9);
   EXPECT_EQ(verdict_light_name(v.light), "red");
+  EXPECT_EQ(v.summary, "Does not land it");
 }
 
 TEST(AthleteVerdict, ARunThatLandsOnlyBecauseAJointPaysIsRedOneWhoseJointPaysIsAmber) {
