@@ -94,7 +94,7 @@ int run_scale(const ModelArgs& args) {
 
 int run_yeadon(const ModelArgs& args) {
   saltus::YeadonModel made =
-      saltus::yeadon_athlete_model(args.model, args.densities, args.mass, args.name);
+      saltus::yeadon_athlete_model(args.model, args.densities, args.yeadon_mass, args.name);
   made.model.strength = saltus::strength_from_flags(args.strength, args.sex, args.age);
   saltus::write_athlete_model(args.out_path, made.model);
   if (!args.quiet) {
@@ -186,7 +186,7 @@ void add_model_verbs(CLI::App& app, ModelVerbs& verbs) {
       ->required();
   yeadon->add_option("--densities", y.densities, "segment densities: dempster, chandler, clauser")
       ->check(CLI::IsMember({"dempster", "chandler", "clauser"}));
-  yeadon->add_option("--mass", y.mass,
+  yeadon->add_option("--mass", y.yeadon_mass,
                      "body mass, kg: scales every density to it (default: the file's totalmass, "
                      "else the densities' own mass)");
   y.sex = "male";

@@ -17,6 +17,7 @@ struct ModelArgs {
   double age = 21.0;                    ///< new, yeadon: years, for the strength tables
   std::string strength = "population";  ///< new, yeadon: whose strength
   std::string densities = "dempster";   ///< yeadon
+  std::optional<double> yeadon_mass;    ///< yeadon: --mass, when given
   std::string name;
   std::string out_path;
   bool json = false;

@@ -92,6 +92,13 @@ TEST(CliModel, YeadonMeasurementsMakeAModelOrAreRefusedByKey) {
       << repaired.output;
   ASSERT_TRUE(std::filesystem::exists(female));
   std::filesystem::remove(female);
+  // --mass 0 is a mass given, outside the documented 10-300 kg (once taken for "not given").
+  const auto zero =
+      test::run_cli("model yeadon " + athletes + "yeadon-male1.txt --mass 0 --out " + female);
+  EXPECT_EQ(zero.status, 2) << zero.output;
+  EXPECT_NE(zero.output.find("--mass: a mass of 0 kg is outside the human range [10, 300] kg"),
+            std::string::npos)
+      << zero.output;
   const auto densities = test::run_cli("model yeadon " + athletes +
                                        "yeadon-male1.txt --densities average --out " + female);
   EXPECT_EQ(densities.status, 2) << densities.output;

@@ -286,8 +286,8 @@ double JsonNode::as_double_within(double low, double high, const std::string& un
   const double v = as_double();
   if (!(v >= low && v <= high)) {
     const std::string u = unit.empty() ? std::string() : " " + unit;
-    fail(message_number(v) + u + " is outside the plausible range [" + message_number(low) + ", " +
-         message_number(high) + "]" + u);
+    fail(message_number_beside(v, low, high) + u + " is outside the plausible range [" +
+         message_number(low) + ", " + message_number(high) + "]" + u);
   }
   return v;
 }

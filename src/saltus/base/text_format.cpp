@@ -88,6 +88,14 @@ std::string message_number(double value) {
   return out.str();
 }
 
+std::string message_number_beside(double value, double low, double high) {
+  const std::string text = message_number(value);
+  if ((value != low && text == message_number(low)) ||
+      (value != high && text == message_number(high)))
+    return exact_number(value);
+  return text;
+}
+
 std::string exact_number(double value) {
   char buffer[32];
   if (value == 0.0) value = 0.0;  // no "-0"

@@ -16,6 +16,11 @@ std::string format_number(const char* pattern, double value);
 /// error message.
 std::string message_number(double value);
 
+/// `value` for a message that puts it beside the range [low, high]: message_number, or every
+/// digit it needs (exact_number) where six would print it as a bound it is not ("300.0000001 kg
+/// is outside [10, 300]", not "300 kg is outside [10, 300]").
+std::string message_number_beside(double value, double low, double high);
+
 /// The shortest text that reads back to the same double (std::to_chars), "0" for −0: the exact
 /// numbers of data files (the exports write every number so).
 std::string exact_number(double value);

@@ -37,6 +37,10 @@ inline constexpr double kMaxBodyMass = 300.0;
 /// 38 kg junior is 18, a 1.85 m, 85 kg senior 25. Outside [8, 80] a number was mistyped.
 inline constexpr double kMinBodyMassIndex = 8.0;
 inline constexpr double kMaxBodyMassIndex = 80.0;
+/// m: one of Yeadon's measurements (`model yeadon`): a length, perimeter, width or depth. A
+/// child's thumb is over 1 cm wide, a heavy man's hips about 1.5 m around.
+inline constexpr double kMinBodyMeasurement = 1e-3;
+inline constexpr double kMaxBodyMeasurement = 2.0;
 /// years: an athlete's age (`model new --age`, a model's strength). Anderson's groups span
 /// 18-80; children and the very old are read by the nearest group (joint_strength.h).
 inline constexpr double kMinAgeYears = 5.0;

@@ -34,6 +34,7 @@ YeadonMeasurementsFile parse_yeadon_measurements(const std::string& text, const 
   YeadonMeasurementsFile out;
   std::map<std::string, double> raw;
   bool has_factor = false;
+  bool has_total_mass = false;
   std::istringstream lines(text);
   std::string line;
   int number = 0;
@@ -51,7 +52,9 @@ YeadonMeasurementsFile parse_yeadon_measurements(const std::string& text, const 
     const std::string value_text = trimmed(content.substr(split + 1));
     char* end = nullptr;
     const double value = std::strtod(value_text.c_str(), &end);
-    if (value_text.empty() || *end != '\0' || !std::isfinite(value))
+    // A NUL byte would end the number for strtod and hide the rest of the value.
+    if (value_text.empty() || end != value_text.c_str() + value_text.size() ||
+        !std::isfinite(value))
       throw InputError(file, where + ": " + printable(key),
                        "expected a number, found \"" + printable(value_text.substr(0, 60)) + "\"");
     if (key == "measurementconversionfactor") {
@@ -66,11 +69,17 @@ YeadonMeasurementsFile parse_yeadon_measurements(const std::string& text, const 
       continue;
     }
     if (key == "totalmass") {
+      if (has_total_mass) throw InputError(file, where + ": totalmass", "given twice");
+      has_total_mass = true;
       if (value > 0.0 && !(value >= plausible::kMinBodyMass && value <= plausible::kMaxBodyMass))
-        throw InputError(file, where + ": totalmass",
-                         "a mass of " + message_number(value) + " kg is outside the human range [" +
-                             message_number(plausible::kMinBodyMass) + ", " +
-                             message_number(plausible::kMaxBodyMass) + "] kg");
+        throw InputError(
+            file, where + ": totalmass",
+            "a mass of " +
+                message_number_beside(value, plausible::kMinBodyMass, plausible::kMaxBodyMass) +
+                " kg is outside the human range [" + message_number(plausible::kMinBodyMass) +
+                ", " + message_number(plausible::kMaxBodyMass) +
+                "] kg (0 or less: not "
+                "measured)");
       out.total_mass = value > 0.0 ? value : 0.0;
       continue;
     }
@@ -102,10 +111,14 @@ YeadonMeasurementsFile parse_yeadon_measurements(const std::string& text, const 
                            " of Yeadon's 95 are missing)");
   for (const auto& [key, value] : raw) {
     const double metres = value * out.conversion_factor;
-    if (!(metres <= plausible::kMaxSegmentLength * 0.2))
+    if (!(metres >= plausible::kMinBodyMeasurement && metres <= plausible::kMaxBodyMeasurement))
       throw InputError(file, key,
-                       message_number(metres) +
-                           " m is longer than any body part: is "
+                       message_number_beside(metres, plausible::kMinBodyMeasurement,
+                                             plausible::kMaxBodyMeasurement) +
+                           " m is outside [" + message_number(plausible::kMinBodyMeasurement) +
+                           ", " + message_number(plausible::kMaxBodyMeasurement) + "] m, " +
+                           (metres > plausible::kMaxBodyMeasurement ? "longer" : "shorter") +
+                           " than any body part's length, perimeter, width or depth: is "
                            "measurementconversionfactor (" +
                            message_number(out.conversion_factor) + ") the unit of the values?");
     out.measured[key] = metres;

@@ -17,10 +17,11 @@ struct YeadonMeasurementsFile {
 };
 
 /// Parses the text. `file` names it in messages. Refused with InputError naming the file and
-/// "line N" or the key: a line that is not `key = value`, a value that is not a number, an
-/// unknown key (the nearest known one suggested), a key given twice, a missing key or
-/// conversion factor, a measurement or factor that is not positive, a total mass beyond a
-/// person's.
+/// "line N" or the key: a line that is not `key = value`, a value that is not a number (a NUL
+/// byte in it included), an unknown key (the nearest known one suggested), a key given twice
+/// (totalmass and the factor too), a missing key or conversion factor, a factor that is not
+/// positive, a measurement outside [kMinBodyMeasurement, kMaxBodyMeasurement] in metres
+/// (plausible_ranges.h), a total mass beyond a person's.
 YeadonMeasurementsFile parse_yeadon_measurements(const std::string& text, const std::string& file);
 
 /// Reads a file (a regular file of at most 1 MiB) and parses it.

@@ -28,6 +28,13 @@ BodyModel checked(const BodyModel& model) {
   return parse_body_model(body_model_to_json(model), model.name);
 }
 
+std::string mass_outside_the_human_range(double mass_kg) {
+  return "a mass of " +
+         message_number_beside(mass_kg, plausible::kMinBodyMass, plausible::kMaxBodyMass) +
+         " kg is outside the human range [" + message_number(plausible::kMinBodyMass) + ", " +
+         message_number(plausible::kMaxBodyMass) + "] kg";
+}
+
 /// `name` (--name) as a model's name: UTF-8 text, as a model file holds it (JSON).
 const std::string& checked_name(const std::string& name) {
   if (!is_valid_utf8(name))
@@ -49,24 +56,24 @@ Sex parse_sex(const std::string& text, const std::string& field) {
 void check_person_size(double height_m, double mass_kg, const std::string& height_field,
                        const std::string& mass_field) {
   if (!(height_m >= plausible::kMinStature && height_m <= plausible::kMaxStature))
-    throw InputError(height_field, "",
-                     "a height of " + message_number(height_m) + " m is outside the human range [" +
-                         message_number(plausible::kMinStature) + ", " +
-                         message_number(plausible::kMaxStature) + "] m (the height is in metres)");
+    throw InputError(
+        height_field, "",
+        "a height of " +
+            message_number_beside(height_m, plausible::kMinStature, plausible::kMaxStature) +
+            " m is outside the human range [" + message_number(plausible::kMinStature) + ", " +
+            message_number(plausible::kMaxStature) + "] m (the height is in metres)");
   if (!(mass_kg >= plausible::kMinBodyMass && mass_kg <= plausible::kMaxBodyMass))
-    throw InputError(mass_field, "",
-                     "a mass of " + message_number(mass_kg) + " kg is outside the human range [" +
-                         message_number(plausible::kMinBodyMass) + ", " +
-                         message_number(plausible::kMaxBodyMass) + "] kg");
+    throw InputError(mass_field, "", mass_outside_the_human_range(mass_kg));
   const double bmi = mass_kg / (height_m * height_m);
   if (!(bmi >= plausible::kMinBodyMassIndex && bmi <= plausible::kMaxBodyMassIndex))
-    throw InputError(mass_field, "",
-                     message_number(mass_kg) + " kg at " + message_number(height_m) +
-                         " m is a body mass index of " + message_number(bmi) +
-                         " kg/m², outside the human range [" +
-                         message_number(plausible::kMinBodyMassIndex) + ", " +
-                         message_number(plausible::kMaxBodyMassIndex) +
-                         "]: is the height or the mass mistyped?");
+    throw InputError(
+        mass_field, "",
+        message_number(mass_kg) + " kg at " + message_number(height_m) +
+            " m is a body mass index of " +
+            message_number_beside(bmi, plausible::kMinBodyMassIndex, plausible::kMaxBodyMassIndex) +
+            " kg/m², outside the human range [" + message_number(plausible::kMinBodyMassIndex) +
+            ", " + message_number(plausible::kMaxBodyMassIndex) +
+            "]: is the height or the mass mistyped?");
 }
 
 StrengthSpec strength_from_flags(const std::string& reference, const std::string& sex,
@@ -79,10 +86,12 @@ StrengthSpec strength_from_flags(const std::string& reference, const std::string
   spec.reference = reference;
   spec.female = parse_sex(sex, "--sex") == Sex::kFemale;
   if (!(age_years >= plausible::kMinAgeYears && age_years <= plausible::kMaxAgeYears))
-    throw InputError("--age", "",
-                     "an age of " + message_number(age_years) + " years is outside [" +
-                         message_number(plausible::kMinAgeYears) + ", " +
-                         message_number(plausible::kMaxAgeYears) + "] years");
+    throw InputError(
+        "--age", "",
+        "an age of " +
+            message_number_beside(age_years, plausible::kMinAgeYears, plausible::kMaxAgeYears) +
+            " years is outside [" + message_number(plausible::kMinAgeYears) + ", " +
+            message_number(plausible::kMaxAgeYears) + "] years");
   spec.age_years = age_years;
   return spec;
 }
@@ -123,8 +132,11 @@ BodyModel scaled_athlete_model(const BodyModel& model, double height_m, double m
       scale_body_model(model, height_m / height, mass_kg / model.total_mass(), scaled_name));
 }
 
-YeadonModel yeadon_athlete_model(const std::string& path, const std::string& densities,
-                                 double mass_kg, const std::string& name) {
+namespace {
+
+/// The flags of `model yeadon` checked, before any file is read.
+YeadonInput yeadon_flags(const std::string& densities, std::optional<double> mass_kg,
+                         const std::string& name) {
   YeadonInput input;
   if (densities == "dempster")
     input.densities = YeadonDensities::kDempster;
@@ -135,25 +147,52 @@ YeadonModel yeadon_athlete_model(const std::string& path, const std::string& den
   else
     throw InputError("--densities", "",
                      "expected dempster, chandler or clauser, found \"" + densities + "\"");
-  if (mass_kg != 0.0 && !(mass_kg >= plausible::kMinBodyMass && mass_kg <= plausible::kMaxBodyMass))
-    throw InputError("--mass", "",
-                     "a mass of " + message_number(mass_kg) + " kg is outside the human range [" +
-                         message_number(plausible::kMinBodyMass) + ", " +
-                         message_number(plausible::kMaxBodyMass) + "] kg");
-  checked_name(name);
-  const YeadonMeasurementsFile file = load_yeadon_measurements(path);
+  if (mass_kg && !(*mass_kg >= plausible::kMinBodyMass && *mass_kg <= plausible::kMaxBodyMass))
+    throw InputError("--mass", "", mass_outside_the_human_range(*mass_kg));
+  input.name = checked_name(name);
+  input.total_mass = mass_kg.value_or(0.0);
+  return input;
+}
+
+/// Yeadon's model of `file`'s measurements (read from `path`) with the checked flags `input`.
+YeadonModel yeadon_model_of(YeadonInput input, const YeadonMeasurementsFile& file,
+                            const std::string& path) {
   input.file = path;
   input.measured = file.measured;
-  input.total_mass = mass_kg > 0.0 ? mass_kg : file.total_mass;
-  input.name = name.empty() ? std::filesystem::path(path).stem().string() : name;
+  if (!(input.total_mass > 0.0)) input.total_mass = file.total_mass;
+  if (input.name.empty()) input.name = std::filesystem::path(path).stem().string();
   YeadonModel out = yeadon_model(input);
   const StandingBody standing = standing_body(out.model);
-  check_person_size(standing.height(), out.model.total_mass(),
+  // A mass given was checked as given: the densities scaled to it sum to it only to rounding
+  // (300 kg gave 300.00000000000006).
+  check_person_size(standing.height(),
+                    input.total_mass > 0.0 ? input.total_mass : out.model.total_mass(),
                     path + " (the standing height it gives)",
                     path + (input.total_mass > 0.0 ? " (--mass or totalmass)"
                                                    : " (the mass its densities give)"));
   out.model = checked(out.model);
   return out;
+}
+
+}  // namespace
+
+YeadonModel yeadon_athlete_model(const std::string& path, const std::string& densities,
+                                 std::optional<double> mass_kg, const std::string& name) {
+  const YeadonInput input = yeadon_flags(densities, mass_kg, name);
+  return yeadon_model_of(input, load_yeadon_measurements(path), path);
+}
+
+YeadonModel yeadon_athlete_model_of_text(const std::string& text, const std::string& path,
+                                         const std::string& densities,
+                                         std::optional<double> mass_kg, const std::string& name) {
+  const YeadonInput input = yeadon_flags(densities, mass_kg, name);
+  return yeadon_model_of(input, parse_yeadon_measurements(text, path), path);
+}
+
+YeadonModel yeadon_athlete_model(const std::string& path, const std::string& densities,
+                                 double mass_kg, const std::string& name) {
+  return yeadon_athlete_model(path, densities,
+                              mass_kg == 0.0 ? std::nullopt : std::optional<double>(mass_kg), name);
 }
 
 void write_athlete_model(const std::string& path, const BodyModel& model) {

@@ -4,6 +4,7 @@
 /// athletes, checked like any model file and written like every file Saltus writes.
 /// docs/cli.md, "model"; the method in docs/method.md, "Athletes' body models".
 
+#include <optional>
 #include <string>
 
 #include "saltus/body/athlete_model.h"
@@ -46,10 +47,20 @@ BodyModel scaled_athlete_model(const BodyModel& model, double height_m, double m
 
 /// Yeadon's model of the person measured in `path` (formats/yeadon_measurements_file.h):
 /// `densities` "dempster", "chandler" or "clauser" (else InputError naming --densities);
-/// `mass_kg` > 0 scales every density so the body weighs it (else the file's `totalmass`, if
-/// any); named `name` (UTF-8 text, else InputError naming --name), or the file's name without
-/// its extension. The model must stand and weigh
-/// like a person (check_person_size, naming the file) and pass the model reader.
+/// `mass_kg`, when given, within the human range (else InputError naming --mass; 0 too), scales
+/// every density so the body weighs it (else the file's `totalmass`, if any); named `name`
+/// (UTF-8 text, else InputError naming --name), or the file's name without its extension. The
+/// model must stand and weigh like a person (check_person_size, naming the file) and pass the
+/// model reader.
+YeadonModel yeadon_athlete_model(const std::string& path, const std::string& densities,
+                                 std::optional<double> mass_kg, const std::string& name);
+/// The same of a measurement file's text, as read from `path` (which names it in messages and
+/// the model when `name` is empty): for text in memory (the fuzz target).
+YeadonModel yeadon_athlete_model_of_text(const std::string& text, const std::string& path,
+                                         const std::string& densities,
+                                         std::optional<double> mass_kg, const std::string& name);
+/// The same with `mass_kg` 0 for none (the app's "from the file"; `saltus model yeadon --mass 0`
+/// is refused by the overload above).
 YeadonModel yeadon_athlete_model(const std::string& path, const std::string& densities,
                                  double mass_kg, const std::string& name);
 

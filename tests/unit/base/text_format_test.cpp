@@ -49,6 +49,16 @@ TEST(MessageNumber, GivesSixSignificantDigitsLikePercentG) {
   EXPECT_EQ(message_number(1.4), "1.4");
 }
 
+TEST(MessageNumberBeside, NeverPrintsAValueAsABoundItIsNot) {
+  EXPECT_EQ(message_number_beside(300.0000001, 10, 300), "300.0000001");
+  EXPECT_EQ(std::stod(message_number_beside(300.0000001, 10, 300)), 300.0000001);
+  EXPECT_EQ(message_number_beside(9.9999999, 10, 300), "9.9999999");
+  EXPECT_EQ(message_number_beside(1.2000001, 0.8, 1.2), "1.2000001");
+  EXPECT_EQ(message_number_beside(300, 10, 300), "300");                // the bound itself
+  EXPECT_EQ(message_number_beside(450.123456789, 10, 300), "450.123");  // short when apart
+  EXPECT_EQ(message_number_beside(1e308, 10, 300), "1e+308");
+}
+
 TEST(WithArticle, PicksAOrAnByTheFirstLetter) {
   EXPECT_EQ(with_article("import"), "an import");
   EXPECT_EQ(with_article("body model"), "a body model");

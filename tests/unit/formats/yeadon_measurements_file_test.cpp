@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -78,6 +79,37 @@ TEST(YeadonMeasurementsFile, BadLinesAreNamedByLineAndKey) {
   metres.replace(metres.find("= .01"), 5, "= 1.");
   EXPECT_NE(ymf_error_at(metres, &problem), "");
   EXPECT_NE(problem.find("measurementconversionfactor"), std::string::npos) << problem;
+}
+
+TEST(YeadonMeasurementsFile, RepeatedTotalMassTinyLengthsAndNulBytesAreRefused) {
+  const std::string good = ymf_text("yeadon-male1.txt");
+  std::string problem;
+  // totalmass twice, like every other repeated key (once the last one won).
+  EXPECT_EQ(
+      ymf_error_at(good + "totalmass = 70\ntotalmass = 80\n", &problem),
+      "line " + std::to_string(std::count(good.begin(), good.end(), '\n') + 2) + ": totalmass");
+  EXPECT_NE(problem.find("twice"), std::string::npos) << problem;
+  // Every key at 1e-300 (any key: 47 of 95 once passed): refused naming the key and the range.
+  for (const std::string& key : {"Ls1L", "Lb5L", "Lj6L", "Lk6d", "La0p"}) {
+    std::string text = good;
+    const auto at = text.find("\n" + key + "=") + 1;
+    text.replace(at, text.find('\n', at) - at, key + "=1e-300");
+    EXPECT_EQ(ymf_error_at(text, &problem), key);
+    EXPECT_NE(problem.find("outside [0.001, 2] m"), std::string::npos) << problem;
+  }
+  // The edges: 0.1 cm and 200 cm are read, just past them refused.
+  std::string edge = good;
+  const auto at = edge.find("Ls1L=4.9");
+  EXPECT_EQ(ymf_error_at(std::string(edge).replace(at, 8, "Ls1L=0.1")), "");
+  EXPECT_EQ(ymf_error_at(std::string(edge).replace(at, 8, "Ls1L=200")), "");
+  EXPECT_EQ(ymf_error_at(std::string(edge).replace(at, 8, "Ls1L=0.0999")), "Ls1L");
+  EXPECT_EQ(ymf_error_at(std::string(edge).replace(at, 8, "Ls1L=200.01"), &problem), "Ls1L");
+  EXPECT_NE(problem.find("2.0001 m is outside"), std::string::npos) << problem;
+  // A NUL byte once cut the value short silently ("4.9\0junk" read as 4.9).
+  std::string nul = good;
+  nul.replace(nul.find("Ls1L=4.9"), 8, std::string("Ls1L=4.9\0junk", 13));
+  EXPECT_NE(ymf_error_at(nul, &problem).find("Ls1L"), std::string::npos);
+  EXPECT_NE(problem.find("\\x00"), std::string::npos) << problem;
 }
 
 TEST(YeadonMeasurementsFile, TheFileGuardsOfEveryReader) {

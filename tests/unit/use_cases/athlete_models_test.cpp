@@ -116,6 +116,20 @@ TEST(AthleteModels, YeadonModelsOfTheRealMeasurementFiles) {
               yeadon_athlete_model(dir + "yeadon-male1.txt", "dempster", 3000.0, "");
             }).file(),
             "--mass");
+  // A mass given is within the documented 10-300 kg, 0 included; the message tells it from the
+  // bound (once "300 kg is outside [10, 300]").
+  const std::string male1 = dir + "yeadon-male1.txt";
+  EXPECT_EQ(
+      ath_error_of([&] { yeadon_athlete_model(male1, "dempster", std::optional(0.0), ""); }).file(),
+      "--mass");
+  const InputError above = ath_error_of(
+      [&] { yeadon_athlete_model(male1, "dempster", std::optional(300.0000001), ""); });
+  EXPECT_EQ(above.file(), "--mass");
+  EXPECT_NE(above.problem().find("300.0000001 kg is outside"), std::string::npos) << above.what();
+  // 300 kg itself is within the range; on male1's 1.64 m it is a body mass index no person has.
+  const InputError at_edge =
+      ath_error_of([&] { yeadon_athlete_model(male1, "dempster", std::optional(300.0), ""); });
+  EXPECT_NE(at_edge.problem().find("body mass index"), std::string::npos) << at_edge.what();
 }
 
 TEST(AthleteModels, TheSameSpinOnAScaledAthleteFliesTheSameRotation) {
