@@ -9,6 +9,7 @@
 #include "saltus/evaluation/joint_loads.h"
 #include "saltus/formats/output_folder.h"
 #include "saltus/formats/study_folder.h"
+#include "saltus/formats/table_cells.h"
 #include "saltus/optim/option_table.h"
 
 namespace saltus {
@@ -27,7 +28,7 @@ std::string turns(double somersaults, double twists) {
 /// "1.30x (hip_l)", flagged "not the athlete's" above kJointLoadRiseLimit; "—" when unknown.
 std::string rise_words(const AthleteOutcome& o) {
   if (o.joint_rise <= 0.0) return "—";
-  return format_number("%.2fx", o.joint_rise) + " (" + o.joint_rise_joint + ")" +
+  return format_number("%.2fx", o.joint_rise) + " (" + markdown_cell(o.joint_rise_joint) + ")" +
          (o.joint_rise > kJointLoadRiseLimit ? ", not the athlete's" : "");
 }
 
@@ -61,25 +62,26 @@ std::string athletes_markdown(const std::vector<CaseRecord>& records) {
       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const CaseRecord& r : records) {
     const AthleteOutcome& o = r.athlete;
-    const std::string name = o.athlete + (o.takeoff == "own model" ? " (own model)" : "");
+    const std::string name =
+        markdown_cell(o.athlete) + (o.takeoff == "own model" ? " (own model)" : "");
     if (!r.finished()) {
       out << "| " << name << " | " << format_number("%.1f", o.mass_kg) << " | "
-          << format_number("%.3f", o.height_m) << " | did not finish: " << r.failure
-          << " ||||||||||\n";
+          << format_number("%.3f", o.height_m) << " | did not finish: " << markdown_cell(r.failure)
+          << " |||||||||||\n";
       continue;
     }
     out << "| " << name << " | " << format_number("%.1f", o.mass_kg) << " | "
         << format_number("%.3f", o.height_m) << " | "
         << format_number("%.1f", o.takeoff_angular_momentum.norm()) << " | "
         << format_number("%.3g", o.avg_root_force_before_N) << " | "
-        << format_number("%.3g", o.avg_root_force_after_N) << " | " << o.status << ", "
-        << o.iterations << " it. | " << format_number("%.1f", o.landing_error_before_deg) << " | "
-        << format_number("%.1f", o.landing_error_after_deg) << " | "
+        << format_number("%.3g", o.avg_root_force_after_N) << " | " << markdown_cell(o.status)
+        << ", " << o.iterations << " it. | " << format_number("%.1f", o.landing_error_before_deg)
+        << " | " << format_number("%.1f", o.landing_error_after_deg) << " | "
         << turns(o.somersaults_before, o.twists_before) << " | "
         << turns(o.somersaults_after, o.twists_after) << " | "
-        << format_number("%.0f", o.peak_moment_Nm) << " (" << o.peak_moment_joint << ") | "
-        << format_number("%.0f", o.peak_force_pct_bw) << " (" << o.peak_force_joint << ") | "
-        << rise_words(o) << " |\n";
+        << format_number("%.0f", o.peak_moment_Nm) << " (" << markdown_cell(o.peak_moment_joint)
+        << ") | " << format_number("%.0f", o.peak_force_pct_bw) << " ("
+        << markdown_cell(o.peak_force_joint) << ") | " << rise_words(o) << " |\n";
   }
   return out.str();
 }
@@ -93,21 +95,24 @@ std::string athletes_csv(const std::vector<CaseRecord>& records) {
          "peak_force_N,peak_force_pct_bw,joint_rise_joint,joint_rise\n";
   for (const CaseRecord& r : records) {
     const AthleteOutcome& o = r.athlete;
-    out << o.athlete << ',' << o.takeoff << ',' << data(o.mass_kg) << ',' << data(o.height_m);
+    out << csv_field(o.athlete) << ',' << csv_field(o.takeoff) << ',' << data(o.mass_kg) << ','
+        << data(o.height_m);
     if (!r.finished()) {
-      out << ",,,," << o.status << ",0,,,,,,,,,,,,,,,,,,\n";
+      out << ",,,," << csv_field(o.status) << ",0,,,,,,,,,,,,,,,,,,\n";
       continue;
     }
     const Eigen::Vector3d& l = o.takeoff_angular_momentum;
-    out << ',' << data(l.x()) << ',' << data(l.y()) << ',' << data(l.z()) << ',' << o.status << ','
-        << (o.solved ? 1 : 0) << ',' << o.iterations << ',' << data(o.seconds) << ','
-        << data(o.avg_root_force_before_N) << ',' << data(o.avg_root_force_after_N) << ','
-        << data(o.max_root_force_after_N) << ',' << data(o.landing_error_before_deg) << ','
-        << data(o.landing_error_after_deg) << ',' << data(o.somersaults_before) << ','
-        << data(o.twists_before) << ',' << data(o.somersaults_after) << ',' << data(o.twists_after)
-        << ',' << o.peak_moment_joint << ',' << data(o.peak_moment_Nm) << ',' << o.peak_force_joint
-        << ',' << data(o.peak_force_N) << ',' << data(o.peak_force_pct_bw) << ','
-        << o.joint_rise_joint << ',' << data(o.joint_rise) << '\n';
+    out << ',' << data(l.x()) << ',' << data(l.y()) << ',' << data(l.z()) << ','
+        << csv_field(o.status) << ',' << (o.solved ? 1 : 0) << ',' << o.iterations << ','
+        << data(o.seconds) << ',' << data(o.avg_root_force_before_N) << ','
+        << data(o.avg_root_force_after_N) << ',' << data(o.max_root_force_after_N) << ','
+        << data(o.landing_error_before_deg) << ',' << data(o.landing_error_after_deg) << ','
+        << data(o.somersaults_before) << ',' << data(o.twists_before) << ','
+        << data(o.somersaults_after) << ',' << data(o.twists_after) << ','
+        << csv_field(o.peak_moment_joint) << ',' << data(o.peak_moment_Nm) << ','
+        << csv_field(o.peak_force_joint) << ',' << data(o.peak_force_N) << ','
+        << data(o.peak_force_pct_bw) << ',' << csv_field(o.joint_rise_joint) << ','
+        << data(o.joint_rise) << '\n';
   }
   return out.str();
 }
@@ -140,8 +145,8 @@ nlohmann::json write_athletes_files(const std::string& dir, const std::vector<Ca
   const std::filesystem::path folder(dir);
   write_text((folder / "athletes.csv").string(), athletes_csv(records));
   write_text((folder / "athletes.md").string(),
-             "# " + motion + " on " + std::to_string(records.size()) +
-                 " athletes\n\nTake-off: " + takeoff +
+             "# " + printable(motion) + " on " + std::to_string(records.size()) +
+                 " athletes\n\nTake-off: " + printable(takeoff) +
                  " (the motion's own model keeps its take-off). Root force: the true average "
                  "sqrt(J/6) (dense check). Free flights: the joint movements flown from the "
                  "take-off, whole-body orientation at landing against the last keyframe; "

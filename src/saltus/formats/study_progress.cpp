@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "saltus/base/text_format.h"
 #include "saltus/formats/study_case_file.h"
 
 namespace saltus {
@@ -59,7 +60,10 @@ std::string clock_text(double seconds) {
 
 std::string study_progress_line(const StudyProgress& p) {
   const int width = static_cast<int>(std::to_string(p.total).size());
-  const std::string last = p.last ? p.last->name + ": " + case_result(*p.last) : std::string();
+  // printable: a case named after a user's athlete must not split the line (the app reads it
+  // line by line) nor send escapes to the terminal.
+  const std::string last =
+      p.last ? printable(p.last->name) + ": " + case_result(*p.last) : std::string();
   char head[160];
   std::snprintf(head, sizeof head, "  [%*d/%d] %d failed, %d not solved, %s elapsed, ETA %s  ",
                 width, p.done, p.total, p.failed, p.unsolved, clock_text(p.elapsed_s).c_str(),

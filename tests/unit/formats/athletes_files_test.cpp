@@ -7,9 +7,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <sstream>
 
 #include "saltus/base/input_error.h"
+#include "saltus/base/text_format.h"
 #include "support/cli_runner.h"
 
 namespace saltus {
@@ -121,6 +123,80 @@ TEST(AthletesFiles, TheTablesHoldEveryRecordAndNameAFailure) {
   CaseRecord other = records[0];
   other.kind = CaseKind::kMassStudy;
   EXPECT_THROW(write_athletes_files(dir, {other}, definition), InputError);
+}
+
+/// The cells of a GFM table row, split on the pipes no backslash escapes, each trimmed and
+/// unescaped (GFM's backslash escapes of ASCII punctuation).
+std::vector<std::string> markdown_row_cells(const std::string& row) {
+  std::vector<std::string> cells;
+  std::string cell;
+  bool open = false;
+  for (std::size_t i = 0; i < row.size(); ++i) {
+    const char c = row[i];
+    if (c == '\\' && i + 1 < row.size() && std::ispunct(static_cast<unsigned char>(row[i + 1]))) {
+      cell += row[++i];
+    } else if (c == '|') {
+      if (open)
+        cells.push_back(cell.substr(cell.find_first_not_of(' ') == std::string::npos
+                                        ? cell.size()
+                                        : cell.find_first_not_of(' ')));
+      open = true;
+      cell.clear();
+    } else {
+      cell += c;
+    }
+  }
+  for (std::string& c : cells)
+    while (!c.empty() && c.back() == ' ')
+      c.pop_back();
+  return cells;
+}
+
+TEST(AthletesFiles, NamesWithCommasQuotesNewlinesPipesAndEscapesKeepTheirRows) {
+  // The files read back with independent parsers: Python's csv module (RFC 4180) and a GFM row
+  // splitter; once a comma, quote, newline or | in a name shifted the row.
+  const std::vector<std::string> names = {"Smith, Anna", "the \"rocket\"",  "two\nlines",
+                                          "pipe|name",   "red \x1b[31mESC", "ends\\"};
+  std::vector<CaseRecord> records;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    records.push_back(athlete_record(static_cast<int>(i), names[i], 0.1));
+  records.back().athlete.peak_force_joint = "knee|l";
+  CaseRecord failed = athlete_record(static_cast<int>(names.size()), "a,b|c", 0.0);
+  failed.failure = "signal 9 | \"Killed\"\nafter 3 s";
+  failed.athlete.status = "crashed";
+  records.push_back(failed);
+  const test::TempDir temporary;
+  const std::string csv_path = temporary / "athletes.csv";
+  test::write_text(csv_path, athletes_csv(records));
+  const auto python = test::run_command(
+      "/usr/bin/python3 -c 'import csv, json, sys; "
+      "rows = list(csv.reader(open(sys.argv[1], newline=\"\"), strict=True)); "
+      "print(json.dumps(rows))' " +
+      csv_path);
+  ASSERT_EQ(python.status, 0) << python.output;
+  const nlohmann::json rows = nlohmann::json::parse(python.output);
+  ASSERT_EQ(rows.size(), records.size() + 1);
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    ASSERT_EQ(rows[i + 1].size(), rows[0].size()) << i;
+    EXPECT_EQ(rows[i + 1][0], records[i].athlete.athlete) << i;
+    EXPECT_EQ(rows[i + 1][1], records[i].athlete.takeoff) << i;
+  }
+  EXPECT_EQ(rows[names.size()][22], "knee|l");
+
+  std::istringstream md(athletes_markdown(records));
+  std::string line;
+  std::vector<std::vector<std::string>> table;
+  while (std::getline(md, line))
+    table.push_back(markdown_row_cells(line));
+  ASSERT_EQ(table.size(), records.size() + 2) << athletes_markdown(records);
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    ASSERT_EQ(table[i + 2].size(), table[0].size()) << i << ": " << athletes_markdown(records);
+    EXPECT_EQ(table[i + 2][0],
+              printable(records[i].athlete.athlete) + (i == 0 ? " (own model)" : ""));
+  }
+  EXPECT_EQ(table[names.size() + 1][12], "80 (knee|l)");
+  EXPECT_EQ(table.back()[3], "did not finish: " + printable(failed.failure));
+  EXPECT_EQ(athletes_markdown(records).find('\x1b'), std::string::npos);
 }
 
 }  // namespace
