@@ -236,7 +236,7 @@ void bind_verbs(py::module_& m) {
       [](py::handle source, py::handle out, const std::string& format, double fps,
          py::handle capture) {
         saltus::ExportOptions options;
-        options.fps = fps;
+        if (fps != 0.0) options.fps = fps;  // 0: the default rate
         if (!capture.is_none()) options.capture = path_argument(capture, "capture");
         const std::string target = path_argument(out, "out");
         saltus::ExportSummary summary;

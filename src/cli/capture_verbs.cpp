@@ -148,8 +148,7 @@ void add_capture_verbs(CLI::App& app, CaptureVerbs& verbs) {
       ->required();
   exp->add_option("--fps", ex.fps,
                   "frames per second (all but html); default: the keyframes' rate when they are "
-                  "evenly spaced (a captured flight), else 60")
-      ->check(CLI::PositiveNumber);
+                  "evenly spaced (a captured flight), else 60");
   exp->add_option("--capture", ex.capture,
                   "html: the motion capture drawn beside the athlete (an import folder or a BVH "
                   "file); default: the one SOURCE came from, if any");

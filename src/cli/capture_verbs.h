@@ -24,8 +24,8 @@ struct ExportArgs {
   std::string source;
   std::string format;
   std::string out_path;
-  double fps = 0.0;     ///< 0 = default_export_fps
-  std::string capture;  ///< html: the capture beside the athlete, "" = the source's own
+  std::optional<double> fps;  ///< none: default_export_fps
+  std::string capture;        ///< html: the capture beside the athlete, "" = the source's own
   bool quiet = false;
 };
 

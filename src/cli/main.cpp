@@ -486,6 +486,21 @@ int run_analyse_what_if(const CommonArgs& args, const saltus::WhatIfChange& chan
   return 0;
 }
 
+/// CLI11 reads "" as 0 for a number (`--height ""` became a height of 0 m, `--open-later ""`
+/// no change): every number flag of every verb refuses an empty value.
+void refuse_empty_numbers(CLI::App& app) {
+  const CLI::Validator not_empty(
+      [](std::string& text) { return text.empty() ? "is empty: give a number" : std::string(); },
+      "", "");
+  for (CLI::Option* option : app.get_options()) {
+    const std::string type = option->get_type_name();
+    if (type == "FLOAT" || type == "INT" || type == "UINT" || type == "NUMBER")
+      option->check(not_empty);
+  }
+  for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; }))
+    refuse_empty_numbers(*command);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -554,6 +569,7 @@ int main(int argc, char** argv) {
 
   saltus_cli::ModelVerbs model_verbs;
   saltus_cli::add_model_verbs(app, model_verbs);
+  refuse_empty_numbers(app);
 
   try {
     app.parse(argc, argv);

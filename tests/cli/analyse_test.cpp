@@ -83,13 +83,15 @@ TEST(CliAnalyseWhatIf, OpeningATuckedSomersaultLaterTurnsItFurther) {
   const auto far =
       test::run_cli("analyse what-if " + m2 + " --open-later 0.9 --out " + (dir / "far"));
   EXPECT_EQ(far.status, 2) << far.output;
-  EXPECT_NE(far.output.find("The opening can move from"), std::string::npos) << far.output;
+  EXPECT_NE(far.output.find("--open-later: The opening can move from"), std::string::npos)
+      << far.output;
   EXPECT_FALSE(std::filesystem::exists(dir / "far"));
   const std::string m1 =
       std::string(SALTUS_EXAMPLES_DIR) + "/motions/M1-straight-back-somersault.motion.json";
   const auto straight =
       test::run_cli("analyse what-if " + m1 + " --tuck-scale 1.1 --out " + (dir / "m1"));
   EXPECT_EQ(straight.status, 2) << straight.output;
+  EXPECT_NE(straight.output.find("--tuck-scale: "), std::string::npos) << straight.output;
   EXPECT_NE(straight.output.find("no tuck to change"), std::string::npos) << straight.output;
   EXPECT_FALSE(std::filesystem::exists(dir / "m1"));
 }

@@ -2,6 +2,8 @@
 // issue measured ends with exit status 2, one line naming the file and the field, nothing left
 // behind; nothing is read that a motion file should not make Saltus read.
 
+#include <sys/stat.h>
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -326,6 +328,50 @@ TEST(CliPlausibleInput, AStoredSplineIsCheckedAgainstItsKeyframes) {
           knots[i] = knots[i].get<double>() * 0.9;
       },
       {"m.motion.json", "/spline/knots/", "flight time"});
+}
+
+}  // namespace
+}  // namespace saltus
+
+namespace saltus {
+namespace {
+
+/// One refusal of a flag or file: the command (after `saltus`), what the one line must hold.
+struct FlagRefusal {
+  std::string command;
+  std::string message;
+};
+
+TEST(CliPlausibleInput, EmptyNumbersZeroRatesAndFilesThatAreNoFilesAreNamedForWhatTheyAre) {
+  TempDir dir;
+  const std::string m2 =
+      std::string(SALTUS_EXAMPLES_DIR) + "/motions/M2-tucked-back-somersault.motion.json";
+  fs::create_directories(dir / "folder.json");
+  ASSERT_EQ(::mkfifo((dir / "pipe.json").c_str(), 0644), 0);
+  const std::string out = " --out " + (dir / "out");
+  const std::vector<FlagRefusal> refusals = {
+      // CLI11 read "" as 0: a height of 0 m, no what-if change at all.
+      {"model new --height '' --mass 60 --sex male --out " + (dir / "a.model.json"),
+       "--height: is empty"},
+      {"analyse what-if " + m2 + " --open-later ''" + out, "--open-later: is empty"},
+      // 0 frames per second was the default rate.
+      {"export " + m2 + " --format bvh --fps 0 --out " + (dir / "a.bvh"),
+       "--fps: must be a positive"},
+      {"analyse what-if " + m2 + " --open-later 1e308" + out, "--open-later: The opening can move"},
+      // "no such model file" for what is a folder or a pipe.
+      {"evaluate " + m2 + " --model " + (dir / "folder.json") + out, "is a folder, not a file"},
+      {"model info " + (dir / "folder.json"), "is a folder, not a file"},
+      {"model scale " + (dir / "pipe.json") + " --height 1.7 --mass 60 --out " +
+           (dir / "b.model.json"),
+       "pipe.json: is not a regular file"},
+  };
+  for (const FlagRefusal& r : refusals) {
+    const auto run = run_cli(r.command);
+    EXPECT_EQ(run.status, 2) << r.command << "\n" << run.output;
+    EXPECT_NE(run.output.find(r.message), std::string::npos) << r.command << "\n" << run.output;
+    EXPECT_LT(run.output.size(), 400u) << "short numbers (once 300 digits): " << run.output;
+  }
+  EXPECT_EQ(names_in(dir.path()), (std::set<std::string>{"folder.json", "pipe.json"}));
 }
 
 }  // namespace

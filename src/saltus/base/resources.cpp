@@ -29,7 +29,8 @@ std::string resolve_model_path(const std::string& model_field, const std::string
   // error_code forms: a name too long for the file system is "not found", not an exception.
   std::error_code ec;
   if (looks_like_path || fs::exists(relative, ec)) {
-    return fs::is_regular_file(relative, ec) ? relative.string() : "";
+    // Whatever is there (a folder, a pipe): the reader says what it is, not "not found".
+    return fs::exists(relative, ec) ? relative.string() : "";
   }
   for (const auto& dir : resource_directories()) {
     const fs::path candidate = fs::path(dir) / "models" / (model_field + ".json");

@@ -14,7 +14,8 @@ std::vector<std::string> resource_directories();
 
 /// Resolves a motion file's "model" field: a path relative to the motion file's folder if such a
 /// file exists (or the value ends in ".json"), otherwise a name under resources/models/.
-/// Returns "" when nothing is found.
+/// Returns "" when nothing is found; an entry that is not a regular file (a folder, a pipe) is
+/// returned too, so that the reader says what it is.
 std::string resolve_model_path(const std::string& model_field, const std::string& motion_file);
 
 }  // namespace saltus

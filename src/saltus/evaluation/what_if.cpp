@@ -4,8 +4,11 @@
 #include <cmath>
 #include <optional>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "saltus/base/constants.h"
+#include "saltus/base/input_error.h"
 #include "saltus/base/text_format.h"
 #include "saltus/motion/interpolate.h"
 
@@ -255,29 +258,53 @@ class ChangedJoints {
   std::optional<TimeWarp> warp_;
 };
 
-/// Throws std::invalid_argument for a change the motion does not allow (WhatIf::fly).
+/// `value` s as the range it is beside prints its ends (%+.3f), with every digit it needs where
+/// that would print an end it is not, and short (%g) when it is huge.
+std::string seconds_beside(double value, double lo, double hi) {
+  const std::string text =
+      std::fabs(value) < 1e4 ? format_number("%+.3f", value) : format_number("%+g", value);
+  if (text != format_number("%+.3f", lo) && text != format_number("%+.3f", hi)) return text;
+  return (value > 0.0 ? "+" : "") + exact_number(value);
+}
+
+/// Throws InputError naming the flag (--tuck-later, --open-later, --tuck-scale) for a change
+/// the motion does not allow (WhatIf::fly).
 void check_change(const TuckPhases& tuck, const WhatIfChange& change) {
-  if (!(std::isfinite(change.tuck_later_s) && std::isfinite(change.open_later_s) &&
-        std::isfinite(change.tuck_scale)))
-    throw std::invalid_argument("a what-if change must be finite numbers");
+  const std::pair<const char*, double> values[] = {{"--tuck-later", change.tuck_later_s},
+                                                   {"--open-later", change.open_later_s},
+                                                   {"--tuck-scale", change.tuck_scale}};
+  for (const auto& [flag, value] : values)
+    if (!std::isfinite(value))
+      throw InputError(flag, "",
+                       "a what-if change must be a finite number, not " + message_number(value));
   if (change.tuck_scale < kMinTuckScale || change.tuck_scale > kMaxTuckScale)
-    throw std::invalid_argument(
-        format_number("The tuck's tightness is %.0f %%", 100.0 * change.tuck_scale) +
-        format_number(": it can go from %.0f", 100.0 * kMinTuckScale) +
-        format_number(" to %.0f %% of the motion's.", 100.0 * kMaxTuckScale));
+    throw InputError("--tuck-scale", "",
+                     "The tuck's tightness " +
+                         message_number_beside(change.tuck_scale, kMinTuckScale, kMaxTuckScale) +
+                         " is outside [" + message_number(kMinTuckScale) + ", " +
+                         message_number(kMaxTuckScale) + "]: it can go from " +
+                         format_number("%.0f", 100.0 * kMinTuckScale) + " to " +
+                         format_number("%.0f %% of the motion's.", 100.0 * kMaxTuckScale));
   if (change.unchanged()) return;
-  if (!tuck.found) throw std::invalid_argument(tuck.reason);
+  const char* changed = change.tuck_later_s != 0.0   ? "--tuck-later"
+                        : change.open_later_s != 0.0 ? "--open-later"
+                                                     : "--tuck-scale";
+  if (!tuck.found) throw InputError(changed, "", tuck.reason);
   if (change.open_later_s != 0.0 && !tuck.opens)
-    throw std::invalid_argument("The motion lands in its tuck: there is no opening to move.");
+    throw InputError("--open-later", "",
+                     "The motion lands in its tuck: there is no opening to move.");
   constexpr double kSlack = 1e-9;
-  const auto check = [](double value, double lo, double hi, const char* what) {
+  const auto check = [](double value, double lo, double hi, const char* flag, const char* what) {
     if (value < lo - kSlack || value > hi + kSlack)
-      throw std::invalid_argument(std::string(what) + format_number(" can move from %+.3f s", lo) +
-                                  format_number(" to %+.3f s on this motion", hi) +
-                                  format_number(", not %+.3f s.", value));
+      throw InputError(flag, "",
+                       std::string(what) + format_number(" can move from %+.3f s", lo) +
+                           format_number(" to %+.3f s on this motion", hi) + ", not " +
+                           seconds_beside(value, lo, hi) + " s.");
   };
-  check(change.tuck_later_s, tuck.tuck_later_min_s, tuck.tuck_later_max_s, "The tuck");
-  check(change.open_later_s, tuck.open_later_min_s, tuck.open_later_max_s, "The opening");
+  check(change.tuck_later_s, tuck.tuck_later_min_s, tuck.tuck_later_max_s, "--tuck-later",
+        "The tuck");
+  check(change.open_later_s, tuck.open_later_min_s, tuck.open_later_max_s, "--open-later",
+        "The opening");
 }
 
 }  // namespace

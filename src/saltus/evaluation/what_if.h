@@ -151,10 +151,11 @@ class WhatIf {
   const YeadonSummary& target() const { return target_; }
   const Eigen::Vector3d& angular_momentum() const { return takeoff_.value; }
 
-  /// The flight with `change`. No change gives exactly the unchanged flight. Throws
-  /// std::invalid_argument for a change the motion does not allow: a tuck change without a
-  /// tuck (the reason), an opening moved without one, a shift outside its range, a tightness
-  /// outside kMinTuckScale..kMaxTuckScale.
+  /// The flight with `change`. No change gives exactly the unchanged flight. Throws InputError
+  /// naming the flag (--tuck-later, --open-later, --tuck-scale) for a change the motion does
+  /// not allow: a number that is not finite, a tuck change without a tuck (the reason), an
+  /// opening moved without one, a shift outside its range, a tightness outside
+  /// kMinTuckScale..kMaxTuckScale.
   WhatIfResult fly(const WhatIfChange& change) const;
 
  private:

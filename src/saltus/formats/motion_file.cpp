@@ -535,8 +535,8 @@ MotionFile load_motion_file(const std::string& path, const std::string& model_ov
       throw InputError(model_override.substr(0, 64) + "…", "",
                        "--model: the model path is too long");
     std::error_code ec;
-    const bool is_file = fs::is_regular_file(model_override, ec);
-    model_path = is_file ? model_override : resolve_model_path(model_override, path);
+    const bool exists = fs::exists(model_override, ec);  // the reader says if it is no file
+    model_path = exists ? model_override : resolve_model_path(model_override, path);
     if (model_path.empty())
       throw InputError(path, "",
                        "model \"" + model_override + "\" (given instead of the file's) not found " +

@@ -104,7 +104,8 @@ BodyModel new_athlete_model(const AthleteSize& size) {
 
 BodyModel load_model_argument(const std::string& model) {
   std::error_code ec;
-  if (std::filesystem::is_regular_file(model, ec)) return load_body_model(model);
+  // Whatever is there (a folder, a pipe): the reader says what it is, not "no such file".
+  if (std::filesystem::exists(model, ec)) return load_body_model(model);
   const std::string bundled =
       model.find('/') == std::string::npos ? resolve_model_path(model, "") : "";
   if (bundled.empty())

@@ -38,7 +38,8 @@ nlohmann::json vector_json(const Eigen::Vector3d& v) {
 }
 
 std::string resolve_model(const std::string& reference, const std::string& relative_to) {
-  if (fs::is_regular_file(reference)) return reference;
+  std::error_code ec;
+  if (fs::exists(reference, ec)) return reference;  // the reader says if it is no file
   const std::string path = resolve_model_path(reference, relative_to);
   if (path.empty())
     throw InputError(reference, "",

@@ -232,11 +232,11 @@ ExportSummary export_loaded(const MotionFile& motion, const ExportFormat& format
   if (!format.sampled)
     throw InputError("--format", "", format.name + " is exported from a file or folder");
   if (!options.capture.empty()) throw InputError("--capture", "", "applies to --format html only");
-  if (!(options.fps >= 0 && std::isfinite(options.fps)))  // 0: the default; NaN was taken for it
+  if (options.fps && !(*options.fps > 0 && std::isfinite(*options.fps)))  // NaN, 0 once the default
     throw InputError(
         "--fps", "",
-        "must be a positive number of frames per second, found " + message_number(options.fps));
-  const double fps = options.fps > 0 ? options.fps : default_export_fps(motion.motion);
+        "must be a positive number of frames per second, found " + message_number(*options.fps));
+  const double fps = options.fps ? *options.fps : default_export_fps(motion.motion);
   ExportSummary s = format.name == "bvh" ? export_bvh(motion, out, fps)
                                          : export_sampled(motion, format, out, fps, source);
   s.format = format.name;
@@ -289,7 +289,7 @@ ExportSummary export_source(const std::string& source, const std::string& format
   if (format.sampled) {
     return export_loaded(load_export_source(source), format, out, options, source);
   }
-  if (options.fps > 0) throw InputError("--fps", "", "does not apply to --format " + format.name);
+  if (options.fps) throw InputError("--fps", "", "does not apply to --format " + format.name);
   const FlightPageSummary page = export_flight_page(source, out, options.capture);
   ExportSummary s;
   s.format = format.name;

@@ -6,6 +6,7 @@
 /// three.js) and OpenSim (.osim, .mot, .sto). What each file holds: docs/formats.md.
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,7 +33,9 @@ const ExportFormat& export_format(const std::string& name);
 inline constexpr double kMaxExportSegmentPoses = 300000;
 
 struct ExportOptions {
-  double fps = 0.0;     ///< frames per second; 0: default_export_fps (sampled formats only)
+  /// frames per second (sampled formats only), a positive number when given (`--fps 0` is
+  /// refused, not taken for the default); none: default_export_fps
+  std::optional<double> fps;
   std::string capture;  ///< html: the capture drawn beside the athlete ("" = where it came from)
 };
 

@@ -14,6 +14,7 @@
 #include <cmath>
 
 #include "saltus/base/constants.h"
+#include "saltus/base/input_error.h"
 #include "saltus/base/text_format.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/motion/interpolate.h"
@@ -123,8 +124,9 @@ TEST(WhatIf, FindsTheTuckOfTuckedMotionsAndSaysAStraightOneHasNone) {
   try {
     m1_what_if.fly(later);
     ADD_FAILURE() << "M1 has no opening to move";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_EQ(std::string(e.what()), m1_what_if.tuck().reason);
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "--open-later");
+    EXPECT_EQ(e.problem(), m1_what_if.tuck().reason);
   }
   // As it is, it still flies.
   EXPECT_NO_THROW(m1_what_if.fly(WhatIfChange{}));
@@ -339,29 +341,51 @@ TEST(WhatIf, LandingWordsSayShortOrOverInTheDirectionOfTheSomersault) {
   EXPECT_LT(loose.twist_over_deg, -360.0);
 }
 
-TEST(WhatIf, RefusesChangesTheMotionDoesNotAllow) {
+TEST(WhatIf, RefusesChangesTheMotionDoesNotAllowNamingTheFlag) {
   const MotionFile file = bundled(kM2);
   const WhatIf w(file.motion, file.model);
+  // "flag: problem" of the InputError, or "" when the change flies.
   const auto refused = [&](const WhatIfChange& change) {
     try {
       w.fly(change);
-    } catch (const std::invalid_argument& e) {
-      return std::string(e.what());
+    } catch (const InputError& e) {
+      return e.file() + ": " + e.problem();
     }
     return std::string();
   };
   WhatIfChange too_late;
   too_late.open_later_s = w.tuck().open_later_max_s + 0.01;
-  EXPECT_NE(refused(too_late).find("The opening can move from"), std::string::npos);
+  EXPECT_EQ(refused(too_late).rfind("--open-later: The opening can move from", 0), 0u);
   WhatIfChange too_early;
   too_early.tuck_later_s = w.tuck().tuck_later_min_s - 0.01;
-  EXPECT_NE(refused(too_early).find("The tuck can move from"), std::string::npos);
+  EXPECT_EQ(refused(too_early).rfind("--tuck-later: The tuck can move from", 0), 0u);
+  // Short numbers for huge ones (once 300 digits), and every digit where three decimals would
+  // print the end of the range it is beyond.
+  WhatIfChange huge;
+  huge.open_later_s = 1e308;
+  EXPECT_NE(refused(huge).find(", not +1e+308 s."), std::string::npos) << refused(huge);
+  WhatIfChange just_past;
+  just_past.open_later_s = w.tuck().open_later_max_s + 1e-7;
+  const std::string past = refused(just_past);
+  EXPECT_NE(past.find(", not +" + exact_number(just_past.open_later_s) + " s."), std::string::npos)
+      << past;
+  WhatIfChange at_edge;
+  at_edge.open_later_s = w.tuck().open_later_max_s;
+  EXPECT_EQ(refused(at_edge), "");
   WhatIfChange too_tight;
   too_tight.tuck_scale = 1.3;
-  EXPECT_NE(refused(too_tight).find("130 %"), std::string::npos);
+  EXPECT_EQ(
+      refused(too_tight).rfind("--tuck-scale: The tuck's tightness 1.3 is outside [0.8, 1.2]", 0),
+      0u)
+      << refused(too_tight);
+  too_tight.tuck_scale = 1.2000001;  // once "120 %: it can go from 80 to 120 %"
+  EXPECT_NE(refused(too_tight).find("1.2000001 is outside"), std::string::npos)
+      << refused(too_tight);
+  too_tight.tuck_scale = kMaxTuckScale;
+  EXPECT_EQ(refused(too_tight), "");
   WhatIfChange not_a_number;
   not_a_number.tuck_later_s = std::nan("");
-  EXPECT_FALSE(refused(not_a_number).empty());
+  EXPECT_EQ(refused(not_a_number).rfind("--tuck-later: ", 0), 0u) << refused(not_a_number);
 }
 
 TEST(WhatIf, WorksWithoutATakeoffMomentumInTheFile) {

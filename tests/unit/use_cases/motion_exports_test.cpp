@@ -113,7 +113,7 @@ TEST(MotionExports, FlagsThatDoNotApplyAreRefused) {
 
 TEST(MotionExports, ABvhIsWrittenOnlyAtFrameTimesItsReaderTakes) {
   const MotionFile source = tuck_file();
-  for (const double fps : {2000.0, std::nan(""), -1.0, HUGE_VAL}) {
+  for (const double fps : {2000.0, std::nan(""), -1.0, 0.0, HUGE_VAL}) {
     SCOPED_TRACE(fps);
     ExportOptions options;
     options.fps = fps;
