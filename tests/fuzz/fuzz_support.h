@@ -15,6 +15,8 @@
 #include "saltus/base/input_error.h"
 #include "saltus/base/json_reader.h"
 #include "saltus/capture/mocap_clip.h"
+#include "saltus/evaluation/evaluate.h"
+#include "saltus/formats/finite_check.h"
 #include "saltus/formats/model_file.h"
 #include "saltus/formats/motion_file.h"
 #include "saltus/use_cases/motion_exports.h"
@@ -25,6 +27,32 @@ inline const BodyModel& bundled_model() {
   static const BodyModel model =
       load_body_model(std::string(SALTUS_RESOURCES_DIR) + "/models/zatsiorsky-66kg.json");
   return model;
+}
+
+/// M1's keyframes as their file holds them, read once: the motion a fuzzed athlete is flown on.
+inline const nlohmann::json& m1_document() {
+  static const nlohmann::json document = read_json_file(
+      std::string(SALTUS_EXAMPLES_DIR) + "/motions/M1-straight-back-somersault.motion.json");
+  return document;
+}
+
+/// M1's keyframes on an accepted fuzzed `model`: aborts (a finding) unless its inverse dynamics
+/// are finite; keyframes that do not fit the model's joints (InputError) are no finding.
+inline void abort_unless_m1_is_finite_on(const BodyModel& model) {
+  Motion motion;
+  try {
+    motion = parse_motion(m1_document(), "m1.motion.json", model);
+  } catch (const InputError&) {
+    return;
+  }
+  EvaluateOptions options;
+  options.samples = 9;
+  const MotionEvaluation evaluation = evaluate_motion(motion, model, options);
+  try {
+    require_finite(evaluation.samples, "m1.motion.json", "trajectory.csv");
+  } catch (const InputError&) {
+    std::abort();
+  }
 }
 
 /// Aborts (a finding) unless `back` has `clip`'s frames, frame time and skeleton.
