@@ -24,6 +24,7 @@
 #include "app/qt_text.h"
 #include "app/study_panel.h"
 #include "saltus/studies/isolated_runner.h"
+#include "saltus/use_cases/study_runner.h"
 
 namespace saltus::gui {
 
@@ -145,14 +146,15 @@ void StudyController::ask_and_start() {
   const QString dir = chooser_(proposed_folder());
   if (dir.isEmpty()) return;
   bool resume = false;
-  if (QFileInfo::exists(dir + ".partial")) {
+  const QString partial = qstr(study_partial_folder(dir.toStdString()));
+  if (QFileInfo::exists(partial)) {
     // Without someone to ask, the question's default: resume.
     if (context_.interactive()) {
       const auto answer = QMessageBox::question(
           context_.window(), tr("Resume the study?"),
-          tr("%1.partial holds the finished cases of an interrupted study. Resume it (run only "
+          tr("%1 holds the finished cases of an interrupted study. Resume it (run only "
              "the cases it lacks)?")
-              .arg(dir),
+              .arg(partial),
           QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Yes);
       if (answer != QMessageBox::Yes) return;
     }
@@ -264,7 +266,7 @@ void StudyController::on_finished(int exit_code) {
   // What the folder holds, as the library reads it: the whole study, or the cases kept.
   results_.reset();
   QString unread;
-  const QString folder = done ? out_dir_ : out_dir_ + ".partial";
+  const QString folder = done ? out_dir_ : qstr(study_partial_folder(out_dir_.toStdString()));
   if ((done || stopped) && QFileInfo::exists(folder + "/study.json")) {
     try {
       results_ = read_convergence_study_folder(folder.toStdString());

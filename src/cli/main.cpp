@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <stdexcept>
 
@@ -486,19 +487,31 @@ int run_analyse_what_if(const CommonArgs& args, const saltus::WhatIfChange& chan
   return 0;
 }
 
-/// CLI11 reads "" as 0 for a number (`--height ""` became a height of 0 m, `--open-later ""`
-/// no change): every number flag of every verb refuses an empty value.
-void refuse_empty_numbers(CLI::App& app) {
+/// Calls `add` on every option of every verb.
+void for_every_option(CLI::App& app, const std::function<void(CLI::Option&)>& add) {
+  for (CLI::Option* option : app.get_options())
+    add(*option);
+  for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; }))
+    for_every_option(*command, add);
+}
+
+/// Checks every verb's flags share. CLI11 reads "" as 0 for a number (`--height ""` became a
+/// height of 0 m, `--open-later ""` no change): every number flag refuses an empty value. An
+/// output path (--out, --emit-slurm) with a name longer than a file system takes is refused
+/// naming the flag before any work (the library refuses it too, naming the path).
+void add_shared_checks(CLI::App& app) {
   const CLI::Validator not_empty(
       [](std::string& text) { return text.empty() ? "is empty: give a number" : std::string(); },
       "", "");
-  for (CLI::Option* option : app.get_options()) {
-    const std::string type = option->get_type_name();
+  const CLI::Validator writable_name(
+      [](std::string& text) { return saltus::output_name_problem(text); }, "", "");
+  for_every_option(app, [&](CLI::Option& option) {
+    const std::string type = option.get_type_name();
     if (type == "FLOAT" || type == "INT" || type == "UINT" || type == "NUMBER")
-      option->check(not_empty);
-  }
-  for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; }))
-    refuse_empty_numbers(*command);
+      option.check(not_empty);
+    if (option.check_name("--out") || option.check_name("--emit-slurm"))
+      option.check(writable_name);
+  });
 }
 
 }  // namespace
@@ -569,7 +582,7 @@ int main(int argc, char** argv) {
 
   saltus_cli::ModelVerbs model_verbs;
   saltus_cli::add_model_verbs(app, model_verbs);
-  refuse_empty_numbers(app);
+  add_shared_checks(app);
 
   try {
     app.parse(argc, argv);

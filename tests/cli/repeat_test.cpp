@@ -206,6 +206,38 @@ TEST_F(Repeat, EveryVerbRunTwiceIntoItsOwnOutputReplacesWhatItWroteAndNothingEls
   EXPECT_EQ(test::read_text(dir / "keep.txt"), "the user's\n");
 }
 
+TEST_F(Repeat, TheLongestLegalNameIsWrittenTwiceAndOneByteMoreIsRefusedNamingTheFlag) {
+  test::TempDir dir;
+  // A name of 255 bytes is legal, but its lock and temporaries (`.NAME.lock`, ...) would not
+  // be: Saltus shortens theirs. One writer of each mechanism: folders, marked files, a page.
+  for (const std::string verb : {"evaluate", "model new", "export html"}) {
+    const Writer& w = *std::find_if(writers_.begin(), writers_.end(),
+                                    [&](const Writer& x) { return x.verb == verb; });
+    SCOPED_TRACE(w.verb);
+    const std::string name = std::string(255 - w.out.size(), 'n') + w.out;
+    const fs::path out = dir.path() / name;
+    ASSERT_EQ(run(w, out.string()).status, 0);
+    const ino_t before = inode_of(out);
+    const auto again = run(w, out.string());
+    EXPECT_EQ(again.status, 0) << again.output;
+    EXPECT_NE(inode_of(out), before) << "not written again";
+    EXPECT_EQ(test::names_in(dir.path()), std::set<std::string>{name}) << "nothing left beside";
+    fs::remove_all(out);
+  }
+  // A name no file system takes is refused before any work by every writer, naming its flag.
+  for (const Writer& w : writers_) {
+    SCOPED_TRACE(w.verb);
+    const std::size_t at = w.command.find(" OUT");
+    const std::string flag =
+        w.command.substr(w.command.rfind(' ', at - 1) + 1, at - 1 - w.command.rfind(' ', at - 1));
+    const auto refused = run(w, dir / (std::string(256 - w.out.size(), 'n') + w.out));
+    EXPECT_EQ(refused.status, 2) << refused.output;
+    EXPECT_NE(refused.output.find(flag + ": the name"), std::string::npos) << refused.output;
+    EXPECT_NE(refused.output.find("256 bytes long"), std::string::npos) << refused.output;
+  }
+  EXPECT_TRUE(test::names_in(dir.path()).empty());
+}
+
 TEST_F(Repeat, AnyFolderVerbReplacesAnotherVerbsResult) {
   test::TempDir dir;
   std::vector<Writer> folders;

@@ -1,6 +1,7 @@
 #include "saltus/formats/output_folder.h"
 
 #include <fcntl.h>
+#include <limits.h>
 #include <pthread.h>
 #include <sys/file.h>
 #include <sys/stat.h>
@@ -18,6 +19,7 @@
 #include <functional>
 #include <mutex>
 
+#include "saltus/base/digest.h"
 #include "saltus/base/input_error.h"
 #include "saltus/base/input_file.h"
 #include "saltus/base/json_reader.h"
@@ -29,6 +31,8 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr int kMaxResultDepth = 4;  ///< paper report/M1/ is 2 deep
+/// Room kept for a run's suffix "<pid>-<n>" (two numbers of up to 10 digits and a dash).
+constexpr std::size_t kRunSuffixBytes = 21;
 
 std::string system_reason(int error) {
   return std::strerror(error);
@@ -53,6 +57,8 @@ fs::path target_of(const std::string& final_path) {
   fs::path target = fs::absolute(final_path, ec).lexically_normal();
   if (ec) throw OutputError("cannot resolve " + final_path + ": " + ec.message(), false);
   check_readable_name(target, final_path);
+  if (const std::string why = output_name_problem(final_path); !why.empty())
+    throw InputError(final_path, "", why);
   if (target.filename().empty()) target = target.parent_path();  // "out/" -> "out"
   const std::string name = target.filename().string();
   if (name.empty() || name == "." || name == "..")
@@ -456,8 +462,8 @@ bool is_run_suffix(const std::string& s) {
 void remove_stale_temporaries(const fs::path& target, const std::vector<std::string>& recorded) {
   const fs::path parent = target.parent_path();
   const std::string name = target.filename().string();
-  const std::string temporary_prefix = "." + name + ".tmp-";
-  const std::string old_prefix = "." + name + ".old-";
+  const std::string temporary_prefix = sibling_name(name, ".", ".tmp-", kRunSuffixBytes);
+  const std::string old_prefix = sibling_name(name, ".", ".old-", kRunSuffixBytes);
   std::error_code ec;
   std::vector<fs::path> temporaries;
   std::vector<fs::path> moved_away;
@@ -499,6 +505,32 @@ std::string run_suffix() {
 
 }  // namespace
 
+std::string sibling_name(const std::string& name, const std::string& lead, const std::string& tag,
+                         std::size_t suffix_bytes) {
+  const std::size_t fixed = lead.size() + tag.size() + suffix_bytes;
+  if (fixed + name.size() <= NAME_MAX) return lead + name + tag;
+  const std::string digest = "~" + text_digest(name);
+  std::size_t keep = NAME_MAX - std::min<std::size_t>(NAME_MAX, fixed + digest.size());
+  // Cut on a character's first byte, so that a UTF-8 name stays UTF-8.
+  while (keep > 0 && (static_cast<unsigned char>(name[keep]) & 0xC0) == 0x80)
+    --keep;
+  return lead + name.substr(0, keep) + digest + tag;
+}
+
+std::string output_name_problem(const std::string& path) {
+  for (const fs::path& part : fs::path(path)) {
+    const std::string name = part.string();
+    if (name.size() <= NAME_MAX) continue;
+    std::size_t shown = 24;
+    while (shown > 0 && (static_cast<unsigned char>(name[shown]) & 0xC0) == 0x80)
+      --shown;
+    return "the name \"" + name.substr(0, shown) + "...\" in it is " + std::to_string(name.size()) +
+           " bytes long, and a file or folder name may have at most " + std::to_string(NAME_MAX) +
+           " bytes: choose a shorter one";
+  }
+  return "";
+}
+
 std::string foreign_content(const std::string& folder) {
   return foreign_content_at(fs::path(folder), 0);
 }
@@ -517,14 +549,15 @@ OutputFolder::OutputFolder(std::string final_path, FolderKind kind) : kind_(std:
   if (ec)
     throw OutputError("cannot create the folder " + parent.string() + ": " + ec.message(), false);
   install_interrupt_handlers();
-  lock_path_ = (parent / ("." + target.filename().string() + ".lock")).string();
+  lock_path_ = (parent / sibling_name(target.filename().string(), ".", ".lock")).string();
   std::vector<std::string> recorded;
   lock_fd_ = acquire_lock(lock_path_, final_path_, recorded);
   try {
     remove_stale_temporaries(target, recorded);
     check_target(target, final_path_);
     for (int attempt = 0;; ++attempt) {
-      const std::string name = "." + target.filename().string() + ".tmp-" + run_suffix();
+      const std::string name =
+          sibling_name(target.filename().string(), ".", ".tmp-", kRunSuffixBytes) + run_suffix();
       temporary_path_ = (parent / name).string();
       record_in_lock(lock_fd_, "tmp " + name);
       if (::mkdir(temporary_path_.c_str(), 0755) == 0) break;
@@ -597,7 +630,8 @@ void OutputFolder::commit() {
       // Fallback where the file system cannot exchange (some network and FUSE file systems):
       // two renames. A kill between them leaves DIR missing and the old folder at
       // .DIR.old-<pid>-<n>, which the interrupt handler or the next run puts back.
-      const std::string old_name = "." + target.filename().string() + ".old-" + run_suffix();
+      const std::string old_name =
+          sibling_name(target.filename().string(), ".", ".old-", kRunSuffixBytes) + run_suffix();
       const std::string old = (target.parent_path() / old_name).string();
       record_in_lock(lock_fd_, "old " + old_name);
       set_moved_away(slot_, old);
@@ -705,11 +739,10 @@ bool write_all(int fd, const std::string& text) {
   return true;
 }
 
-/// The name of a temporary beside `name` without the run's suffix: `.NAME.saltus-tmp-`, with
-/// NAME cut to 200 bytes so that the whole stays within a file name's 255 bytes even for the
-/// longest legal NAME.
+/// The name of a temporary beside `name` without the run's suffix: `.NAME.saltus-tmp-`
+/// (sibling_name: shortened for the longest legal NAMEs).
 std::string file_temporary_prefix(const std::string& name) {
-  return "." + name.substr(0, 200) + ".saltus-tmp-";
+  return sibling_name(name, ".", ".saltus-tmp-", kRunSuffixBytes);
 }
 
 /// Removes what writes of `target` that died (killed, power lost) left beside it: regular files
@@ -747,6 +780,8 @@ std::size_t write_output_file(const std::string& path, const std::string& plain_
   if (target.filename().empty() || target.filename() == "." || target.filename() == "..")
     throw InputError(path, "", "names no file Saltus can write");
   check_readable_name(target, path);
+  if (const std::string why = output_name_problem(path); !why.empty())
+    throw InputError(path, "", why);
   const std::string text = marked_text(kind, plain_text);
   const bool own = kind.mark != FileMark::kNone;
   const std::string never = "exists and " + unmarked_reason(kind, "") +

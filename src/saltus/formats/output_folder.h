@@ -32,6 +32,19 @@ class OutputError : public std::runtime_error {
   bool busy_;
 };
 
+/// The name Saltus gives a sibling it makes beside the file or folder `name` (a lock, a
+/// temporary, a study's DIR.partial): `lead + name + tag`, followed by up to `suffix_bytes` of a
+/// run's suffix. Where that would exceed a file name's NAME_MAX (255) bytes, as for the longest
+/// legal names, `name` is cut (on a character boundary) and followed by "~" and the digest of
+/// the whole name (base/digest.h), so the sibling of one name is always the same, and siblings
+/// of names that share their first 200 bytes differ.
+std::string sibling_name(const std::string& name, const std::string& lead, const std::string& tag,
+                         std::size_t suffix_bytes = 0);
+
+/// Why `path` cannot name an output (a clause for a message naming the path or the flag): a name
+/// in it longer than NAME_MAX bytes, which no Linux file system takes. "" when it can.
+std::string output_name_problem(const std::string& path);
+
 /// Why `folder` may not be replaced: "" when it is an empty folder or a Saltus result holding only
 /// what its record (output_kind.h) says Saltus wrote there; otherwise what makes it someone
 /// else's (a clause for a message).
@@ -83,11 +96,11 @@ class OutputFolder {
 
 /// Writes `text` as the single file `path` of `kind` (export --out FILE, model files, flight
 /// pages), with the kind's mark (marked_text, output_kind.h). The text goes to a hidden sibling
-/// `.NAME.saltus-tmp-<pid>-<n>` created with O_EXCL and O_NOFOLLOW (no planted link is followed,
-/// no other run's file is reused) and is moved into place when complete, so at every instant
-/// `path` is the old or the new complete file. An existing `path` is replaced only when it is a
-/// regular file of `kind` as Saltus wrote it (unmarked_reason is ""; asked again just before the
-/// move); a kind without a mark (BVH) never replaces a file: the move is renameat2
+/// `.NAME.saltus-tmp-<pid>-<n>` (sibling_name) created with O_EXCL and O_NOFOLLOW (no planted link
+/// is followed, no other run's file is reused) and is moved into place when complete, so at every
+/// instant `path` is the old or the new complete file. An existing `path` is replaced only when it
+/// is a regular file of `kind` as Saltus wrote it (unmarked_reason is ""; asked again just before
+/// the move); a kind without a mark (BVH) never replaces a file: the move is renameat2
 /// RENAME_NOREPLACE, or link + unlink where the file system lacks it. Missing parent folders are
 /// created. Throws InputError when `path` may not be written (exit 2; also a path that is not
 /// UTF-8, which Saltus could not read back), OutputError when the

@@ -89,12 +89,20 @@ std::vector<std::string> remove_own_partial(const fs::path& partial,
 
 }  // namespace
 
+std::string study_partial_folder(const std::string& out_dir) {
+  fs::path out = fs::absolute(out_dir).lexically_normal();
+  if (out.filename().empty()) out = out.parent_path();
+  return (out.parent_path() / sibling_name(out.filename().string(), "", ".partial")).string();
+}
+
 StudyRunResult run_study(const StudyJob& job, const std::string& out_dir,
                          const StudyRunOptions& options) {
+  if (const std::string why = output_name_problem(out_dir); !why.empty())
+    throw InputError(out_dir, "", why);
   const int cases = static_cast<int>(job.case_names.size());
   fs::path out = fs::absolute(out_dir).lexically_normal();
   if (out.filename().empty()) out = out.parent_path();
-  const fs::path partial = out.string() + ".partial";
+  const fs::path partial = study_partial_folder(out_dir);
   const StudyKind& kind = study_kind(job.study);  // an unknown kind could never be assembled
   StudyManifest manifest;
   manifest.study = job.study;

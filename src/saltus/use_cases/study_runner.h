@@ -58,6 +58,11 @@ struct StudyRunResult {
   nlohmann::json result;  ///< DIR/result.json when complete
 };
 
+/// The folder that keeps the finished cases of an interrupted study written to `out_dir`: its
+/// sibling DIR.partial (the name shortened with a digest where DIR's name leaves no room for
+/// ".partial": formats/output_folder.h, sibling_name), absolute.
+std::string study_partial_folder(const std::string& out_dir);
+
 /// Runs the shard's missing cases and, when all are there, writes DIR and removes from
 /// DIR.partial what the run wrote (a file the user put there stays). Throws InputError when
 /// DIR is not replaceable (OutputFolder's rule), when DIR.partial holds a run and `resume` is

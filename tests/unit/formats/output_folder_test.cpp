@@ -15,11 +15,13 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <stdexcept>
 
 #include "saltus/base/input_error.h"
+#include "saltus/base/text_format.h"
 #include "support/cli_runner.h"
 
 namespace saltus {
@@ -197,12 +199,86 @@ TEST(WriteOutputFile, RemovesWhatKilledWritesLeftAndKeepsALiveRunsTemporary) {
       << "only the dead write's temporary of this file goes";
 }
 
-TEST(WriteOutputFile, TheLongestLegalNameIsWritten) {
+TEST(SiblingName, KeepsANameThatFitsAndShortensALongOneApartFromItsNeighbours) {
+  EXPECT_EQ(sibling_name("out", ".", ".lock"), ".out.lock");
+  EXPECT_EQ(sibling_name("out", "", ".partial"), "out.partial");
+  const std::string a = std::string(254, 'a') + "1";  // 255 bytes: the longest legal name
+  const std::string b = std::string(254, 'a') + "2";
+  for (const std::size_t suffix : {std::size_t{0}, std::size_t{21}}) {
+    const std::string lock = sibling_name(a, ".", ".tmp-", suffix);
+    EXPECT_LE(lock.size() + suffix, 255u) << "fits a file name with the run's suffix";
+    EXPECT_EQ(lock, sibling_name(a, ".", ".tmp-", suffix)) << "the same name every time";
+    EXPECT_NE(lock, sibling_name(b, ".", ".tmp-", suffix)) << "names that differ at the end";
+    EXPECT_EQ(lock.rfind(".aaaa", 0), 0u) << lock;
+    EXPECT_EQ(lock.substr(lock.size() - 5), ".tmp-");
+  }
+  // Cut on a character boundary: a UTF-8 name gives a UTF-8 sibling.
+  std::string accents;
+  while (accents.size() < 254)
+    accents += "\u00e9";
+  const std::string cut = sibling_name(accents, ".", ".saltus-tmp-", 21);
+  EXPECT_TRUE(is_valid_utf8(cut)) << cut;
+  EXPECT_LE(cut.size() + 21, 255u);
+}
+
+TEST(WriteOutputFile, TheLongestLegalNameIsWrittenAndReplacedAndItsLeftoversFound) {
   test::TempDir dir;
-  const std::string name = std::string(250, 'a') + ".bvh";  // 254 bytes: legal
-  write_output_file(dir / name, "HIERARCHY\n", kBvh);
-  EXPECT_EQ(test::read_text(dir / name), "HIERARCHY\n");
+  const FileKind page = FileKind::commented("flight page", "<!--", "-->");
+  const std::string name = std::string(250, 'a') + ".html";  // 255 bytes: legal
+  const std::string neighbour = std::string(250, 'a') + ".htm_";
+  // What a write of this file killed before its rename left, and one of another file whose
+  // name differs only in its last byte (its own business).
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  ASSERT_GT(child, 0);
+  ::waitpid(child, nullptr, 0);
+  const std::string run = std::to_string(child) + "-0";
+  const std::string dead = sibling_name(name, ".", ".saltus-tmp-", 21) + run;
+  const std::string other = sibling_name(neighbour, ".", ".saltus-tmp-", 21) + run;
+  test::write_text(dir / dead, "half");
+  test::write_text(dir / other, "half");
+  write_output_file(dir / name, "<p>first</p>\n", page);
+  write_output_file(dir / name, "<p>second</p>\n", page);  // its own output: replaced
+  EXPECT_EQ(test::read_text(dir / name).rfind("<p>second</p>\n", 0), 0u);
+  EXPECT_EQ(names_in(dir.path()), (std::set<std::string>{name, other}));
+  const std::string bvh = std::string(251, 'b') + ".bvh";  // unmarked kinds too
+  write_output_file(dir / bvh, "HIERARCHY\n", kBvh);
+  EXPECT_EQ(test::read_text(dir / bvh), "HIERARCHY\n");
+}
+
+TEST(OutputFolder, TheLongestLegalNameIsWrittenTwiceAndWhatADeadRunLeftGoes) {
+  test::TempDir dir;
+  const std::string name(255, 'd');
+  // A run killed while writing: its temporary, recorded in the lock file it left.
+  const std::string temporary = sibling_name(name, ".", ".tmp-", 21) + "4242-0";
+  fs::create_directories(dir.path() / temporary);
+  test::write_text(dir / sibling_name(name, ".", ".lock"), "4242\ntmp " + temporary + "\n");
+  for (const char* text : {"{\"run\": 1}", "{\"run\": 2}"}) {
+    OutputFolder folder(dir / name, kRun);
+    folder.write("result.json", text);
+    folder.commit();
+  }
+  EXPECT_EQ(test::read_text(dir / (name + "/result.json")), "{\"run\": 2}");
   EXPECT_EQ(names_in(dir.path()), std::set<std::string>{name});
+}
+
+TEST(WriteOutputFile, AndOutputFolderRefuseANameLongerThanAFileSystemTakes) {
+  test::TempDir dir;
+  const std::string file = dir / (std::string(252, 'e') + ".bvh");  // 256 bytes
+  const std::string folder = dir / (std::string(256, 'e') + "/out");
+  for (const auto& write : std::vector<std::function<void()>>{
+           [&] { write_output_file(file, "HIERARCHY\n", kBvh); }, [&] { OutputFolder(file, kRun); },
+           [&] { check_output_folder(folder); }, [&] { OutputFolder(folder, kRun); }}) {
+    try {
+      write();
+      ADD_FAILURE() << "wrote";
+    } catch (const InputError& e) {
+      EXPECT_NE(e.problem().find("256 bytes long"), std::string::npos) << e.what();
+      EXPECT_NE(e.problem().find("at most 255"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(output_name_problem(dir / std::string(255, 'e')), "");
+  EXPECT_TRUE(names_in(dir.path()).empty());
 }
 
 TEST(WriteOutputFile, AndOutputFolderRefuseANameSaltusCouldNotReadBack) {

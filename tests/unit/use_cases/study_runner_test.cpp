@@ -226,6 +226,25 @@ TEST(StudyRunner, AnInterruptKeepsTheFinishedCasesAndResumeRunsTheRest) {
   EXPECT_EQ(third.cases_run, 0);
 }
 
+TEST(StudyRunner, AStudyUnderTheLongestLegalNameKeepsItsCasesBesideItAndResumes) {
+  test::TempDir dir;
+  const std::string log = dir / "log";
+  fs::create_directories(log);
+  const std::string out = dir / std::string(255, 's');  // DIR.partial would be 263 bytes
+  const std::string partial = study_partial_folder(out);
+  EXPECT_EQ(study_partial_folder(dir / "r"), dir / "r.partial");
+  EXPECT_EQ(fs::path(partial).parent_path(), dir.path());
+  const StudyRunResult first = run_study(synthetic_job(4, log, {}, 2), out, quiet_options(1));
+  EXPECT_FALSE(first.complete);
+  EXPECT_EQ(first.partial_dir, partial);
+  ASSERT_TRUE(fs::exists(partial + "/study.json"));
+  StudyRunOptions resume = quiet_options(1);
+  resume.resume = true;
+  ASSERT_TRUE(run_study(synthetic_job(4, log), out, resume).complete);
+  EXPECT_TRUE(fs::exists(out + "/convergence.csv"));
+  EXPECT_FALSE(fs::exists(partial));
+}
+
 TEST(StudyRunner, NeverReplacesAFolderSaltusDidNotWrite) {
   test::TempDir dir;
   fs::create_directories(dir / "mine");
