@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "saltus/base/text_format.h"
 #include "saltus/body/segment_names.h"
 
 namespace saltus {
@@ -32,7 +33,9 @@ Eigen::Matrix3d inertia_about(const RigidMass& piece, const Eigen::Vector3d& poi
 RigidMass combine(const RigidMass& a, const RigidMass& b) {
   RigidMass sum;
   sum.mass = a.mass + b.mass;
-  if (!(sum.mass > 0.0)) throw std::invalid_argument("combine: the pieces have no mass");
+  if (!(sum.mass > 0.0))
+    throw std::invalid_argument("combine: pieces of " + message_number(a.mass) + " and " +
+                                message_number(b.mass) + " kg have no mass together");
   sum.com = (a.mass * a.com + b.mass * b.com) / sum.mass;
   sum.inertia = inertia_about(a, sum.com) + inertia_about(b, sum.com);
   return sum;

@@ -174,6 +174,9 @@ class Builder {
                     double direction) {
     // Pointing down, the solid's CoM goes below its base; its diagonal inertia is unchanged.
     piece.com.y() = start + direction * piece.com.y();
+    // A solid too thin to weigh anything (a perimeter of 1e-300 m: its volume underflows) adds
+    // nothing; a segment made only of such solids is refused by name (check_segment_masses).
+    if (!(piece.mass > 0.0)) return;
     segment = empty ? piece : combine(segment, piece);
     empty = false;
   }
@@ -183,6 +186,17 @@ class Builder {
   int solids_ = 0;
   double volume_ = 0.0;
 };
+
+/// Refuses a model whose segment weighs nothing: its measurements in `file` give its solids no
+/// volume (the file reader's bounds keep such values out; a YeadonInput made in code may not).
+void check_segment_masses(const BodyModel& model, const std::string& file) {
+  for (const Segment& s : model.segments)
+    if (!(s.mass > 0.0))
+      throw InputError(file, "",
+                       "the measurements of the " + s.name + " segment give its solids no " +
+                           "volume, so it has no mass (" + message_number(s.mass) +
+                           " kg): are its perimeters and widths in the file's unit?");
+}
 
 struct Piece {
   RigidMass mass;
@@ -384,6 +398,7 @@ YeadonModel yeadon_model(const YeadonInput& input) {
                                         Eigen::Vector3d(0, -(calf + ankle), 0), foot, -heel));
   }
 
+  check_segment_masses(model, input.file);
   YeadonModel out;
   out.solids = b.solids();
   out.volume = b.volume();

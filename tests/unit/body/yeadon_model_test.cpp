@@ -134,5 +134,29 @@ TEST(YeadonModel, TypingErrorsAndImpossibleGeometryAreNamedByKey) {
   }
 }
 
+TEST(YeadonModel, ASegmentWithoutMassIsNamedWithTheFile) {
+  // Perimeters and widths of 1e-300 m (the file reader refuses them below 1 mm; a YeadonInput
+  // made in code is not read from a file): the left arm's solids have no volume. Once this was
+  // "combine: the pieces have no mass", naming neither the file nor the segment.
+  YeadonInput thin = ym_male();
+  for (auto& [key, value] : thin.measured)
+    if (key.rfind("La", 0) == 0 && (key.back() == 'p' || key.back() == 'w')) value = 1e-300;
+  try {
+    yeadon_model(thin);
+    FAIL() << "a massless arm was made";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), thin.file);
+    EXPECT_NE(e.problem().find("upper_arm_l segment"), std::string::npos) << e.what();
+    EXPECT_NE(e.problem().find("no mass"), std::string::npos) << e.what();
+  }
+  // One massless solid among others only adds nothing: the hand's fingers.
+  YeadonInput fingers = ym_male();
+  const double whole = yeadon_model(fingers).model.total_mass();
+  fingers.measured["La7p"] = fingers.measured["La7w"] = 1e-300;
+  const YeadonModel made = yeadon_model(fingers);
+  EXPECT_LT(made.model.total_mass(), whole);
+  EXPECT_GT(made.model.total_mass(), 0.99 * whole);
+}
+
 }  // namespace
 }  // namespace saltus
