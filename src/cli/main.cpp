@@ -24,6 +24,7 @@
 #include "saltus/evaluation/evaluate.h"
 #include "saltus/evaluation/force_metrics.h"
 #include "saltus/evaluation/joint_loads.h"
+#include "saltus/evaluation/keyframe_spacing.h"
 #include "saltus/evaluation/simulate.h"
 #include "saltus/evaluation/strength_demand.h"
 #include "saltus/evaluation/twist_sources.h"
@@ -191,6 +192,13 @@ void print_outputs(const std::string& out_dir, double seconds) {
               absolute(out_dir).c_str(), seconds);
 }
 
+/// The keyframe intervals too far apart for the motion's twist (evaluation/keyframe_spacing.h),
+/// one line each, in result.json's words.
+void print_sparse_twist(const nlohmann::json& written) {
+  for (const nlohmann::json& interval : written.at("sparse_twist_intervals"))
+    std::printf("  %s\n", interval.at("words").get<std::string>().c_str());
+}
+
 /// The motion against the athlete's strength, then "can this athlete land it?" as the app says
 /// it (use_cases/athlete_verdict.h): the one verdict, then its reasons (each joint beyond the
 /// athlete's strength, with a run the joints' warnings).
@@ -220,6 +228,7 @@ int run_evaluate(const CommonArgs& args) {
                 e.keyframe_errors.max_rotation_error_deg);
     std::printf("  Yeadon's angles: %s\n",
                 rotation_words(written.at("rotation").at("before")).c_str());
+    print_sparse_twist(written);
     print_verdict(saltus::athlete_verdict(file, options, e));
     print_apparatus(written);
     print_outputs(args.out_dir, seconds);
@@ -275,6 +284,11 @@ int run_optimize(const CommonArgs& args) {
     std::fprintf(stderr, "  iter %3d  objective %.6e  constraint violation %.2e  %.3f s\n",
                  p.iteration, p.objective, p.constraint_violation, p.elapsed_seconds);
   };
+  // Said before the solve: the optimiser cannot bring back a twist the keyframes lose.
+  if (!quiet)
+    for (const saltus::SparseTwistInterval& interval :
+         saltus::sparse_twist_intervals(file.motion, file.model))
+      std::fprintf(stderr, "  warning: %s\n", saltus::sparse_twist_words(interval).c_str());
   const saltus::OptimizationResult result =
       saltus::optimize_motion(file.motion, file.model, options, progress);
   const nlohmann::json written =
@@ -392,6 +406,7 @@ int run_optimize(const CommonArgs& args) {
     std::printf("  Yeadon's angles: %s before; %s after\n",
                 rotation_words(written.at("rotation").at("before")).c_str(),
                 rotation_words(written.at("rotation").at("after")).c_str());
+    print_sparse_twist(written);
     const saltus::JointLoadRise rise =
         saltus::largest_joint_load_rise(file.model, result.before.check, result.after.check);
     if (!rise.joint.empty())

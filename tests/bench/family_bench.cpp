@@ -1,7 +1,8 @@
 // The family sweeps (docs/performance.md): default `optimize_motion` on physically exact flights
-// (studies/exact_flights.h: the mixed family and the twisting one), on every bundled motion, and
-// on every bundled motion flown by each athlete of a seeded family (support/athlete_family.h,
-// issue 25; docs/studies.md). Run by name, one run each ('Family' alone matches all four):
+// (studies/exact_flights.h: the mixed family, the twisting one and the hard twisting one), on
+// every bundled motion, and on every bundled motion flown by each athlete of a seeded family
+// (support/athlete_family.h, issue 25; docs/studies.md). Run by name, one run each ('Family' alone
+// matches all four):
 //   build/release/tests/saltus_benchmarks --benchmark_filter='ExactFlights|Bundled'
 //   build/release/tests/saltus_benchmarks --benchmark_filter=AthleteFamily
 //   build/release/tests/saltus_benchmarks --benchmark_filter=OneMotionOnTheFamily/6/   (M7 alone)
@@ -133,6 +134,13 @@ BENCHMARK(BM_TwistingExactFlights)
     ->Args({20, 1})
     ->Iterations(1)
     ->Unit(benchmark::kSecond);
+
+/// The hard twisting family (make_hard_twisting_flight): 2-3 twists on 7-11 keyframes, issue
+/// 45's held-out kind.
+void BM_HardTwistingFlights(benchmark::State& bench) {
+  sweep_family(bench, make_hard_twisting_flight);
+}
+BENCHMARK(BM_HardTwistingFlights)->Args({12, 0})->Iterations(1)->Unit(benchmark::kSecond);
 
 BENCHMARK(BM_FamilyOfExactFlights)
     ->Args({100, 0})

@@ -12,8 +12,10 @@
 
 #include "saltus/evaluation/apparatus.h"
 #include "saltus/formats/model_file.h"
+#include "saltus/formats/motion_file.h"
 #include "saltus/formats/output_kind.h"
 #include "saltus/formats/trajectory_csv.h"
+#include "saltus/studies/exact_flights.h"
 #include "support/cli_runner.h"
 
 namespace saltus {
@@ -147,6 +149,30 @@ TEST(Cli, EvaluatePrintsTheJointsBeyondTheAthletesStrength) {
       EXPECT_NE(line.find("? red: Does not land it"), std::string::npos) << line;
     std::filesystem::remove_all(dir / "out");
   }
+}
+
+// Keyframes too far apart for the twist (evaluation/keyframe_spacing.h): a hard twisting exact
+// flight (2 twists on 7 keyframes) evaluated from its file has the interval in result.json and
+// the CLI prints result.json's words; M1 has none.
+TEST(Cli, EvaluateNamesTheKeyframesTooFarApartForTheTwist) {
+  TempDir dir;
+  const BodyModel model =
+      load_body_model(std::string(SALTUS_RESOURCES_DIR) + "/models/zatsiorsky-66kg.json");
+  save_motion_file(dir / "hard.motion.json", make_hard_twisting_flight(model, 12).motion, model);
+  const auto run = run_cli("evaluate " + (dir / "hard.motion.json") + " --out " + (dir / "hard"));
+  ASSERT_EQ(run.status, 0) << run.output;
+  const auto intervals = read_json(dir / "hard/result.json")["sparse_twist_intervals"];
+  ASSERT_FALSE(intervals.empty());
+  for (const auto& interval : intervals) {
+    EXPECT_GT(std::abs(interval["flight_twist_deg"].get<double>() -
+                       interval["interpolation_twist_deg"].get<double>()),
+              180.0);
+    EXPECT_NE(run.output.find("  " + interval["words"].get<std::string>() + "\n"),
+              std::string::npos)
+        << run.output;
+  }
+  ASSERT_EQ(run_cli("evaluate " + test::m1_path() + " --out " + (dir / "m1")).status, 0);
+  EXPECT_TRUE(read_json(dir / "m1/result.json")["sparse_twist_intervals"].empty());
 }
 
 TEST(Cli, SimulateReportsTheLanding) {

@@ -453,6 +453,17 @@ nlohmann::json result_to_json(const ResultJson& r) {
     j["rotation"]["before"] = rotation_json(*r.rotation_before);
     if (r.rotation_after) j["rotation"]["after"] = rotation_json(*r.rotation_after);
   }
+  if (r.kind != ResultJson::Kind::kSimulation) {
+    nlohmann::json intervals = nlohmann::json::array();
+    for (const SparseTwistInterval& i : r.sparse_twist_intervals)
+      intervals.push_back({{"first_keyframe", i.first_keyframe},
+                           {"start_s", i.start_s},
+                           {"end_s", i.end_s},
+                           {"flight_twist_deg", i.flight_twist_deg},
+                           {"interpolation_twist_deg", i.interpolation_twist_deg},
+                           {"words", sparse_twist_words(i)}});
+    j["sparse_twist_intervals"] = intervals;
+  }
   if (r.clearance) j["clearance"] = clearance_json(*r.clearance);
   if (r.entry) j["entry"] = entry_json(*r.entry);
   if (const auto& s = r.simulation) {
@@ -552,6 +563,20 @@ ResultJson parse_result_json(const nlohmann::json& document, const std::string& 
     rotation->require_object();
     r.rotation_before = read_rotation(rotation->at("before"));
     if (const auto after = rotation->find("after")) r.rotation_after = read_rotation(*after);
+  }
+  if (const auto intervals = root.find("sparse_twist_intervals")) {
+    intervals->require_array();
+    for (std::size_t k = 0; k < intervals->size(); ++k) {
+      const JsonNode node = intervals->at(k);
+      node.require_object();
+      SparseTwistInterval i;
+      i.first_keyframe = node.at("first_keyframe").as_int();
+      i.start_s = node.at("start_s").as_double();
+      i.end_s = node.at("end_s").as_double();
+      i.flight_twist_deg = node.at("flight_twist_deg").as_double();
+      i.interpolation_twist_deg = node.at("interpolation_twist_deg").as_double();
+      r.sparse_twist_intervals.push_back(i);
+    }
   }
   if (const auto clearance = root.find("clearance")) r.clearance = read_clearance(*clearance);
   if (const auto entry = root.find("entry")) r.entry = read_entry(*entry);
@@ -670,6 +695,7 @@ ResultJson evaluation_result(const MotionFile& file, const MotionEvaluation& e,
   r.takeoff_angular_momentum = e.samples.front().angular_momentum;
   set_joint_loads(r, file.model, e.check, nullptr);
   r.rotation_before = yeadon_summary(e.trajectory, options.samples);
+  r.sparse_twist_intervals = sparse_twist_intervals(file.motion, file.model);
   set_clearance(r, file, e.samples);
   return r;
 }
@@ -712,6 +738,7 @@ ResultJson optimization_result(const MotionFile& file, const OptimizationResult&
   set_joint_loads(r, file.model, result.before.check, &result.after.check);
   r.rotation_before = yeadon_summary(result.before.trajectory, options.nlp.samples);
   r.rotation_after = yeadon_summary(result.after.trajectory, options.nlp.samples);
+  r.sparse_twist_intervals = sparse_twist_intervals(file.motion, file.model);
   ResultJson::Optimization o;
   o.optimizer_objective_before = result.optimizer_objective_before;
   o.optimizer_objective_after = result.optimizer_objective_after;

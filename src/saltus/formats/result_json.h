@@ -15,6 +15,7 @@
 
 #include "saltus/evaluation/clearance.h"
 #include "saltus/evaluation/evaluate.h"
+#include "saltus/evaluation/keyframe_spacing.h"
 #include "saltus/evaluation/simulate.h"
 #include "saltus/evaluation/strength_demand.h"
 #include "saltus/evaluation/yeadon_angles.h"
@@ -100,6 +101,10 @@ struct ResultJson {
   /// of the evaluated, simulated or interpolated motion and of the optimised one; missing from
   /// files before them. A simulation's peak rate is not known (its samples hold no ω): 0.
   std::optional<YeadonSummary> rotation_before, rotation_after;
+  /// The keyframe intervals of the evaluated or input motion too far apart for its twist
+  /// (evaluation/keyframe_spacing.h), as "sparse_twist_intervals"; empty when every interval
+  /// holds, for simulations and in files before it.
+  std::vector<SparseTwistInterval> sparse_twist_intervals;
   /// The closest pass of the body to the apparatus (evaluation/clearance.h; its per-sample series
   /// is not written: times and distance read back empty) and, for dives, the entry into the
   /// water; of the evaluated or simulated motion, missing from optimisations and older files.

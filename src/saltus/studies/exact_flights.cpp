@@ -140,6 +140,19 @@ Keyframe pose_keyframe(const BodyModel& model, double time, const Pose& p) {
   return k;
 }
 
+/// The motion the joints are splined through: the take-off pose at 0, `early` and `late` at
+/// their times, the landing pose at `duration` (the root left at identity: only joints count).
+Motion four_pose_source(const BodyModel& model, double duration, const Pose& takeoff,
+                        double early_time, const Pose& early, double late_time, const Pose& late,
+                        const Pose& landing) {
+  Motion source;
+  source.model = model.name;
+  source.keyframes = {pose_keyframe(model, 0.0, takeoff), pose_keyframe(model, early_time, early),
+                      pose_keyframe(model, late_time, late),
+                      pose_keyframe(model, duration, landing)};
+  return source;
+}
+
 const char* shape_name(FlightShape shape) {
   switch (shape) {
     case FlightShape::kTucked:
@@ -198,11 +211,14 @@ double flown_twists(const std::vector<BodyState<double>>& flown) {
 }
 
 /// Flies the joints from `initial`, records the root's turn in `f`, keyframes the flight at
-/// times a user would type (two decimals, roughly even, no more than 150° of root turn between
-/// neighbours and at least 0.06 s apart where the time allows) and stores the exact motion.
+/// times a user would type (two decimals, roughly even) and stores the exact motion. With
+/// `key_count` 0 the count follows the flight: no more than 150° of root turn between neighbours
+/// and at least 0.06 s apart where the time allows; otherwise exactly `key_count` keyframes,
+/// however far the body turns between them.
 void keyframe_flight(const BodyModel& model, Random& r, const JointMotion& joint_motion,
                      const FreeFlightOptions& flight_options, const FreeFlightInitialState& initial,
-                     double duration, const std::vector<double>& fine, ExactFlight& f) {
+                     double duration, const std::vector<double>& fine, ExactFlight& f,
+                     int key_count = 0) {
   const int fine_count = static_cast<int>(fine.size()) - 1;
   const std::vector<BodyState<double>> flown =
       simulate_free_flight(model, joint_motion, initial, fine, flight_options);
@@ -218,7 +234,7 @@ void keyframe_flight(const BodyModel& model, Random& r, const JointMotion& joint
   };
   const int fewest = std::max(5, static_cast<int>(std::ceil(f.root_turn_deg / 110.0)) + 1);
   const int most_keys = std::max(fewest, std::min(25, static_cast<int>(duration / 0.06) + 1));
-  int count = r.integer(fewest, most_keys);
+  int count = key_count > 0 ? key_count : r.integer(fewest, most_keys);
   std::vector<double> times;
   for (;; ++count) {
     times.assign(1, 0.0);
@@ -233,7 +249,7 @@ void keyframe_flight(const BodyModel& model, Random& r, const JointMotion& joint
     for (std::size_t i = 0; i + 1 < times.size(); ++i)
       fine_enough = fine_enough && times[i + 1] > times[i] + 0.005 &&
                     (turn_at(times[i + 1]) - turn_at(times[i])) * kDegreesPerRadian <= 150.0;
-    if (fine_enough || count >= 40) break;
+    if (key_count > 0 || fine_enough || count >= 40) break;
   }
 
   const std::vector<BodyState<double>> at_keys =
@@ -249,6 +265,47 @@ void keyframe_flight(const BodyModel& model, Random& r, const JointMotion& joint
     for (const auto& joint : at_keys[i].joints)
       k.rotations.push_back(joint.q);
     f.motion.keyframes.push_back(std::move(k));
+  }
+}
+
+/// Tilts `initial`'s angular momentum, about the somersault axis x, from x towards the upright
+/// body's long axis y (a contact twist) by the angle that flies `wanted` twists: three passes of
+/// twists ∝ sin(tilt), held within 5° and `most_deg`. Records the tilt in `f`.
+void tilt_for_twists(const BodyModel& model, const JointMotion& joint_motion,
+                     const FreeFlightOptions& flight_options, const std::vector<double>& fine,
+                     double wanted, bool positive, double most_deg, FreeFlightInitialState& initial,
+                     ExactFlight& f) {
+  const double sign = positive ? 1.0 : -1.0;
+  const double L = initial.angular_momentum.x();
+  const auto tilted = [&](double deg) {
+    const double a = deg / kDegreesPerRadian;
+    return Eigen::Vector3d(L * std::cos(a), sign * std::abs(L) * std::sin(a), 0.0);
+  };
+  double deg = 15.0;
+  for (int pass = 0; pass < 3; ++pass) {
+    initial.angular_momentum = tilted(deg);
+    const double got = std::abs(
+        flown_twists(simulate_free_flight(model, joint_motion, initial, fine, flight_options)));
+    const double scaled =
+        std::asin(std::min(1.0, std::sin(deg / kDegreesPerRadian) * wanted / std::max(got, 1e-3)));
+    deg = std::clamp(scaled * kDegreesPerRadian, 5.0, most_deg);
+  }
+  f.takeoff_tilt_deg = sign * deg;
+  initial.angular_momentum = tilted(deg);
+}
+
+/// Scales the somersault momentum L = (±30, 0, 0) twice by the turn it gives, so the flight
+/// turns `somersaults` (the turn is nearly proportional to L; the joints' movement adds a
+/// little).
+void size_somersault(const BodyModel& model, const JointMotion& joint_motion,
+                     const FreeFlightOptions& flight_options, const std::vector<double>& fine,
+                     double somersaults, FreeFlightInitialState& initial) {
+  initial.angular_momentum = Eigen::Vector3d(somersaults < 0 ? -30.0 : 30.0, 0.0, 0.0);
+  for (int pass = 0; pass < 2; ++pass) {
+    const double turned =
+        accumulated_turn(simulate_free_flight(model, joint_motion, initial, fine, flight_options))
+            .back();
+    initial.angular_momentum.x() *= std::abs(somersaults) * 2.0 * kPi / turned;
   }
 }
 
@@ -377,13 +434,13 @@ ExactFlight make_twisting_flight(const BodyModel& model, std::uint64_t seed) {
       p->abduct_l = p->abduct_r = r.uniform(0, 6);
     }
   }
-  Motion source;
-  source.model = model.name;
-  source.keyframes = {pose_keyframe(model, 0.0, takeoff),
-                      pose_keyframe(model, duration * r.uniform(0.12, 0.22), early),
-                      pose_keyframe(model, duration * r.uniform(0.6, 0.75), late),
-                      pose_keyframe(model, duration, landing_pose(r))};
-  const PosedJoints posed(source, model);
+  // Drawn in this order (the stream is the family's).
+  const double early_time = duration * r.uniform(0.12, 0.22);
+  const double late_time = duration * r.uniform(0.6, 0.75);
+  const Pose landing = landing_pose(r);
+  const PosedJoints posed(
+      four_pose_source(model, duration, takeoff, early_time, early, late_time, late, landing),
+      model);
   const JointMotion joint_motion = posed.motion();
   const FreeFlightOptions& flight_options = posed.flight_options;
   FreeFlightInitialState initial;
@@ -393,41 +450,63 @@ ExactFlight make_twisting_flight(const BodyModel& model, std::uint64_t seed) {
   // Somersault: L about x scaled twice by the turn it gives; then, twisting from the take-off,
   // tilted from the somersault axis towards the body's long axis (upright at take-off: y), so
   // that the long axis leans out of the plane the body somersaults in (a contact twist).
-  initial.angular_momentum = Eigen::Vector3d(30.0 * direction, 0.0, 0.0);
-  for (int pass = 0; pass < 2; ++pass) {
-    const double turned =
-        accumulated_turn(simulate_free_flight(model, joint_motion, initial, fine, flight_options))
-            .back();
-    initial.angular_momentum.x() *= std::abs(f.somersaults) * 2.0 * kPi / turned;
-  }
+  size_somersault(model, joint_motion, flight_options, fine, f.somersaults, initial);
   if (from_takeoff) {
-    // A twist count in halves, 1 to 3 as the time allows; the tilt that gives it (twists grow
-    // nearly like sin(tilt)), within 5-30°.
+    // A twist count in halves, 1 to 3 as the time allows.
     const double wanted =
         r.integer(2, std::max(2, std::min(6, static_cast<int>(4 * duration) - 2))) / 2.0;
-    const double sign = r.chance(0.5) ? 1.0 : -1.0;
-    const double L = initial.angular_momentum.x();
-    const auto tilted = [&](double deg) {
-      const double a = deg / kDegreesPerRadian;
-      return Eigen::Vector3d(L * std::cos(a), sign * std::abs(L) * std::sin(a), 0.0);
-    };
-    double deg = 15.0;
-    for (int pass = 0; pass < 3; ++pass) {
-      initial.angular_momentum = tilted(deg);
-      const double got = std::abs(
-          flown_twists(simulate_free_flight(model, joint_motion, initial, fine, flight_options)));
-      const double scaled = std::asin(
-          std::min(1.0, std::sin(deg / kDegreesPerRadian) * wanted / std::max(got, 1e-3)));
-      deg = std::clamp(scaled * kDegreesPerRadian, 5.0, 30.0);
-    }
-    f.takeoff_tilt_deg = sign * deg;
-    initial.angular_momentum = tilted(deg);
+    tilt_for_twists(model, joint_motion, flight_options, fine, wanted, r.chance(0.5), 30.0, initial,
+                    f);
   }
   keyframe_flight(model, r, joint_motion, flight_options, initial, duration, fine, f);
   f.flown_twists =
       flown_twists(simulate_free_flight(model, joint_motion, initial, fine, flight_options));
   f.twists = std::abs(f.flown_twists);
   f.motion.name = "twisting exact flight " + std::to_string(seed);
+  return f;
+}
+
+ExactFlight make_hard_twisting_flight(const BodyModel& model, std::uint64_t seed) {
+  Random r(seed ^ 0x4841524454ull);  // "HARDT": a stream apart from the other families'
+  ExactFlight f;
+  f.seed = seed;
+  f.shape = FlightShape::kStraight;
+  f.twist_source = "take-off";
+  const double duration = two_decimals(r.uniform(1.5, 2.0));
+  f.somersaults = r.chance(0.7) ? -1.0 : 1.0;   // mostly backwards, as the held-out flight
+  const double wanted = r.integer(4, 6) / 2.0;  // 2, 2.5 or 3 twists
+  const int key_count = r.integer(7, 11);
+
+  const double g = kStandardGravity;
+  const Eigen::Vector3d velocity(r.uniform(-0.1, 0.1), g * duration / 2.0, r.uniform(-0.3, 0.3));
+  const Eigen::Vector3d position(0.0, r.uniform(1.0, 1.3), 0.0);
+
+  // Both arms overhead at take-off, in by the first shape (the twist speeds up as they come
+  // in), still in before the landing's opening.
+  Pose takeoff = takeoff_pose(r);
+  draw_arms(r, takeoff, -180, -160, 0, 10, -10, 0);
+  const Pose early = shape_pose(r, FlightShape::kStraight, true);
+  const Pose late = shape_pose(r, FlightShape::kStraight, true);
+  const double early_time = duration * r.uniform(0.12, 0.2);
+  const double late_time = duration * r.uniform(0.65, 0.8);
+  const Pose landing = landing_pose(r);
+  const PosedJoints posed(
+      four_pose_source(model, duration, takeoff, early_time, early, late_time, late, landing),
+      model);
+  const JointMotion joint_motion = posed.motion();
+  const FreeFlightOptions& flight_options = posed.flight_options;
+  FreeFlightInitialState initial;
+  initial.com_position = position;
+  initial.com_velocity = velocity;
+  const std::vector<double> fine = fine_times(duration);
+  size_somersault(model, joint_motion, flight_options, fine, f.somersaults, initial);
+  tilt_for_twists(model, joint_motion, flight_options, fine, wanted, r.chance(0.5), 40.0, initial,
+                  f);
+  keyframe_flight(model, r, joint_motion, flight_options, initial, duration, fine, f, key_count);
+  f.flown_twists =
+      flown_twists(simulate_free_flight(model, joint_motion, initial, fine, flight_options));
+  f.twists = std::abs(f.flown_twists);
+  f.motion.name = "hard twisting flight " + std::to_string(seed);
   return f;
 }
 

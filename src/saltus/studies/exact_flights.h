@@ -48,6 +48,12 @@ ExactFlight make_exact_flight(const BodyModel& model, std::uint64_t seed);
 /// from a stream of its own.
 ExactFlight make_twisting_flight(const BodyModel& model, std::uint64_t seed);
 
+/// The hard twisting flight drawn from `seed` (issue 45's held-out kind): a straight 1 somersault
+/// (mostly backwards) of 1.5-2.0 s with 2, 2.5 or 3 twists from a take-off momentum tilted up to
+/// 40°, both arms coming in from overhead, keyframed at 7-11 roughly even times whatever the body
+/// turns between them (up to ~200° of twist per interval). Deterministic, from a stream of its own.
+ExactFlight make_hard_twisting_flight(const BodyModel& model, std::uint64_t seed);
+
 /// `motion` with each interior keyframe time moved by up to ±max_shift (s), drawn from `seed`,
 /// each move limited to 40 % of the gap towards its neighbours so the order stays; first and last
 /// stay. Times keep two decimals, as typed.

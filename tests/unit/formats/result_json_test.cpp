@@ -134,6 +134,14 @@ void expect_same(const ResultJson& a, const ResultJson& b) {
   EXPECT_TRUE(fields(a.strength_after) == fields(b.strength_after));
   EXPECT_EQ(std::tie(a.strength_reference, a.strength_verdict_before, a.strength_verdict_after),
             std::tie(b.strength_reference, b.strength_verdict_before, b.strength_verdict_after));
+  ASSERT_EQ(a.sparse_twist_intervals.size(), b.sparse_twist_intervals.size());
+  for (std::size_t k = 0; k < a.sparse_twist_intervals.size(); ++k) {
+    const SparseTwistInterval &x = a.sparse_twist_intervals[k], &y = b.sparse_twist_intervals[k];
+    EXPECT_EQ(std::tie(x.first_keyframe, x.start_s, x.end_s, x.flight_twist_deg,
+                       x.interpolation_twist_deg),
+              std::tie(y.first_keyframe, y.start_s, y.end_s, y.flight_twist_deg,
+                       y.interpolation_twist_deg));
+  }
 }
 
 /// A result.json of `kind` with seeded values in every field the kind has.
@@ -235,6 +243,16 @@ ResultJson random_result(ResultJson::Kind kind, std::mt19937& rng) {
       r.entry = e;
     }
   }
+  if (kind != ResultJson::Kind::kSimulation)
+    for (int k = rng() % 3; k > 0; --k) {
+      SparseTwistInterval i;
+      i.first_keyframe = static_cast<int>(rng() % 20);
+      i.start_s = positive(rng) / 1e4;
+      i.end_s = i.start_s + positive(rng) / 1e4;
+      i.flight_twist_deg = any(rng);
+      i.interpolation_twist_deg = any(rng);
+      r.sparse_twist_intervals.push_back(i);
+    }
   if (kind == ResultJson::Kind::kSimulation) {
     ResultJson::Simulation s;
     s.angular_momentum_source =
@@ -334,11 +352,12 @@ TEST(ResultJson, KeysAreThoseOfDesignSection6) {
                           "takeoff_angular_momentum",
                           "residual_check",
                           "clearance",
-                          "joint_strength"})
+                          "joint_strength",
+                          "sparse_twist_intervals"})
     EXPECT_TRUE(e.contains(key)) << key;
   // "entry" for dives only.
   EXPECT_EQ(e.contains("entry"), e["clearance"]["apparatus"] == "platform");
-  EXPECT_EQ(e.size(), 24u + e.contains("entry")) << e.dump();
+  EXPECT_EQ(e.size(), 25u + e.contains("entry")) << e.dump();
   for (const char* key :
        {"coordinate", "direction", "words", "share", "time_s", "moment_Nm", "capacity_Nm",
         "angle_deg", "shortening_speed_rad_s", "extrapolated", "source"})

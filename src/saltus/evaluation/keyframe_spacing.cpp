@@ -1,0 +1,97 @@
+#include "saltus/evaluation/keyframe_spacing.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "saltus/base/constants.h"
+#include "saltus/base/text_format.h"
+#include "saltus/evaluation/simulate.h"
+#include "saltus/evaluation/yeadon_angles.h"
+#include "saltus/motion/interpolate.h"
+
+namespace saltus {
+namespace {
+
+/// Times every ≤ 5 ms over the flight with the keyframe times among them (ψ is read there).
+std::vector<double> grid_with_keyframes(const Motion& motion) {
+  const double duration = motion.flight_time();
+  const int steps = static_cast<int>(std::ceil(duration / 0.005));
+  std::vector<double> times;
+  for (int i = 0; i <= steps; ++i)
+    times.push_back(duration * i / steps);
+  for (const Keyframe& k : motion.keyframes)
+    times.push_back(k.time);
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  return times;
+}
+
+/// Yeadon's ψ (rad, unwrapped) of `rotations` at the sample of each time in `at`.
+std::vector<double> twist_at(const std::vector<double>& times,
+                             const std::vector<Eigen::Quaterniond>& rotations,
+                             const std::vector<double>& at) {
+  const std::vector<Eigen::Vector3d> angles = unwrapped_angles(rotations);
+  std::vector<double> out;
+  for (const double t : at)
+    out.push_back(angles[std::lower_bound(times.begin(), times.end(), t) - times.begin()].z());
+  return out;
+}
+
+}  // namespace
+
+std::vector<SparseTwistInterval> sparse_twist_intervals(const Motion& motion,
+                                                        const BodyModel& model) {
+  const Trajectory<double> interpolation = motion_trajectory(motion, model);
+  const PrescribedJoints joints = trajectory_joints(interpolation);
+  FreeFlightInitialState initial;
+  initial.com_position = motion.takeoff.com_position;
+  initial.com_velocity = motion.takeoff.com_velocity;
+  initial.root_orientation = joints.takeoff_root;
+  initial.angular_momentum = motion.takeoff.angular_momentum
+                                 ? *motion.takeoff.angular_momentum
+                                 : takeoff_angular_momentum(motion, model, interpolation).value;
+  FreeFlightOptions integration;
+  integration.breakpoints = joints.breakpoints;
+  const std::vector<double> times = grid_with_keyframes(motion);
+  const std::vector<BodyState<double>> states =
+      simulate_free_flight(model, joints.motion, initial, times, integration);
+
+  std::vector<Eigen::Quaterniond> flown, interpolated;
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    flown.push_back(states[i].joints[0].q);
+    interpolated.push_back(interpolation.rotations[0].evaluate(times[i]).q);
+  }
+  std::vector<double> key_times;
+  for (const Keyframe& k : motion.keyframes)
+    key_times.push_back(k.time);
+  const std::vector<double> flight_twist = twist_at(times, flown, key_times);
+  const std::vector<double> interpolation_twist = twist_at(times, interpolated, key_times);
+
+  std::vector<SparseTwistInterval> out;
+  for (std::size_t i = 0; i + 1 < key_times.size(); ++i) {
+    SparseTwistInterval interval;
+    interval.first_keyframe = static_cast<int>(i);
+    interval.start_s = key_times[i];
+    interval.end_s = key_times[i + 1];
+    interval.flight_twist_deg = (flight_twist[i + 1] - flight_twist[i]) * kDegreesPerRadian;
+    interval.interpolation_twist_deg =
+        (interpolation_twist[i + 1] - interpolation_twist[i]) * kDegreesPerRadian;
+    if (std::abs(interval.flight_twist_deg - interval.interpolation_twist_deg) >
+        kSparseTwistLimitDeg)
+      out.push_back(interval);
+  }
+  return out;
+}
+
+std::string sparse_twist_words(const SparseTwistInterval& interval) {
+  return "keyframes " + std::to_string(interval.first_keyframe + 1) + "-" +
+         std::to_string(interval.first_keyframe + 2) + format_number(" (%.2f-", interval.start_s) +
+         format_number("%.2f s) ", interval.end_s) +
+         "are too far apart for the twist: the free flight from the take-off twists " +
+         format_number("%+.0f deg between them, ", interval.flight_twist_deg) +
+         format_number("the interpolation %+.0f deg; ", interval.interpolation_twist_deg) +
+         format_number("add a keyframe near t = %.2f s", 0.5 * (interval.start_s + interval.end_s));
+}
+
+}  // namespace saltus
