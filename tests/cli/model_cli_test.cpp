@@ -49,6 +49,28 @@ TEST(CliModel, NewAthletesAreReadAndRunByTheOtherVerbs) {
             result["before"]["avg_root_force"].get<double>());
 }
 
+TEST(CliModel, ASmallAthleteFliesTheSameSpinAndNotAnImplausibleTakeOff) {
+  // A 0.6 m child flies M7 with M7's own spin (same-spin, the default); M7's own angular
+  // momentum on it (keep-momentum) would spin it at over 500 rad/s and is refused.
+  test::TempDir dir;
+  const std::string child = dir / "child.model.json";
+  ASSERT_EQ(test::run_cli("model new --height 0.6 --mass 10 --sex female -q --out " + child).status,
+            0);
+  const std::string m7 = std::string(SALTUS_EXAMPLES_DIR) +
+                         "/motions/M7-double-front-one-and-a-half-twists.motion.json";
+  const auto same = test::run_cli("simulate " + m7 + " --model " + child +
+                                  " --takeoff same-spin --samples 11 -q --out " + (dir / "same"));
+  EXPECT_EQ(same.status, 0) << same.output;
+  const auto kept =
+      test::run_cli("simulate " + m7 + " --model " + child +
+                    " --takeoff keep-momentum --samples 11 -q --out " + (dir / "kept"));
+  EXPECT_EQ(kept.status, 2) << kept.output;
+  EXPECT_NE(kept.output.find("/takeoff/angular_momentum: the take-off angular momentum kept from"),
+            std::string::npos)
+      << kept.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "kept"));
+}
+
 TEST(CliModel, BadInputExits2NamingTheFlagAndWritesNothing) {
   test::TempDir dir;
   const std::string out = dir / "x.model.json";

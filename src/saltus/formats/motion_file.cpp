@@ -144,23 +144,24 @@ Eigen::Matrix3d inertia_about_com(const BodyModel& model, const Keyframe& keyfra
   return inertia;
 }
 
-/// The take-off angular momentum, if given, must not spin the body implausibly fast in the
-/// first keyframe's pose (L = [1e4, 1e4, 1e4] made the free-flight simulation diverge).
-void check_angular_momentum(const JsonNode& root, const Motion& motion, const BodyModel& model) {
-  if (!motion.takeoff.angular_momentum) return;
+}  // namespace
+
+void check_takeoff_spin(const Motion& motion, const BodyModel& model, const std::string& file,
+                        const std::string& whose) {
+  if (!motion.takeoff.angular_momentum || motion.keyframes.empty()) return;
   const Eigen::Vector3d omega = inertia_about_com(model, motion.keyframes.front())
                                     .ldlt()
                                     .solve(*motion.takeoff.angular_momentum);
   const double rate = omega.norm();
   if (!(rate <= plausible::kMaxBodyAngularVelocity))
-    root.at("takeoff")
-        .at("angular_momentum")
-        .fail("this angular momentum turns the body (model \"" + model.name +
-              "\", first keyframe's "
-              "pose) at " +
-              message_number(rate) + " rad/s, beyond the plausible " +
-              message_number(plausible::kMaxBodyAngularVelocity) + " rad/s");
+    throw InputError(file, "/takeoff/angular_momentum",
+                     whose + " turns the body (model \"" + model.name +
+                         "\", first keyframe's pose) at " + message_number(rate) +
+                         " rad/s, beyond the plausible " +
+                         message_number(plausible::kMaxBodyAngularVelocity) + " rad/s");
 }
+
+namespace {
 
 double parse_positive(const JsonNode& node, const std::string& what) {
   const double v = node.as_double();
@@ -478,10 +479,10 @@ ModelReference model_reference_for(const std::string& model_file, const std::str
   return reference;
 }
 
-Motion parse_motion(const nlohmann::json& document, const std::string& file,
-                    const BodyModel& model) {
+Motion parse_motion(const nlohmann::json& document, const std::string& file, const BodyModel& model,
+                    SpinCheck spin) {
   // A motion file Saltus wrote on its own carries its mark (motion_file_kind()): read past it.
-  if (has_json_mark(document)) return parse_motion(without_json_mark(document), file, model);
+  if (has_json_mark(document)) return parse_motion(without_json_mark(document), file, model, spin);
   const JsonNode root(document, file);
   check_format_tag(root);
   root.require_keys_within(
@@ -496,7 +497,8 @@ Motion parse_motion(const nlohmann::json& document, const std::string& file,
   motion.takeoff = parse_takeoff(root.at("takeoff"));
   if (auto tolerances = root.find("tolerances")) motion.tolerances = parse_tolerances(*tolerances);
   motion.keyframes = parse_keyframes(root.at("keyframes"), model);
-  check_angular_momentum(root, motion, model);
+  // L = [1e4, 1e4, 1e4] made the free-flight simulation diverge.
+  if (spin == SpinCheck::kOnLoad) check_takeoff_spin(motion, model, file, "this angular momentum");
   if (auto spline = root.find("spline"))
     motion.spline = parse_spline(*spline, model, motion.keyframes);
   return motion;
@@ -520,7 +522,8 @@ std::string read_motion_model_field(const nlohmann::json& document, const std::s
   return model;
 }
 
-MotionFile load_motion_file(const std::string& path, const std::string& model_override) {
+MotionFile load_motion_file(const std::string& path, const std::string& model_override,
+                            SpinCheck spin) {
   const nlohmann::json document = read_json_file(path);
   std::string model_path;
   std::string model_name;
@@ -546,7 +549,7 @@ MotionFile load_motion_file(const std::string& path, const std::string& model_ov
   MotionFile result;
   result.path = path;
   result.model = load_body_model(model_path);
-  result.motion = parse_motion(document, path, result.model);
+  result.motion = parse_motion(document, path, result.model, spin);
   // The motion now refers to the model it was actually loaded with, so writing it back out
   // (e.g. optimized.motion.json) reproduces the run.
   result.motion.model = model_name;

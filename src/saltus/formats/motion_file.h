@@ -19,16 +19,29 @@ inline constexpr const char* kMotionFormatTag = "saltus-motion/1";
 /// folders carry no mark.
 const FileKind& motion_file_kind();
 
+/// Whether reading a motion checks its take-off angular momentum on the model it is read with
+/// (check_takeoff_spin), or leaves that to a caller that changes the take-off first (the motion
+/// flown by another athlete: use_cases/athlete_models.h checks the take-off that athlete flies).
+enum class SpinCheck { kOnLoad, kByCaller };
+
 /// Parses and validates a "saltus-motion/1" document against `model` (every keyframe must give
 /// every joint of the model, no unknown joints). `file` is used in messages. Normalises
 /// quaternions off by at most 1e-3 in norm; rejects worse. Throws InputError naming file and
 /// JSON path.
-Motion parse_motion(const nlohmann::json& document, const std::string& file,
-                    const BodyModel& model);
+Motion parse_motion(const nlohmann::json& document, const std::string& file, const BodyModel& model,
+                    SpinCheck spin = SpinCheck::kOnLoad);
 
 /// Reads a motion file and the model it names (resolved by resolve_model_path). If
 /// `model_override` is not empty it is used instead of the file's "model" field.
-MotionFile load_motion_file(const std::string& path, const std::string& model_override = "");
+MotionFile load_motion_file(const std::string& path, const std::string& model_override = "",
+                            SpinCheck spin = SpinCheck::kOnLoad);
+
+/// Refuses a take-off angular momentum that would spin `model` implausibly fast: |I⁻¹·L| in the
+/// first keyframe's pose beyond plausible::kMaxBodyAngularVelocity. InputError naming `file`
+/// and /takeoff/angular_momentum; `whose` begins the message ("this angular momentum", "the
+/// same-spin take-off on this athlete"). Nothing to check without an angular momentum.
+void check_takeoff_spin(const Motion& motion, const BodyModel& model, const std::string& file,
+                        const std::string& whose);
 
 /// What the "model" field of a motion file saved at `motion_file` should say to name the model
 /// file `model_file` so that reading it back finds that file: a bundled model's name (a file

@@ -209,8 +209,11 @@ TakeoffRule parse_takeoff_rule(const std::string& text, const std::string& field
 
 MotionFile load_motion_for_athlete(const std::string& path, const std::string& model_override,
                                    TakeoffRule rule, const CaptureFileOptions& capture_options) {
-  MotionFile athlete = load_motion_or_capture(path, model_override, capture_options);
-  if (model_override.empty()) return athlete;
+  if (model_override.empty()) return load_motion_or_capture(path, "", capture_options);
+  // The motion's own take-off is checked on its own body; on this athlete, the take-off it flies
+  // (adapt_takeoff_to_athlete): a small athlete spins a big one's L far faster than same-spin.
+  MotionFile athlete =
+      load_motion_or_capture(path, model_override, capture_options, SpinCheck::kByCaller);
   return adapt_takeoff_to_athlete(load_motion_or_capture(path, "", capture_options),
                                   std::move(athlete), rule);
 }
@@ -244,6 +247,11 @@ MotionFile adapt_takeoff_to_athlete(const MotionFile& own, MotionFile athlete, T
         athlete_inertia * own_inertia.ldlt().solve(adaptation.own_angular_momentum);
   }
   athlete.motion.takeoff.angular_momentum = adaptation.angular_momentum;
+  check_takeoff_spin(
+      athlete.motion, athlete.model, athlete.path,
+      rule == TakeoffRule::kSameSpin
+          ? "the same-spin take-off on this athlete (from model \"" + own.model.name + "\"'s)"
+          : "the take-off angular momentum kept from model \"" + own.model.name + "\"");
   athlete.takeoff_adaptation = adaptation;
   return athlete;
 }

@@ -475,8 +475,8 @@ CaptureFileOptions capture_import_options(const std::string& model, const std::s
 }
 
 MotionFile load_motion_or_capture(const std::string& path, const std::string& model_override,
-                                  const CaptureFileOptions& capture_options) {
-  if (!is_capture_path(path)) return load_motion_file(path, model_override);
+                                  const CaptureFileOptions& capture_options, SpinCheck spin) {
+  if (!is_capture_path(path)) return load_motion_file(path, model_override, spin);
   CaptureFileOptions options = capture_options;
   options.model = model_override;
   const CaptureFile capture = import_capture_file(path, options);

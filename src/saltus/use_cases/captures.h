@@ -7,6 +7,7 @@
 #include <string>
 
 #include "saltus/capture/capture_import.h"
+#include "saltus/formats/motion_file.h"
 #include "saltus/motion/motion.h"
 
 namespace saltus {
@@ -74,8 +75,11 @@ bool is_capture_path(const std::string& path);
 
 /// A motion file, or a capture imported with `capture_options` (its picked keyframes; the
 /// defaults of `saltus import` unless given; their model is `model_override`), with its model.
+/// `spin`: whether a motion file's take-off angular momentum is checked on that model
+/// (formats/motion_file.h).
 MotionFile load_motion_or_capture(const std::string& path, const std::string& model_override = "",
-                                  const CaptureFileOptions& capture_options = {});
+                                  const CaptureFileOptions& capture_options = {},
+                                  SpinCheck spin = SpinCheck::kOnLoad);
 
 /// What `saltus export` reads: a motion file, a capture, or a result folder of `optimize`
 /// (optimized.motion.json) or `import` (capture.motion.json). InputError when a folder holds

@@ -10,9 +10,12 @@
 #include <random>
 
 #include "saltus/base/input_error.h"
+#include "saltus/evaluation/rotation_metrics.h"
+#include "saltus/evaluation/sampling.h"
 #include "saltus/evaluation/simulate.h"
 #include "saltus/formats/model_file.h"
 #include "saltus/formats/motion_file.h"
+#include "saltus/motion/interpolate.h"
 #include "support/cli_runner.h"
 #include "support/test_motions.h"
 
@@ -168,6 +171,51 @@ TEST(AthleteModels, TheSameSpinOnAScaledAthleteFliesTheSameRotation) {
   EXPECT_FALSE(load_motion_for_athlete(test::m1_path(), "", TakeoffRule::kSameSpin)
                    .takeoff_adaptation.has_value());
   EXPECT_EQ(ath_error_of([] { parse_takeoff_rule("spin", "--takeoff"); }).file(), "--takeoff");
+}
+
+/// |I⁻¹·L|, rad/s: the spin `motion`'s take-off gives `model` in its pose at t = 0 (the inertia
+/// from the segment poses, evaluation/rotation_metrics.h, not the reader's check).
+double ath_spin(const MotionFile& file) {
+  const SampleRecord start =
+      evaluate_trajectory(file.model, motion_trajectory(file.motion, file.model), {0.0})[0];
+  return whole_body_inertia_about_com(file.model, start)
+      .ldlt()
+      .solve(*file.motion.takeoff.angular_momentum)
+      .norm();
+}
+
+TEST(AthleteModels, ASmallAthletesTakeOffIsCheckedAsItIsFlown) {
+  // A 0.6 m, 10 kg child (model new takes 0.5 to 2.8 m): M7's own angular momentum would spin
+  // it at over 500 rad/s, but same-spin flies M7's own spin. The plausibility check runs on
+  // the take-off flown; it once ran on M7's own L on the small body and refused same-spin.
+  const test::TempDir dir;
+  const std::string m7 = std::string(SALTUS_EXAMPLES_DIR) +
+                         "/motions/M7-double-front-one-and-a-half-twists.motion.json";
+  const std::string small = dir / "small.model.json";
+  AthleteSize child;
+  child.height_m = 0.6;
+  child.mass_kg = 10.0;
+  child.sex = Sex::kFemale;
+  save_body_model_file(small, new_athlete_model(child));
+  const MotionFile own = load_motion_file(m7);
+  const MotionFile flown = load_motion_for_athlete(m7, small, TakeoffRule::kSameSpin);
+  EXPECT_NEAR(ath_spin(flown), ath_spin(own), 1e-6 * ath_spin(own));
+  EXPECT_LT(ath_spin(own), 20.0);
+  MotionFile unadapted = flown;
+  unadapted.motion.takeoff.angular_momentum = own.motion.takeoff.angular_momentum;
+  EXPECT_GT(ath_spin(unadapted), 200.0) << "what the check once saw";
+  // The same angular momentum on the small body is what it would fly: refused, naming the
+  // file, the field and where that momentum comes from.
+  const InputError kept =
+      ath_error_of([&] { load_motion_for_athlete(m7, small, TakeoffRule::kKeepMomentum); });
+  EXPECT_EQ(kept.file(), m7);
+  EXPECT_EQ(kept.json_path(), "/takeoff/angular_momentum");
+  EXPECT_NE(kept.problem().find("kept from model \"" + own.model.name + "\""), std::string::npos)
+      << kept.what();
+  EXPECT_NE(kept.problem().find("beyond the plausible 200 rad/s"), std::string::npos)
+      << kept.what();
+  // Motions in memory are checked alike.
+  EXPECT_THROW(adapt_takeoff_to_athlete(own, flown, TakeoffRule::kKeepMomentum), InputError);
 }
 
 TEST(AthleteModels, AMotionInMemoryIsCarriedOverAsItsFileIs) {
