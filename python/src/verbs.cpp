@@ -207,7 +207,8 @@ void bind_verbs(py::module_& m) {
               saltus::format_number("%.17g", f[0]) + ":" + saltus::format_number("%.17g", f[1]);
         }
         const saltus::CaptureFileOptions options = saltus::capture_import_options(
-            model_text, mapping_text, keyframes_text, flight_text, frame_time);
+            model_text, mapping_text, keyframes_text, flight_text,
+            frame_time != 0.0 ? std::optional<double>(frame_time) : std::nullopt);  // 0: the file's
         CaptureImport out;
         py::gil_scoped_release release;
         out.capture =

@@ -14,9 +14,9 @@ struct ImportArgs {
   std::string out_dir;
   std::string model;
   std::string mapping;
-  std::string keyframes;    ///< "" (automatic), a count, or "all"
-  std::string flight;       ///< "" or "START:END" in seconds
-  double frame_time = 0.0;  ///< 0 = the file's
+  std::string keyframes;             ///< "" (automatic), a count, or "all"
+  std::string flight;                ///< "" or "START:END" in seconds
+  std::optional<double> frame_time;  ///< none: the file's
   bool quiet = false;
 };
 

@@ -245,6 +245,8 @@ TEST(CaptureCli, HostileCapturesAreRefusedAtOnceWithOneLine) {
       {good + " --frame-time 1e-300", "--frame-time: 1e-300 s per frame is outside [0.001, 1] s"},
       {good + " --frame-time 1e300", "--frame-time: 1e+300 s per frame is outside [0.001, 1] s"},
       {good + " --frame-time 3600", "--frame-time: 3600 s per frame is outside"},
+      // Once refused by CLI11 alone ("--frame-time: Value 0 not in range 0.000000 to 1797...").
+      {good + " --frame-time 0", "--frame-time: 0 s per frame is outside [0.001, 1] s"},
       {dir / "slow.bvh", "slow.bvh: line 89: Frame Time: 100 s per frame is outside [0.001, 1] s"},
       {dir / "hour.bvh", "hour.bvh: line 89: Frame Time: 3600 s per frame is outside"},
       {dir / "far.bvh",

@@ -98,14 +98,21 @@ Motion named_motion(Motion motion, const std::string& model_field) {
 /// The frame time used must be a capture's (plausible_ranges.h): named at its source, the
 /// --frame-time flag or the file's "Frame Time:" line. 1e-300 made every frame coincide (NaN in
 /// trajectory.csv), 1e300 overflowed the take-off state, 3600 took 45 s to import.
+std::string frame_time_problem(double seconds) {
+  if (seconds >= plausible::kMinCaptureFrameTime && seconds <= plausible::kMaxCaptureFrameTime)
+    return "";
+  return message_number_beside(seconds, plausible::kMinCaptureFrameTime,
+                               plausible::kMaxCaptureFrameTime) +
+         " s per frame is outside [" + message_number(plausible::kMinCaptureFrameTime) + ", " +
+         message_number(plausible::kMaxCaptureFrameTime) +
+         "] s (captures run at 1 to 1000 frames per second)";
+}
+
 void check_frame_time(const std::optional<double>& flag, double stated, const std::string& path,
                       const BvhSourceLines& lines) {
   const double used = flag.value_or(stated);
-  if (used >= plausible::kMinCaptureFrameTime && used <= plausible::kMaxCaptureFrameTime) return;
-  const std::string problem = message_number(used) + " s per frame is outside [" +
-                              message_number(plausible::kMinCaptureFrameTime) + ", " +
-                              message_number(plausible::kMaxCaptureFrameTime) +
-                              "] s (captures run at 1 to 1000 frames per second)";
+  const std::string problem = frame_time_problem(used);
+  if (problem.empty()) return;
   if (flag) throw InputError("--frame-time", "", problem);
   throw InputError(path, "line " + std::to_string(lines.frame_time),
                    "Frame Time: " + problem + "; give the right one with --frame-time");
@@ -441,7 +448,7 @@ double flag_number(const std::string& text, const std::string& flag) {
 
 CaptureFileOptions capture_import_options(const std::string& model, const std::string& mapping,
                                           const std::string& keyframes, const std::string& flight,
-                                          double frame_time) {
+                                          std::optional<double> frame_time) {
   CaptureFileOptions o;
   o.model = model;
   o.mapping = mapping;
@@ -467,10 +474,10 @@ CaptureFileOptions capture_import_options(const std::string& model, const std::s
                        "START must be before END: \"" + message_text(flight) + "\"");
     o.import.flight = std::make_pair(start, end);
   }
-  if (!(frame_time >= 0) || !std::isfinite(frame_time))
-    throw InputError("--frame-time", "",
-                     "expected seconds per frame > 0, found " + message_number(frame_time));
-  if (frame_time > 0) o.import.frame_time = frame_time;
+  // Refused before the file is read, as check_frame_time would after (0 was once the file's).
+  if (frame_time && !frame_time_problem(*frame_time).empty())
+    throw InputError("--frame-time", "", frame_time_problem(*frame_time));
+  if (frame_time) o.import.frame_time = *frame_time;
   return o;
 }
 

@@ -4,6 +4,7 @@
 /// folder), the motion verbs' `.bvh` arguments, and `saltus export --format bvh`.
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "saltus/capture/capture_import.h"
@@ -24,11 +25,11 @@ struct CaptureFileOptions {
 /// The options of `saltus import` from its flags as text: `model` and `mapping` as given,
 /// `keyframes` a count >= 2, "all", or "" (the fewest whose interpolation meets every captured
 /// frame within tolerance), `flight` "START:END" in seconds of the clip or "" (found from the
-/// feet), `frame_time` seconds per frame or 0 (the file's). InputError naming --keyframes,
-/// --flight or --frame-time for anything else.
+/// feet), `frame_time` seconds per frame within a capture's range (plausible_ranges.h) or none
+/// (the file's). InputError naming --keyframes, --flight or --frame-time for anything else.
 CaptureFileOptions capture_import_options(const std::string& model, const std::string& mapping,
                                           const std::string& keyframes, const std::string& flight,
-                                          double frame_time);
+                                          std::optional<double> frame_time);
 
 /// A capture file imported onto a model.
 struct CaptureFile {

@@ -221,13 +221,13 @@ TEST(CaptureFiles, AFolderWithNothingToExportIsAnInputError) {
 }
 
 TEST(CaptureFiles, ImportOptionsFromTheFlagsText) {
-  const CaptureFileOptions defaults = capture_import_options("m", "map.json", "", "", 0.0);
+  const CaptureFileOptions defaults = capture_import_options("m", "map.json", "", "", std::nullopt);
   EXPECT_EQ(defaults.model, "m");
   EXPECT_EQ(defaults.mapping, "map.json");
   EXPECT_FALSE(defaults.import.all_keyframes);
   EXPECT_FALSE(defaults.import.flight.has_value());
   EXPECT_EQ(defaults.import.frame_time, CaptureImportOptions{}.frame_time);
-  EXPECT_TRUE(capture_import_options("", "", "all", "", 0.0).import.all_keyframes);
+  EXPECT_TRUE(capture_import_options("", "", "all", "", std::nullopt).import.all_keyframes);
   const CaptureFileOptions given = capture_import_options("", "", "7", "0.25:1.5", 0.01);
   EXPECT_EQ(given.import.keyframe_count, 7);
   ASSERT_TRUE(given.import.flight.has_value());
@@ -235,7 +235,7 @@ TEST(CaptureFiles, ImportOptionsFromTheFlagsText) {
   EXPECT_EQ(given.import.flight->second, 1.5);
   EXPECT_EQ(given.import.frame_time, 0.01);
   const auto refused_flag = [](const std::string& keyframes, const std::string& flight,
-                               double frame_time) {
+                               std::optional<double> frame_time) {
     try {
       capture_import_options("", "", keyframes, flight, frame_time);
     } catch (const InputError& e) {
@@ -243,14 +243,20 @@ TEST(CaptureFiles, ImportOptionsFromTheFlagsText) {
     }
     return std::string("accepted");
   };
-  EXPECT_EQ(refused_flag("1", "", 0), "--keyframes");
-  EXPECT_EQ(refused_flag("2.5", "", 0), "--keyframes");
-  EXPECT_EQ(refused_flag("some", "", 0), "--keyframes");
-  EXPECT_EQ(refused_flag("", "0.5", 0), "--flight");
-  EXPECT_EQ(refused_flag("", "1:0.5", 0), "--flight");
-  EXPECT_EQ(refused_flag("", "a:1", 0), "--flight");
+  EXPECT_EQ(refused_flag("1", "", std::nullopt), "--keyframes");
+  EXPECT_EQ(refused_flag("2.5", "", std::nullopt), "--keyframes");
+  EXPECT_EQ(refused_flag("some", "", std::nullopt), "--keyframes");
+  EXPECT_EQ(refused_flag("", "0.5", std::nullopt), "--flight");
+  EXPECT_EQ(refused_flag("", "1:0.5", std::nullopt), "--flight");
+  EXPECT_EQ(refused_flag("", "a:1", std::nullopt), "--flight");
   EXPECT_EQ(refused_flag("", "", -0.01), "--frame-time");
   EXPECT_EQ(refused_flag("", "", std::nan("")), "--frame-time");
+  // 0 was once "the file's"; the capture's range [1 ms, 1 s] holds at the flag, edges included.
+  EXPECT_EQ(refused_flag("", "", 0.0), "--frame-time");
+  EXPECT_EQ(refused_flag("", "", 0.000999), "--frame-time");
+  EXPECT_EQ(refused_flag("", "", 1.0000001), "--frame-time");
+  EXPECT_EQ(refused_flag("", "", 0.001), "accepted");
+  EXPECT_EQ(refused_flag("", "", 1.0), "accepted");
 }
 
 }  // namespace
