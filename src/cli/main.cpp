@@ -407,6 +407,13 @@ int run_optimize(const CommonArgs& args) {
                 rotation_words(written.at("rotation").at("before")).c_str(),
                 rotation_words(written.at("rotation").at("after")).c_str());
     print_sparse_twist(written);
+    if (!result.twist_guided_intervals.empty()) {
+      std::printf("  started there from the free flight's way round, not the short way: keyframes");
+      for (std::size_t i = 0; i < result.twist_guided_intervals.size(); ++i)
+        std::printf("%s %d-%d", i ? "," : "", result.twist_guided_intervals[i] + 1,
+                    result.twist_guided_intervals[i] + 2);
+      std::printf("\n");
+    }
     const saltus::JointLoadRise rise =
         saltus::largest_joint_load_rise(file.model, result.before.check, result.after.check);
     if (!rise.joint.empty())

@@ -77,9 +77,32 @@ std::vector<SparseTwistInterval> sparse_twist_intervals(const Motion& motion,
     interval.flight_twist_deg = (flight_twist[i + 1] - flight_twist[i]) * kDegreesPerRadian;
     interval.interpolation_twist_deg =
         (interpolation_twist[i + 1] - interpolation_twist[i]) * kDegreesPerRadian;
-    if (std::abs(interval.flight_twist_deg - interval.interpolation_twist_deg) >
+    if (std::abs(interval.flight_twist_deg - interval.interpolation_twist_deg) <=
         kSparseTwistLimitDeg)
-      out.push_back(interval);
+      continue;
+    const auto index = [&](double t) {
+      return static_cast<std::size_t>(std::lower_bound(times.begin(), times.end(), t) -
+                                      times.begin());
+    };
+    const std::size_t first = index(interval.start_s), last = index(interval.end_s);
+    // The flight must turn from one keyframe's orientation to the next's as the keyframes do,
+    // only another way round; else it is the flight that disagrees with the keyframes.
+    const Eigen::Quaterniond flight_turn = flown[last] * flown[first].conjugate();
+    const Eigen::Quaterniond key_turn =
+        motion.keyframes[i + 1].rotations[0] * motion.keyframes[i].rotations[0].conjugate();
+    if (flight_turn.angularDistance(key_turn) * kDegreesPerRadian > kSparseTwistSameTurnDeg)
+      continue;
+    double turn = 0.0;
+    for (std::size_t k = first; k < last; ++k)
+      turn += flown[k].angularDistance(flown[k + 1]);
+    const int guides = std::max(1, static_cast<int>(std::ceil(turn / (0.5 * kPi))) - 1);
+    const Eigen::Quaterniond& key_root = motion.keyframes[i].rotations[0];
+    for (int g = 1; g <= guides; ++g) {
+      const std::size_t k = first + (last - first) * g / (guides + 1);
+      interval.flight_roots.emplace_back(
+          times[k], (flown[k] * flown[first].conjugate() * key_root).normalized());
+    }
+    out.push_back(interval);
   }
   return out;
 }

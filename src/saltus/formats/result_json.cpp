@@ -153,6 +153,7 @@ nlohmann::json resolution_json(const ResultJson::Optimization::Resolution& resol
                       {"knots", resolution.knots},
                       {"levels", levels}};
   if (resolution.landing_drift_deg) j["landing_drift_deg"] = *resolution.landing_drift_deg;
+  j["twist_guided_intervals"] = resolution.twist_guided_intervals;
   if (const auto& p = resolution.joint_load_polish) {
     j["joint_load_polish"] = {{"weight", p->weight},
                               {"root_moment_weight", p->root_moment_weight},
@@ -326,6 +327,8 @@ ResultJson::Optimization::Resolution read_resolution(const JsonNode& node) {
   r.subdivisions = read_int_array(node.at("subdivisions"), 1);
   r.knots = node.at("knots").as_double_array();
   if (const auto drift = node.find("landing_drift_deg")) r.landing_drift_deg = drift->as_double();
+  if (const auto guided = node.find("twist_guided_intervals"))
+    r.twist_guided_intervals = read_int_array(*guided, 0);
   const JsonNode levels = node.at("levels");
   levels.require_array();
   for (std::size_t i = 0; i < levels.size(); ++i) {
@@ -765,6 +768,7 @@ ResultJson optimization_result(const MotionFile& file, const OptimizationResult&
   resolution.levels = result.levels;
   resolution.joint_load_polish = result.joint_load_polish;
   resolution.landing_drift_deg = result.landing_drift_deg;
+  resolution.twist_guided_intervals = result.twist_guided_intervals;
   o.resolution = std::move(resolution);
   o.largest_joint_turn_deg =
       std::make_pair(largest_control_turn(result.before.trajectory, 1) * kDegreesPerRadian,

@@ -153,6 +153,8 @@ struct ResultJson {
       std::optional<JointLoadPolish> joint_load_polish;
       /// OptimizationResult::landing_drift_deg, when measured.
       std::optional<double> landing_drift_deg;
+      /// OptimizationResult::twist_guided_intervals; empty in files before it.
+      std::vector<int> twist_guided_intervals;
     };
     std::optional<Resolution> resolution;
   };

@@ -77,10 +77,21 @@ Trajectory<double> interpolate_keyframes(const Motion& motion, const BodyModel& 
   // Step 1 (§5.2): one quaternion spline per joint through its keyframe rotations.
   std::vector<std::vector<Eigen::Quaterniond>> control(model.size());
   fit_each_curve(model.size(), [&](int seg) {
-    std::vector<Eigen::Quaterniond> targets(times.size());
+    std::vector<std::pair<double, Eigen::Quaterniond>> targets;
     for (std::size_t i = 0; i < times.size(); ++i)
-      targets[i] = motion.keyframes[i].rotations[seg];
-    control[seg] = fit_quaternion_spline(trajectory.knots, times, targets);
+      targets.emplace_back(times[i], motion.keyframes[i].rotations[seg]);
+    if (seg == 0) {
+      targets.insert(targets.end(), options.root_guides.begin(), options.root_guides.end());
+      std::stable_sort(targets.begin(), targets.end(),
+                       [](const auto& a, const auto& b) { return a.first < b.first; });
+    }
+    std::vector<double> at;
+    std::vector<Eigen::Quaterniond> rotations;
+    for (const auto& [t, q] : targets) {
+      at.push_back(t);
+      rotations.push_back(q);
+    }
+    control[seg] = fit_quaternion_spline(trajectory.knots, at, rotations);
   });
   for (auto& c : control)
     trajectory.rotations.emplace_back(trajectory.knots, std::move(c));

@@ -7,6 +7,7 @@
 ///     origin (eq. 10), represented as a cubic B-spline on the same knots.
 
 #include <Eigen/Core>
+#include <utility>
 #include <vector>
 
 #include "saltus/body/body_model.h"
@@ -23,6 +24,10 @@ struct InterpolationOptions {
   std::vector<int> subdivisions;
   /// Samples per knot span for the least-squares fit of the root translation.
   int root_fit_samples_per_span = 24;
+  /// Root orientations (world_from_root) at times strictly between keyframes that the root's
+  /// curve is fitted through besides the keyframes': where two keyframes are too far apart for
+  /// the short way between them to be the way the body turned (evaluation/keyframe_spacing.h).
+  std::vector<std::pair<double, Eigen::Quaterniond>> root_guides;
 };
 
 /// Ballistic CoM position at time t (eq. 9).

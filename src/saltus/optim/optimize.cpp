@@ -9,6 +9,7 @@
 #include "saltus/dynamics/inverse_dynamics.h"
 #include "saltus/evaluation/flight_state.h"
 #include "saltus/evaluation/joint_loads.h"
+#include "saltus/evaluation/keyframe_spacing.h"
 #include "saltus/evaluation/simulate.h"
 #include "saltus/motion/interpolate.h"
 #include "saltus/optim/option_table.h"
@@ -265,14 +266,27 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
   // motion), otherwise from the keyframe interpolation; refine the knots uniformly while the
   // interpolation cannot meet the keyframes or turns a segment nearly a full turn (see
   // kMaxControlTurn).
+  // Where the keyframes are too far apart for the twist (evaluation/keyframe_spacing.h), the
+  // root's curve also passes through the free flight's turn inside the interval, on a span per
+  // guide at least: the short way would start the solve on a motion that twists the other way.
+  std::vector<std::pair<double, Eigen::Quaterniond>> root_guides;
+  if (automatic && !motion.spline)
+    for (const SparseTwistInterval& interval : sparse_twist_intervals(motion, model)) {
+      root_guides.insert(root_guides.end(), interval.flight_roots.begin(),
+                         interval.flight_roots.end());
+      result.twist_guided_intervals.push_back(interval.first_keyframe);
+      int& spans = subdivisions[interval.first_keyframe];
+      spans = std::max(spans, static_cast<int>(interval.flight_roots.size()) + 1);
+    }
   Motion start = motion;
   MotionEvaluation start_evaluation;
   for (;;) {
     const std::size_t knot_count =
         std::accumulate(subdivisions.begin(), subdivisions.end(), 0) + 7;  // clamped cubic
     if (start.spline && start.spline->knots.size() != knot_count) start.spline.reset();
-    start_evaluation =
-        evaluate_motion(start, model, evaluate_options(options.nlp.samples, subdivisions));
+    EvaluateOptions start_options = evaluate_options(options.nlp.samples, subdivisions);
+    start_options.interpolation.root_guides = root_guides;
+    start_evaluation = evaluate_motion(start, model, start_options);
     const int finest = *std::max_element(subdivisions.begin(), subdivisions.end());
     if (well_posed(start_evaluation, motion) || start.spline ||
         !options.refine_when_keyframes_missed ||

@@ -252,6 +252,10 @@ struct OptimizationResult {
   /// landing_vs_motion_deg for optimized_motion); measured when the automatic resolution or
   /// least joint effort decided by it.
   std::optional<double> landing_drift_deg;
+  /// The keyframe intervals (their first keyframe, 0-based) whose start followed the free
+  /// flight's way round instead of the short way (evaluation/keyframe_spacing.h); automatic
+  /// resolution only, and not for a motion that brings its own spline.
+  std::vector<int> twist_guided_intervals;
   /// Least joint effort's last solve, when there was one.
   std::optional<JointLoadPolish> joint_load_polish;
   MotionEvaluation before;  ///< the interpolated motion (the starting point)

@@ -81,7 +81,8 @@ auto fields(const ResultJson::Optimization::Resolution& r) {
                                             p->bounded_alternative->avg_root_force,
                                             p->bounded_alternative->joint_rise))
             : std::nullopt);
-  return std::make_tuple(r.automatic, r.subdivisions, r.knots, levels, polish, r.landing_drift_deg);
+  return std::make_tuple(r.automatic, r.subdivisions, r.knots, levels, polish, r.landing_drift_deg,
+                         r.twist_guided_intervals);
 }
 auto fields(const ResultJson::Optimization& o) {
   return std::make_tuple(
@@ -304,6 +305,8 @@ ResultJson random_result(ResultJson::Kind kind, std::mt19937& rng) {
       resolution.joint_load_polish->bounded_alternative =
           JointLoadPolish::BoundedAlternative{positive(rng), positive(rng), positive(rng)};
     if (rng() % 2) resolution.landing_drift_deg = positive(rng);
+    for (int k = rng() % 3; k > 0; --k)
+      resolution.twist_guided_intervals.push_back(static_cast<int>(rng() % 20));
     o.resolution = resolution;
     r.optimization = o;
   }

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <vector>
@@ -144,6 +145,38 @@ TEST(InterpolateKeyframes, RootCurveIsTheLeastSquaresFitThatPutsTheComOnTheParab
       previous = off;
     }
   }
+}
+
+// A root guide turns the root's curve the long way: the root keyed at 0 and 270 deg about the
+// long axis y over 1 s turns -90 deg the short way; through guides at 90 and 180 deg it turns
+// +270 deg, passing the guides and both keyframes.
+TEST(InterpolateKeyframes, RootGuidesTurnTheRootTheirWayRound) {
+  const BodyModel model = test::bundled_model();
+  Motion motion = test::base_motion("spin");
+  const auto about_y = [](double deg) {
+    return Eigen::Quaterniond(Eigen::AngleAxisd(deg / kDegreesPerRadian, Eigen::Vector3d::UnitY()));
+  };
+  for (const double t : {0.0, 1.0}) {
+    Keyframe k;
+    k.time = t;
+    k.rotations.assign(model.size(), Eigen::Quaterniond::Identity());
+    k.rotations[0] = about_y(270.0 * t);
+    motion.keyframes.push_back(k);
+  }
+  const auto turn_about_y = [](const Trajectory<double>& trajectory, double t) {
+    const Eigen::Quaterniond q = trajectory.rotations[0].evaluate(t).q;
+    const double deg = 2.0 * std::atan2(q.y(), q.w()) * kDegreesPerRadian;  // q and -q: ±360
+    return std::remainder(deg, 360.0);
+  };
+  InterpolationOptions options;
+  options.knots_per_interval = 3;
+  EXPECT_NEAR(turn_about_y(interpolate_keyframes(motion, model, options), 0.5), -45.0, 1.0);
+  options.root_guides = {{1.0 / 3.0, about_y(90.0)}, {2.0 / 3.0, about_y(180.0)}};
+  const Trajectory<double> guided = interpolate_keyframes(motion, model, options);
+  EXPECT_NEAR(turn_about_y(guided, 0.5), 135.0, 5.0);
+  for (const auto& [t, q] : options.root_guides)
+    EXPECT_LT(guided.rotations[0].evaluate(t).q.angularDistance(q), 1e-6);
+  EXPECT_LT(guided.rotations[0].evaluate(1.0).q.angularDistance(about_y(270.0)), 1e-6);
 }
 
 TEST(InterpolateKeyframes, SpansPerIntervalSplitEachKeyframeIntervalEvenly) {
