@@ -284,7 +284,8 @@ int run_optimize(const CommonArgs& args) {
     std::fprintf(stderr, "  iter %3d  objective %.6e  constraint violation %.2e  %.3f s\n",
                  p.iteration, p.objective, p.constraint_violation, p.elapsed_seconds);
   };
-  // Said before the solve: the optimiser cannot bring back a twist the keyframes lose.
+  // Said before the solve (a twist the keyframes lose is the user's to key; the solve starts
+  // there from the free flight's way round).
   if (!quiet)
     for (const saltus::SparseTwistInterval& interval :
          saltus::sparse_twist_intervals(file.motion, file.model))

@@ -262,10 +262,6 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
   std::vector<int> subdivisions =
       automatic ? first_subdivisions(motion, model, rules) : options.nlp.spans_per_interval(n_key);
 
-  // Start from the motion's stored spline when it is on these knots (re-optimising an optimised
-  // motion), otherwise from the keyframe interpolation; refine the knots uniformly while the
-  // interpolation cannot meet the keyframes or turns a segment nearly a full turn (see
-  // kMaxControlTurn).
   // Where the keyframes are too far apart for the twist (evaluation/keyframe_spacing.h), the
   // root's curve also passes through the free flight's turn inside the interval, on a span per
   // guide at least: the short way would start the solve on a motion that twists the other way.
@@ -278,6 +274,10 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
       int& spans = subdivisions[interval.first_keyframe];
       spans = std::max(spans, static_cast<int>(interval.flight_roots.size()) + 1);
     }
+  // Start from the motion's stored spline when it is on these knots (re-optimising an optimised
+  // motion), otherwise from the keyframe interpolation; refine the knots uniformly while the
+  // interpolation cannot meet the keyframes or turns a segment nearly a full turn (see
+  // kMaxControlTurn).
   Motion start = motion;
   MotionEvaluation start_evaluation;
   for (;;) {
