@@ -27,14 +27,13 @@ std::vector<double> grid_with_keyframes(const Motion& motion) {
   return times;
 }
 
-/// Yeadon's ψ (rad, unwrapped) of `rotations` at the sample of each time in `at`.
-std::vector<double> twist_at(const std::vector<double>& times,
-                             const std::vector<Eigen::Quaterniond>& rotations,
-                             const std::vector<double>& at) {
+/// Yeadon's ψ (rad, unwrapped) of `rotations` at the samples `at`.
+std::vector<double> twist_at(const std::vector<Eigen::Quaterniond>& rotations,
+                             const std::vector<std::size_t>& at) {
   const std::vector<Eigen::Vector3d> angles = unwrapped_angles(rotations);
   std::vector<double> out;
-  for (const double t : at)
-    out.push_back(angles[std::lower_bound(times.begin(), times.end(), t) - times.begin()].z());
+  for (const std::size_t k : at)
+    out.push_back(angles[k].z());
   return out;
 }
 
@@ -62,29 +61,27 @@ std::vector<SparseTwistInterval> sparse_twist_intervals(const Motion& motion,
     flown.push_back(states[i].joints[0].q);
     interpolated.push_back(interpolation.rotations[0].evaluate(times[i]).q);
   }
-  std::vector<double> key_times;
+  // The sample of each keyframe time (the grid holds them all).
+  std::vector<std::size_t> key_samples;
   for (const Keyframe& k : motion.keyframes)
-    key_times.push_back(k.time);
-  const std::vector<double> flight_twist = twist_at(times, flown, key_times);
-  const std::vector<double> interpolation_twist = twist_at(times, interpolated, key_times);
+    key_samples.push_back(static_cast<std::size_t>(
+        std::lower_bound(times.begin(), times.end(), k.time) - times.begin()));
+  const std::vector<double> flight_twist = twist_at(flown, key_samples);
+  const std::vector<double> interpolation_twist = twist_at(interpolated, key_samples);
 
   std::vector<SparseTwistInterval> out;
-  for (std::size_t i = 0; i + 1 < key_times.size(); ++i) {
+  for (std::size_t i = 0; i + 1 < key_samples.size(); ++i) {
     SparseTwistInterval interval;
     interval.first_keyframe = static_cast<int>(i);
-    interval.start_s = key_times[i];
-    interval.end_s = key_times[i + 1];
+    interval.start_s = motion.keyframes[i].time;
+    interval.end_s = motion.keyframes[i + 1].time;
     interval.flight_twist_deg = (flight_twist[i + 1] - flight_twist[i]) * kDegreesPerRadian;
     interval.interpolation_twist_deg =
         (interpolation_twist[i + 1] - interpolation_twist[i]) * kDegreesPerRadian;
     if (std::abs(interval.flight_twist_deg - interval.interpolation_twist_deg) <=
         kSparseTwistLimitDeg)
       continue;
-    const auto index = [&](double t) {
-      return static_cast<std::size_t>(std::lower_bound(times.begin(), times.end(), t) -
-                                      times.begin());
-    };
-    const std::size_t first = index(interval.start_s), last = index(interval.end_s);
+    const std::size_t first = key_samples[i], last = key_samples[i + 1];
     // The flight must turn from one keyframe's orientation to the next's as the keyframes do,
     // only another way round; else it is the flight that disagrees with the keyframes.
     const Eigen::Quaterniond flight_turn = flown[last] * flown[first].conjugate();

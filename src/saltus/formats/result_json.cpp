@@ -741,7 +741,7 @@ ResultJson optimization_result(const MotionFile& file, const OptimizationResult&
   set_joint_loads(r, file.model, result.before.check, &result.after.check);
   r.rotation_before = yeadon_summary(result.before.trajectory, options.nlp.samples);
   r.rotation_after = yeadon_summary(result.after.trajectory, options.nlp.samples);
-  r.sparse_twist_intervals = sparse_twist_intervals(file.motion, file.model);
+  r.sparse_twist_intervals = result.sparse_twist_intervals;
   ResultJson::Optimization o;
   o.optimizer_objective_before = result.optimizer_objective_before;
   o.optimizer_objective_after = result.optimizer_objective_after;

@@ -266,8 +266,9 @@ OptimizationResult optimize_motion(const Motion& motion, const BodyModel& model,
   // root's curve also passes through the free flight's turn inside the interval, on a span per
   // guide at least: the short way would start the solve on a motion that twists the other way.
   std::vector<std::pair<double, Eigen::Quaterniond>> root_guides;
+  result.sparse_twist_intervals = sparse_twist_intervals(motion, model);
   if (automatic && !motion.spline)
-    for (const SparseTwistInterval& interval : sparse_twist_intervals(motion, model)) {
+    for (const SparseTwistInterval& interval : result.sparse_twist_intervals) {
       root_guides.insert(root_guides.end(), interval.flight_roots.begin(),
                          interval.flight_roots.end());
       result.twist_guided_intervals.push_back(interval.first_keyframe);

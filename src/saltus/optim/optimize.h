@@ -9,6 +9,7 @@
 #include <string>
 
 #include "saltus/evaluation/evaluate.h"
+#include "saltus/evaluation/keyframe_spacing.h"
 #include "saltus/optim/motion_nlp.h"
 #include "saltus/optim/solve_policy.h"
 
@@ -252,9 +253,12 @@ struct OptimizationResult {
   /// landing_vs_motion_deg for optimized_motion); measured when the automatic resolution or
   /// least joint effort decided by it.
   std::optional<double> landing_drift_deg;
-  /// The keyframe intervals (their first keyframe, 0-based) whose start followed the free
-  /// flight's way round instead of the short way (evaluation/keyframe_spacing.h); automatic
-  /// resolution only, and not for a motion that brings its own spline.
+  /// The input's keyframe intervals too far apart for its twist (evaluation/keyframe_spacing.h),
+  /// found once here and written to result.json as they are.
+  std::vector<SparseTwistInterval> sparse_twist_intervals;
+  /// Those whose start followed the free flight's way round instead of the short way (their
+  /// first keyframe, 0-based): every one with the automatic resolution, unless the motion brings
+  /// its own spline.
   std::vector<int> twist_guided_intervals;
   /// Least joint effort's last solve, when there was one.
   std::optional<JointLoadPolish> joint_load_polish;
