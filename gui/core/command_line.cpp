@@ -6,6 +6,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "flags/flag_bound_checks.h"
 #include "flags/option_flags.h"
 #include "saltus/base/text_format.h"
 
@@ -30,43 +31,9 @@ const CLI::Validator kNotAFlag(
     },
     "", "not a flag");
 
-/// A number in [low, high] (low excluded when `low_open`), with a plain message.
-CLI::Validator interval_check(double low, double high, bool low_open) {
-  const std::string range =
-      (low_open ? "(" : "[") + format_number("%g", low) + ", " + format_number("%g", high) + "]";
-  return CLI::Validator(
-      [low, high, low_open, range](std::string& text) -> std::string {
-        double v = 0.0;
-        std::size_t used = 0;
-        try {
-          v = std::stod(text, &used);
-        } catch (const std::exception&) {
-          used = 0;
-        }
-        if (used != text.size() || !std::isfinite(v)) return "\"" + text + "\" is not a number";
-        if ((low_open ? v <= low : v < low) || v > high) return "must be in " + range;
-        return "";
-      },
-      "", range);
-}
-
-/// A number check with a plain message (CLI11's own prints the whole double range).
-CLI::Validator number_check(bool allow_zero) {
-  return CLI::Validator(
-      [allow_zero](std::string& text) -> std::string {
-        double v = 0.0;
-        std::size_t used = 0;
-        try {
-          v = std::stod(text, &used);
-        } catch (const std::exception&) {
-          used = 0;
-        }
-        if (used != text.size() || !std::isfinite(v)) return "\"" + text + "\" is not a number";
-        if (allow_zero ? v < 0 : v <= 0)
-          return allow_zero ? "must not be negative" : "must be positive";
-        return "";
-      },
-      "", allow_zero ? "non-negative" : "positive");
+/// A number flag of the app checked against its row of the library's table of bounds.
+CLI::Validator bounded(const std::string& flag) {
+  return cli::flag_bound_check(flag, "saltus-gui");
 }
 
 /// saltus-gui's command line as a CLI11 app writing into `c`; the option table's flags go to
@@ -81,7 +48,7 @@ std::unique_ptr<CLI::App> make_app(CommandLine& c, cli::OptionFlags& flags,
   flags.add(app.get(), cli::all_option_names());
   app->add_option("--time", c.time, "show time T (s) of the flight")
       ->type_name("T")
-      ->check(number_check(true));
+      ->check(bounded("--time"));
   app->add_option_function<std::string>(
          "--stage",
          [&c](const std::string& v) { c.stage = v == "before" ? Stage::kBefore : Stage::kAfter; },
@@ -141,7 +108,7 @@ std::unique_ptr<CLI::App> make_app(CommandLine& c, cli::OptionFlags& flags,
       ->check(kNotAFlag);
   app->add_option("--poses", c.lecture_poses, "poses in the lecture figure (default 10)")
       ->type_name("N")
-      ->check(CLI::Range(2, 40));
+      ->check(bounded("--poses"));
   app->add_option("--save-result", c.save_result,
                   "write the result folder the CLI would (optimize or evaluate)")
       ->type_name("DIR")
@@ -168,16 +135,16 @@ std::unique_ptr<CLI::App> make_app(CommandLine& c, cli::OptionFlags& flags,
       ->check(kNotAFlag);
   app->add_option("--fps", c.video_fps, "frames per second of the video (default 30, GIF 20)")
       ->type_name("F")
-      ->check(interval_check(0, 120, true));
+      ->check(bounded("--fps"));
   app->add_option("--speed", c.video_speed,
                   "motion seconds per video second (default 1; 0.5 = slow motion)")
       ->type_name("S")
-      ->check(interval_check(0.05, 10, false));
+      ->check(bounded("--speed"));
   app->add_flag("--benchmark-playback", c.benchmark,
                 "play the motion for a few seconds and print frames per second");
   app->add_option("--seconds", c.benchmark_seconds, "length of the benchmark (default 5)")
       ->type_name("S")
-      ->check(number_check(false));
+      ->check(bounded("--seconds"));
   return app;
 }
 

@@ -5,8 +5,10 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <utility>
 
 #include "saltus/base/text_format.h"
+#include "saltus/use_cases/flag_bounds.h"
 
 namespace saltus::gui {
 
@@ -34,9 +36,13 @@ double default_fps(VideoFormat format) {
 }
 
 VideoPlan plan_video(double duration, double fps, double speed) {
-  if (!(fps > 0 && fps <= 120))
-    throw std::invalid_argument("frames per second must be in (0, 120]");
-  if (!(speed >= 0.05 && speed <= 10)) throw std::invalid_argument("speed must be in 0.05-10");
+  // saltus-gui's --fps and --speed bounds, the same whether given as flags or in the dialog.
+  for (const auto& [flag, value] :
+       {std::pair<const char*, double>{"--fps", fps}, {"--speed", speed}}) {
+    const FlagBound& row = flag_bound(flag, "saltus-gui");
+    const std::string problem = bound_problem(row.bound, value, row.why);
+    if (!problem.empty()) throw std::invalid_argument(row.meaning + ": " + problem);
+  }
   if (!(duration > 0) || !std::isfinite(duration))
     throw std::invalid_argument("the motion has no duration");
   VideoPlan plan;

@@ -1,6 +1,7 @@
 #include <pybind11/stl.h>
 
 #include <csignal>
+#include <utility>
 
 #include "module.h"
 #include "saltus/base/text_format.h"
@@ -13,6 +14,7 @@
 #include "saltus/use_cases/athletes_run.h"
 #include "saltus/use_cases/captures.h"
 #include "saltus/use_cases/convergence_run.h"
+#include "saltus/use_cases/flag_bounds.h"
 #include "saltus/use_cases/motion_exports.h"
 #include "saltus/use_cases/paper_report_run.h"
 #include "saltus/use_cases/result_folders.h"
@@ -72,8 +74,9 @@ py::dict run_study_job(const saltus::StudyJob& job, const std::string& out, py::
                        const py::object& progress) {
   saltus::StudyRunOptions options;
   options.jobs = jobs.is_none() ? saltus::available_cpus() : py::cast<int>(jobs);
-  if (options.jobs < 1) throw_input_error("jobs", "must be at least 1");
-  if (!(case_time_limit >= 0)) throw_input_error("case_time_limit", "must be >= 0 (0 = none)");
+  saltus::check_flag("--jobs", options.jobs,
+                     "paper");  // every study's --jobs and --case-time-limit
+  saltus::check_flag("--case-time-limit", case_time_limit, "paper");
   options.case_time_limit_s = case_time_limit;
   if (!shard.empty()) options.shard = saltus::parse_study_shard(shard, "shard");
   options.resume = resume;
@@ -447,6 +450,7 @@ void bind_verbs(py::module_& m) {
       "study_mass",
       [](py::handle motion, py::handle out, const std::vector<std::string>& scale, double factor,
          const std::vector<std::string>& loads, bool paper_protocol, int samples, int max_iter) {
+        saltus::check_flag("--factor", factor, "study mass");
         const saltus::MotionFile file = motion_file(*motion_argument(motion));
         saltus::MassStudyOptions options;
         options.optimize = study_options(samples, max_iter, false);
@@ -486,6 +490,11 @@ void bind_verbs(py::module_& m) {
          const std::vector<double>& timing_errors, unsigned seed, bool no_early_stop, int samples,
          int max_iter, py::object jobs, const std::string& shard, bool resume,
          double case_time_limit, py::object progress) {
+        for (const auto& [flag, values] :
+             {std::pair{"--epsilons", &epsilons}, std::pair{"--mass-errors", &mass_errors},
+              std::pair{"--timing-errors", &timing_errors}})
+          for (double value : *values)
+            saltus::check_flag(flag, value, "study convergence");
         std::vector<saltus::LabelledMotion> labelled;
         for (const py::object& motion : motions) {
           const std::string path = path_argument(motion, "motions");

@@ -117,8 +117,7 @@ void add_capture_verbs(CLI::App& app, CaptureVerbs& verbs) {
   import->add_option("--flight", im.flight,
                      "the flight phase START:END in seconds of the clip, instead of finding it "
                      "from the feet");
-  import->add_option("--frame-time", im.frame_time,
-                     "seconds per frame, instead of the file's (0.001-1)");
+  import->add_option("--frame-time", im.frame_time, "seconds per frame, instead of the file's");
   import->add_flag("--quiet,-q", im.quiet,
                    "print nothing on success (warnings still go to stderr)");
   verbs.import_command = import;

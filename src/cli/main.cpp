@@ -15,6 +15,7 @@
 #include <stdexcept>
 
 #include "capture_verbs.h"
+#include "flags/flag_bound_checks.h"
 #include "flags/option_flags.h"
 #include "model_verbs.h"
 #include "saltus/base/constants.h"
@@ -463,8 +464,8 @@ void add_what_if_change(CLI::App* cmd, saltus::WhatIfChange& change) {
                   "the opening this much later, s (< 0: earlier)")
       ->capture_default_str();
   cmd->add_option("--tuck-scale", change.tuck_scale,
-                  "the hips' and knees' turn from their take-off pose times this, 0.8-1.2 "
-                  "(> 1: a tighter tuck)")
+                  "the hips' and knees' turn from their take-off pose times this (> 1: a "
+                  "tighter tuck)")
       ->capture_default_str();
 }
 
@@ -606,6 +607,7 @@ int main(int argc, char** argv) {
   saltus_cli::ModelVerbs model_verbs;
   saltus_cli::add_model_verbs(app, model_verbs);
   add_shared_checks(app);
+  saltus::cli::add_flag_bound_checks(app, "saltus");
 
   try {
     app.parse(argc, argv);
@@ -615,6 +617,10 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
+  } catch (const CLI::ValidationError& e) {
+    // A value a flag does not take: one line, as the library's refusals (docs/safety.md).
+    std::fprintf(stderr, "saltus: error: %s\n", saltus::printable(e.what()).c_str());
+    return kExitBadInput;
   } catch (const CLI::ParseError& e) {
     app.exit(e);
     return kExitBadInput;

@@ -77,7 +77,6 @@ void add_run_options(CLI::App* cmd, RunArgs& args) {
   cmd->add_option("--jobs,-j", args.jobs,
                   "cases run at once, each in a process of its own (default: the CPUs this "
                   "process may use); the results do not depend on it")
-      ->check(CLI::Range(1, 4096))
       ->capture_default_str();
   cmd->add_option("--shard", args.shard,
                   "run only shard I of N (the cases whose index modulo N is I-1) into --out; "
@@ -87,13 +86,11 @@ void add_run_options(CLI::App* cmd, RunArgs& args) {
   cmd->add_option("--case-time-limit", args.case_time_limit_s,
                   "seconds after which a case's process is killed and the case recorded as "
                   "timed out (0 = none)")
-      ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   cmd->add_option("--emit-slurm", args.emit_slurm,
                   "write a Slurm job-array script for this study (one array task per shard, "
                   "--shards of them) instead of running it");
-  cmd->add_option("--shards", args.shards, "array tasks of --emit-slurm")
-      ->check(CLI::Range(1, 100000));
+  cmd->add_option("--shards", args.shards, "array tasks of --emit-slurm");
   std::string checkpoints;
   for (const FeasibilityCheckpoint& c : kStrictStudyCheckpoints)
     checkpoints += (checkpoints.empty() ? "" : ", ") + format_number("%g", c.violation) +
@@ -225,13 +222,11 @@ StudyVerbs::StudyVerbs(CLI::App& app, int argc, char** argv) : state_(std::make_
   add_study_common(s.convergence, c.common);
   s.convergence->add_option("--epsilons", c.epsilons, "strict model's bounds to try, N or N·m")
       ->delimiter(',')
-      ->check(CLI::PositiveNumber)
       ->capture_default_str();
   s.convergence
       ->add_option("--mass-errors", c.mass_errors_percent,
                    "mass and inertia errors to try, percent (-20 = 20 % too small)")
       ->delimiter(',')
-      ->check(CLI::Range(-90.0, 1000.0))
       ->capture_default_str();
   s.convergence
       ->add_option("--mass-segments", c.mass_segments,
@@ -242,7 +237,6 @@ StudyVerbs::StudyVerbs(CLI::App& app, int argc, char** argv) : state_(std::make_
       ->add_option("--timing-errors", c.timing_errors,
                    "keyframe-time errors to try, s (interior times moved by ±the amount)")
       ->delimiter(',')
-      ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   s.convergence->add_option("--seed", c.seed, "seed of the timing errors' signs")
       ->capture_default_str();
@@ -260,9 +254,7 @@ StudyVerbs::StudyVerbs(CLI::App& app, int argc, char** argv) : state_(std::make_
   s.mass->add_option("--scale", m.scaled_segments, "segments whose mass and inertia are scaled")
       ->delimiter(',')
       ->capture_default_str();
-  s.mass->add_option("--factor", m.factor, "mass and inertia multiplier")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
+  s.mass->add_option("--factor", m.factor, "mass and inertia multiplier")->capture_default_str();
   s.mass->add_option("--loads", m.load_segments, "segments whose joint loads are written")
       ->delimiter(',')
       ->capture_default_str();

@@ -115,7 +115,7 @@ TEST(CaptureCli, BadInputExitsWithTwoNamesTheProblemAndWritesNothing) {
   const std::vector<std::pair<std::string, std::string>> cases{
       {"import " + (dir / "broken.bvh"), "broken.bvh: line 5: joint \"root\": unknown channel"},
       {"import " + (dir / "missing.bvh"), "missing.bvh: cannot open file for reading"},
-      {"import " + (dir / "good.bvh") + " --keyframes 1", "--keyframes: expected a whole number"},
+      {"import " + (dir / "good.bvh") + " --keyframes 1", "--keyframes: 1 is outside [2, 2500]"},
       {"import " + (dir / "good.bvh") + " --keyframes 30",
        "--keyframes: the keyframe count must be 2 to 8 (the captured flight's frames), found 30"},
       {"import " + (dir / "good.bvh") + " --flight 1:0.5", "--flight: START must be before END"},

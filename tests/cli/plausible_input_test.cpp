@@ -356,7 +356,7 @@ TEST(CliPlausibleInput, EmptyNumbersZeroRatesAndFilesThatAreNoFilesAreNamedForWh
       {"analyse what-if " + m2 + " --open-later ''" + out, "--open-later: is empty"},
       // 0 frames per second was the default rate.
       {"export " + m2 + " --format bvh --fps 0 --out " + (dir / "a.bvh"),
-       "--fps: must be a positive"},
+       "--fps: 0 fps is outside (0, ∞) fps"},
       {"analyse what-if " + m2 + " --open-later 1e308" + out, "--open-later: The opening can move"},
       // "no such model file" for what is a folder or a pipe.
       {"evaluate " + m2 + " --model " + (dir / "folder.json") + out, "is a folder, not a file"},

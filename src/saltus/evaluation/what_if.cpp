@@ -9,6 +9,7 @@
 
 #include "saltus/base/constants.h"
 #include "saltus/base/input_error.h"
+#include "saltus/base/number_bound.h"
 #include "saltus/base/text_format.h"
 #include "saltus/motion/interpolate.h"
 
@@ -277,14 +278,7 @@ void check_change(const TuckPhases& tuck, const WhatIfChange& change) {
     if (!std::isfinite(value))
       throw InputError(flag, "",
                        "a what-if change must be a finite number, not " + message_number(value));
-  if (change.tuck_scale < kMinTuckScale || change.tuck_scale > kMaxTuckScale)
-    throw InputError("--tuck-scale", "",
-                     "The tuck's tightness " +
-                         message_number_beside(change.tuck_scale, kMinTuckScale, kMaxTuckScale) +
-                         " is outside [" + message_number(kMinTuckScale) + ", " +
-                         message_number(kMaxTuckScale) + "]: it can go from " +
-                         format_number("%.0f", 100.0 * kMinTuckScale) + " to " +
-                         format_number("%.0f %% of the motion's.", 100.0 * kMaxTuckScale));
+  check_bound("--tuck-scale", kTuckScaleBound, change.tuck_scale, kTuckScaleWhy);
   if (change.unchanged()) return;
   const char* changed = change.tuck_later_s != 0.0   ? "--tuck-later"
                         : change.open_later_s != 0.0 ? "--open-later"

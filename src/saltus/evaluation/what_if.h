@@ -43,6 +43,7 @@
 #include <string>
 #include <vector>
 
+#include "saltus/base/number_bound.h"
 #include "saltus/evaluation/evaluate.h"
 #include "saltus/evaluation/simulate.h"
 #include "saltus/evaluation/yeadon_angles.h"
@@ -63,6 +64,9 @@ inline constexpr double kWarpBlendS = 0.03;
 /// Tuck tightness: the range of the scale of the hips' and knees' turn.
 inline constexpr double kMinTuckScale = 0.8;
 inline constexpr double kMaxTuckScale = 1.2;
+inline constexpr NumberBound kTuckScaleBound{kMinTuckScale, kMaxTuckScale};
+/// What a refused --tuck-scale is told beside the bound.
+inline constexpr char kTuckScaleWhy[] = "the tuck's tightness: 80 to 120 % of the motion's";
 /// A landing within this of the keyframed one, in somersault and in twist, is on target, °.
 inline constexpr double kDefaultLandingToleranceDeg = 15.0;
 

@@ -7,6 +7,8 @@
 
 #include <cstddef>
 
+#include "saltus/base/number_bound.h"
+
 namespace saltus::plausible {
 
 // Body model (docs/formats.md, "Body model").
@@ -33,6 +35,9 @@ inline constexpr double kMaxStature = 2.8;
 /// kg: body mass. A 1 m child weighs about 15 kg; 300 kg is beyond any athlete.
 inline constexpr double kMinBodyMass = 10.0;
 inline constexpr double kMaxBodyMass = 300.0;
+/// The flags of a person's size (--height, --mass; flag_bounds.h).
+inline constexpr NumberBound kStatureBound{kMinStature, kMaxStature, "m"};
+inline constexpr NumberBound kBodyMassBound{kMinBodyMass, kMaxBodyMass, "kg"};
 /// kg/m²: body mass index M/H². People range from about 12 (severe wasting) to 60; a 1.45 m,
 /// 38 kg junior is 18, a 1.85 m, 85 kg senior 25. Outside [8, 80] a number was mistyped.
 inline constexpr double kMinBodyMassIndex = 8.0;
@@ -45,6 +50,7 @@ inline constexpr double kMaxBodyMeasurement = 2.0;
 /// 18-80; children and the very old are read by the nearest group (joint_strength.h).
 inline constexpr double kMinAgeYears = 5.0;
 inline constexpr double kMaxAgeYears = 100.0;
+inline constexpr NumberBound kAgeBound{kMinAgeYears, kMaxAgeYears, "years"};
 /// N·m: a measured peak isometric joint moment. A knee extension's is 150-400 N·m, a wrist's
 /// 10-40; 5000 is beyond any joint.
 inline constexpr double kMinJointMomentNm = 0.1;
@@ -68,6 +74,8 @@ inline constexpr double kMinKnotGap = kMinKeyframeGap / 50;
 /// is far slower than any capture (24-1000 Hz), which 100 or 3600 (minutes per frame) are not.
 inline constexpr double kMinCaptureFrameTime = kMinKeyframeGap;
 inline constexpr double kMaxCaptureFrameTime = 1.0;
+inline constexpr NumberBound kCaptureFrameTimeBound{kMinCaptureFrameTime, kMaxCaptureFrameTime,
+                                                    "s per frame"};
 /// Frames of a captured flight that `import` fits (every one a keyframe of capture.motion.json):
 /// 2.5 s at 1000 Hz, 21 s at 120 Hz. Fitting and picking keyframes cost about 8 ms per frame here
 /// (3000 jerky frames: 24 s), so this bounds an import to about 20 s whatever the file holds.

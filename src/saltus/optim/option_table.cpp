@@ -262,10 +262,6 @@ std::string quoted(const std::string& text) {
   return "\"" + text + "\"";
 }
 
-bool in_range(const OptionSpec& spec, double v) {
-  return (spec.min_exclusive ? v > spec.min : v >= spec.min) && v <= spec.max;
-}
-
 std::size_t index_of(std::string_view name) {
   const std::vector<OptionSpec>& table = option_table();
   for (std::size_t i = 0; i < table.size(); ++i)
@@ -353,11 +349,21 @@ OptionValue checked_option_value(const OptionSpec& spec, const OptionValue& valu
     reject(spec, "expected a number (allowed: " + option_range_text(spec, runs) + ")");
   if (spec.kind == OptionKind::kInteger && !std::holds_alternative<int>(value))
     reject(spec, option_value_text(value) + " is not a whole number");
-  if (!std::isfinite(number) || !in_range(spec, number))
-    reject(spec, option_value_text(value) +
-                     " is out of range (allowed: " + option_range_text(spec, runs) + ")");
+  if (!within(option_bound(spec), number))
+    reject(spec, bound_problem(option_bound(spec), number) +
+                     (spec.takes_word(runs) ? " (or " + spec.word + ")" : ""));
   if (spec.kind == OptionKind::kReal) return number;
   return value;
+}
+
+NumberBound option_bound(const OptionSpec& spec) {
+  NumberBound bound;
+  bound.lower = spec.min;
+  bound.upper = spec.max;
+  bound.lower_open = spec.min_exclusive;
+  bound.unit = spec.unit.c_str();
+  bound.whole = spec.kind == OptionKind::kInteger;
+  return bound;
 }
 
 std::string option_value_text(const OptionValue& value) {

@@ -18,6 +18,7 @@
 #include <variant>
 #include <vector>
 
+#include "saltus/base/number_bound.h"
 #include "saltus/evaluation/evaluate.h"
 #include "saltus/optim/optimize.h"
 
@@ -120,6 +121,9 @@ OptionValue checked_option_value(const OptionSpec& spec, const OptionValue& valu
 nlohmann::json option_value_json(const OptionValue& value);
 /// Text that parse_option_value reads back to the same value (reals in the shortest such form).
 std::string option_value_text(const OptionValue& value);
+/// A number option's range as a NumberBound (its unit points into `spec`, which must outlive it;
+/// the table's entries do). use_cases/flag_bounds.h lists it with every other flag's.
+NumberBound option_bound(const OptionSpec& spec);
 /// The allowed values, e.g. "2-100000", "> 0", ">= 0", "relaxed|strict", "1-64 or auto".
 std::string option_range_text(const OptionSpec& spec, OptionUse runs = OptionUse::kOptimization);
 /// What --help and the app's tooltips say of an option: its help, unit and range, and when it

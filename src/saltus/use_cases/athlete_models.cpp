@@ -17,6 +17,7 @@
 #include "saltus/formats/yeadon_measurements_file.h"
 #include "saltus/motion/interpolate.h"
 #include "saltus/use_cases/captures.h"
+#include "saltus/use_cases/flag_bounds.h"
 
 namespace saltus {
 
@@ -26,13 +27,6 @@ namespace {
 /// would refuse is never written.
 BodyModel checked(const BodyModel& model) {
   return parse_body_model(body_model_to_json(model), model.name);
-}
-
-std::string mass_outside_the_human_range(double mass_kg) {
-  return "a mass of " +
-         message_number_beside(mass_kg, plausible::kMinBodyMass, plausible::kMaxBodyMass) +
-         " kg is outside the human range [" + message_number(plausible::kMinBodyMass) + ", " +
-         message_number(plausible::kMaxBodyMass) + "] kg";
 }
 
 /// `name` (--name) as a model's name: UTF-8 text, as a model file holds it (JSON).
@@ -55,15 +49,8 @@ Sex parse_sex(const std::string& text, const std::string& field) {
 
 void check_person_size(double height_m, double mass_kg, const std::string& height_field,
                        const std::string& mass_field) {
-  if (!(height_m >= plausible::kMinStature && height_m <= plausible::kMaxStature))
-    throw InputError(
-        height_field, "",
-        "a height of " +
-            message_number_beside(height_m, plausible::kMinStature, plausible::kMaxStature) +
-            " m is outside the human range [" + message_number(plausible::kMinStature) + ", " +
-            message_number(plausible::kMaxStature) + "] m (the height is in metres)");
-  if (!(mass_kg >= plausible::kMinBodyMass && mass_kg <= plausible::kMaxBodyMass))
-    throw InputError(mass_field, "", mass_outside_the_human_range(mass_kg));
+  check_flag("--height", height_m, "", height_field);
+  check_flag("--mass", mass_kg, "", mass_field);
   const double bmi = mass_kg / (height_m * height_m);
   if (!(bmi >= plausible::kMinBodyMassIndex && bmi <= plausible::kMaxBodyMassIndex))
     throw InputError(
@@ -85,13 +72,7 @@ StrengthSpec strength_from_flags(const std::string& reference, const std::string
         "expected population or elite-gymnast, found \"" + message_text(reference) + "\"");
   spec.reference = reference;
   spec.female = parse_sex(sex, "--sex") == Sex::kFemale;
-  if (!(age_years >= plausible::kMinAgeYears && age_years <= plausible::kMaxAgeYears))
-    throw InputError(
-        "--age", "",
-        "an age of " +
-            message_number_beside(age_years, plausible::kMinAgeYears, plausible::kMaxAgeYears) +
-            " years is outside [" + message_number(plausible::kMinAgeYears) + ", " +
-            message_number(plausible::kMaxAgeYears) + "] years");
+  check_flag("--age", age_years);
   spec.age_years = age_years;
   return spec;
 }
@@ -148,8 +129,7 @@ YeadonInput yeadon_flags(const std::string& densities, std::optional<double> mas
   else
     throw InputError("--densities", "",
                      "expected dempster, chandler or clauser, found \"" + densities + "\"");
-  if (mass_kg && !(*mass_kg >= plausible::kMinBodyMass && *mass_kg <= plausible::kMaxBodyMass))
-    throw InputError("--mass", "", mass_outside_the_human_range(*mass_kg));
+  if (mass_kg) check_flag("--mass", *mass_kg, "model yeadon");
   input.name = checked_name(name);
   input.total_mass = mass_kg.value_or(0.0);
   return input;

@@ -26,6 +26,7 @@
 #include "saltus/formats/result_json.h"
 #include "saltus/formats/trajectory_csv.h"
 #include "saltus/motion/interpolate.h"
+#include "saltus/use_cases/flag_bounds.h"
 
 namespace saltus {
 
@@ -99,13 +100,8 @@ Motion named_motion(Motion motion, const std::string& model_field) {
 /// --frame-time flag or the file's "Frame Time:" line. 1e-300 made every frame coincide (NaN in
 /// trajectory.csv), 1e300 overflowed the take-off state, 3600 took 45 s to import.
 std::string frame_time_problem(double seconds) {
-  if (seconds >= plausible::kMinCaptureFrameTime && seconds <= plausible::kMaxCaptureFrameTime)
-    return "";
-  return message_number_beside(seconds, plausible::kMinCaptureFrameTime,
-                               plausible::kMaxCaptureFrameTime) +
-         " s per frame is outside [" + message_number(plausible::kMinCaptureFrameTime) + ", " +
-         message_number(plausible::kMaxCaptureFrameTime) +
-         "] s (captures run at 1 to 1000 frames per second)";
+  const FlagBound& frame_time = flag_bound("--frame-time", "import");
+  return bound_problem(frame_time.bound, seconds, frame_time.why);
 }
 
 void check_frame_time(const std::optional<double>& flag, double stated, const std::string& path,
@@ -456,10 +452,7 @@ CaptureFileOptions capture_import_options(const std::string& model, const std::s
     o.import.all_keyframes = true;
   } else if (!keyframes.empty()) {
     const double n = flag_number(keyframes, "--keyframes");
-    if (n < 2 || n != static_cast<int>(n))
-      throw InputError(
-          "--keyframes", "",
-          "expected a whole number >= 2 or \"all\", found \"" + message_text(keyframes) + "\"");
+    check_flag("--keyframes", n, "import");
     o.import.keyframe_count = static_cast<int>(n);
   }
   if (!flight.empty()) {

@@ -19,6 +19,7 @@
 #include "saltus/formats/output_folder.h"
 #include "saltus/motion/interpolate.h"
 #include "saltus/use_cases/captures.h"
+#include "saltus/use_cases/flag_bounds.h"
 #include "saltus/use_cases/flight_page.h"
 
 namespace saltus {
@@ -232,10 +233,7 @@ ExportSummary export_loaded(const MotionFile& motion, const ExportFormat& format
   if (!format.sampled)
     throw InputError("--format", "", format.name + " is exported from a file or folder");
   if (!options.capture.empty()) throw InputError("--capture", "", "applies to --format html only");
-  if (options.fps && !(*options.fps > 0 && std::isfinite(*options.fps)))  // NaN, 0 once the default
-    throw InputError(
-        "--fps", "",
-        "must be a positive number of frames per second, found " + message_number(*options.fps));
+  if (options.fps) check_flag("--fps", *options.fps, "export");  // NaN, 0 once the default
   const double fps = options.fps ? *options.fps : default_export_fps(motion.motion);
   ExportSummary s = format.name == "bvh" ? export_bvh(motion, out, fps)
                                          : export_sampled(motion, format, out, fps, source);

@@ -375,7 +375,7 @@ TEST(WhatIf, RefusesChangesTheMotionDoesNotAllowNamingTheFlag) {
   WhatIfChange too_tight;
   too_tight.tuck_scale = 1.3;
   EXPECT_EQ(
-      refused(too_tight).rfind("--tuck-scale: The tuck's tightness 1.3 is outside [0.8, 1.2]", 0),
+      refused(too_tight).rfind("--tuck-scale: 1.3 is outside [0.8, 1.2] (the tuck's tightness", 0),
       0u)
       << refused(too_tight);
   too_tight.tuck_scale = 1.2000001;  // once "120 %: it can go from 80 to 120 %"
