@@ -32,8 +32,8 @@ struct AthleteRequest {
 /// The model of a request, or why there is none.
 struct AthleteDraft {
   std::optional<BodyModel> model;
-  /// The library's message when there is no model, naming the field ("Height: a height of
-  /// 3 m is outside the human range ...") or the file.
+  /// The library's message when there is no model, naming the field ("Height: 3 m is
+  /// outside [0.5, 2.8] m (the human range; ...)") or the file.
   std::string problem;
   std::vector<std::string> warnings;  ///< Yeadon's measurements that look wrong but are usable
 };

@@ -308,9 +308,11 @@ OptionValue parse_option_value(const OptionSpec& spec, const std::string& text, 
                        " is not a whole number (allowed: " + option_range_text(spec, runs) + ")");
     return checked_option_value(spec, value, runs);
   }
-  double value = 0.0;  // from_chars: the same text gives the same number in every locale
+  // from_chars: the same text gives the same number in every locale; "nan" and "inf" are
+  // numbers outside every option's bound (checked_option_value says so, as for every flag).
+  double value = 0.0;
   const auto [end, error] = std::from_chars(first, last, value);
-  if (error != std::errc() || end != last || text.empty() || !std::isfinite(value))
+  if (error != std::errc() || end != last || text.empty())
     reject(spec,
            quoted(text) + " is not a number (allowed: " + option_range_text(spec, runs) + ")");
   return checked_option_value(spec, value, runs);
