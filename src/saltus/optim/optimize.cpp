@@ -12,7 +12,9 @@
 #include "saltus/evaluation/keyframe_spacing.h"
 #include "saltus/evaluation/simulate.h"
 #include "saltus/motion/interpolate.h"
+#include "saltus/optim/automatic_resolution.h"
 #include "saltus/optim/option_table.h"
+#include "saltus/optim/polish_rules.h"
 
 namespace saltus {
 
@@ -120,78 +122,11 @@ Solved solve_level(const Motion& motion, const Motion& motion_at_start, const Bo
   return out;
 }
 
-/// The first guess of the automatic resolution: interval i split into enough spans that no
-/// segment, turning at its fastest rate on the interval, would turn by more than
-/// rules.turn_per_span in one span, and no span is longer than rules.max_span.
-std::vector<int> first_subdivisions(const Motion& motion, const BodyModel& model,
-                                    const AutomaticResolution& rules) {
-  std::vector<int> out;
-  const Trajectory<double> straight = interpolate_keyframes(motion, model, {});
-  const int samples = 8;
-  BodyState<double> current(model.size());
-  DynamicsData<double> data(model);
-  std::vector<Eigen::Matrix3d> last;
-  for (std::size_t i = 0; i + 1 < motion.keyframes.size(); ++i) {
-    const double a = motion.keyframes[i].time, b = motion.keyframes[i + 1].time;
-    // The world orientation of every segment, sampled on the interval (a fast turn between two
-    // keyframes shows only inside it); `turn` is the fastest sampled rate times the interval.
-    double turn = 0.0;
-    for (int s = 0; s <= samples; ++s) {
-      straight.sample(a + (b - a) * s / samples, current);
-      inverse_dynamics(model, data, current);
-      if (s > 0)
-        for (int k = 0; k < model.size(); ++k)
-          turn = std::max(
-              turn,
-              Eigen::AngleAxisd(last[k].transpose() * data.world_rotation[k]).angle() * samples);
-      last = data.world_rotation;
-    }
-    const int by_turn = static_cast<int>(std::ceil(turn / rules.turn_per_span - 1e-9));
-    const int by_length = static_cast<int>(std::ceil((b - a) / rules.max_span - 1e-9));
-    out.push_back(std::clamp(std::max(by_turn, by_length), 1, rules.max_spans_per_interval));
-  }
-  return out;
-}
-
-/// Where the residual lives: the dense check's span integrals summed per keyframe interval.
-std::vector<double> residual_per_interval(const DenseCheck& check,
-                                          const std::vector<double>& keyframe_times) {
-  std::vector<double> out(keyframe_times.size() - 1, 0.0);
-  for (std::size_t s = 0; s < check.span_integral.size(); ++s) {
-    const double middle = 0.5 * (check.span_start[s] + check.span_end[s]);
-    const auto it = std::upper_bound(keyframe_times.begin(), keyframe_times.end(), middle);
-    const std::size_t interval =
-        std::clamp<std::ptrdiff_t>(it - keyframe_times.begin() - 1, 0, out.size() - 1);
-    out[interval] += check.span_integral[s];
-  }
-  return out;
-}
-
 std::vector<double> keyframe_times_of(const Motion& motion) {
   std::vector<double> times;
   for (const Keyframe& k : motion.keyframes)
     times.push_back(k.time);
   return times;
-}
-
-/// Splits interval i's spans by ⌈(m_i / (6·target²))^(1/(2p))⌉, m_i its mean squared wrench and
-/// p rules.convergence_order: the factor that brings its own average root force to the target
-/// if the force falls like h^p. False when nothing can be refined further.
-bool refine(std::vector<int>& subdivisions, const std::vector<double>& residual,
-            const std::vector<double>& keyframe_times, const AutomaticResolution& rules) {
-  bool changed = false;
-  for (std::size_t i = 0; i < subdivisions.size(); ++i) {
-    const double mean_square = residual[i] / (keyframe_times[i + 1] - keyframe_times[i]);
-    const double factor =
-        std::ceil(std::pow(mean_square / (6.0 * rules.target_force * rules.target_force),
-                           0.5 / rules.convergence_order) -
-                  1e-9);
-    const int spans = std::min(rules.max_spans_per_interval,
-                               static_cast<int>(std::max(1.0, factor)) * subdivisions[i]);
-    if (spans > subdivisions[i]) changed = true;
-    subdivisions[i] = std::max(subdivisions[i], spans);
-  }
-  return changed;
 }
 
 /// Least joint effort's per-joint scales: s_j = P / max(P_j, floor), P_j the input's peak
@@ -508,7 +443,8 @@ class MotionOptimizer::PolishLadder {
     p_.avg_root_force_before = pass.force;
     p_.landing_drift_before_deg = pass.flown->drift_deg;
     p_.joint_rise_before = joint_rise(*pass.flown);
-    joints_pay_ = p_.joint_rise_before > kJointLoadRiseLimit;
+    baseline_ = {pass.force, pass.flown->drift_deg, p_.joint_rise_before > kJointLoadRiseLimit,
+                 run.rules_.max_landing_drift_deg};
   }
 
   /// The tries in order until one is kept, then the fallback when none is.
@@ -518,7 +454,8 @@ class MotionOptimizer::PolishLadder {
       if (p_.kept || run_.cancelled()) break;
       // Before the joints go unbounded over a motion that made them pay: the closest bounded
       // try again on finer knots. Only where the resolution is the optimiser's to choose.
-      if (run_.automatic_ && !attempt.joints_bounded && joints_pay_ && over_limit_ &&
+      if (polish_refines_before_unbounded(attempt, run_.automatic_, baseline_,
+                                          over_limit_.has_value()) &&
           kept_on_finer_knots())
         break;
       if (attempt.joints_bounded && bounded_tries_hopeless_) {
@@ -562,17 +499,12 @@ class MotionOptimizer::PolishLadder {
     return largest_joint_load_rise(run_.model_, result_.before.check, flown.evaluation.check)
         .ratio();
   }
-  /// Whether a try lands as a kept one must, and whether it may be kept: solved, its root force
-  /// within the limit, landing so.
-  bool lands(const Flown& flown) const {
-    return flown.drift_deg <= run_.rules_.max_landing_drift_deg ||
-           flown.drift_deg <= p_.landing_drift_before_deg;
+  static PolishTryFigures figures(const Solved& solved, const Flown& flown) {
+    return {solved.solve.solved, flown.evaluation.metrics.avg_root_force, flown.drift_deg};
   }
+  /// Whether a try may be kept (polish_try_holds).
   bool holds(const Solved& solved, const Flown& flown) const {
-    return solved.solve.solved &&
-           root_force_within_limit(flown.evaluation.metrics.avg_root_force,
-                                   p_.avg_root_force_before) &&
-           lands(flown);
+    return polish_try_holds(figures(solved, flown), baseline_);
   }
   /// What a try reports in `p`: its step, settings, root force, landing and status.
   void record(int step, const Solved& solved, const Flown& flown) {
@@ -658,7 +590,7 @@ class MotionOptimizer::PolishLadder {
         from_bounded ? bounded_start_->optimized : pass_.best.optimized,
         from_bounded ? bounded_start_->trajectory : pass_.best.trajectory, step_options, step);
     record(step, polished, polished_flown);
-    const bool landed = lands(polished_flown);
+    const PolishTryFigures tried = figures(polished, polished_flown);
     const bool bounded_solved = attempt.joints_bounded && polished.solve.solved;
     const double rise = bounded_solved ? joint_rise(polished_flown) : 0.0;
     if (bounded_solved) bounded_start_ = TryMotion{polished.optimized, polished.trajectory};
@@ -666,25 +598,23 @@ class MotionOptimizer::PolishLadder {
         (!closest_bounded_ || polished_flown.drift_deg < closest_bounded_->landing_drift_deg))
       closest_bounded_ = JointLoadPolish::BoundedAlternative{polished_flown.drift_deg,
                                                              p_.avg_root_force_after, rise};
-    p_.kept = holds(polished, polished_flown);
-    if (attempt.joints_bounded && !p_.kept &&
-        p_.landing_drift_after_deg >
-            std::max(kPolishHopelessDriftFactor * run_.rules_.max_landing_drift_deg,
-                     p_.landing_drift_before_deg))
+    p_.kept = polish_try_holds(tried, baseline_);
+    if (polish_bounded_tries_hopeless(attempt, p_.kept, tried, baseline_))
       bounded_tries_hopeless_ = true;
-    if (p_.kept && rise > kJointLoadRiseLimit && !run_.cancelled())
+    if (polish_tightens(p_.kept, rise) && !run_.cancelled())
       tighten(step, step_options, rise, polished, polished_flown);
-    if (bounded_solved && !p_.kept && landed &&
-        (!over_limit_ || p_.avg_root_force_after < over_limit_->check.metrics.avg_root_force))
+    if (polish_over_limit_candidate(
+            attempt, p_.kept, tried, baseline_,
+            over_limit_ ? std::optional(over_limit_->check.metrics.avg_root_force) : std::nullopt))
       over_limit_ = OverLimit{step, TryMotion{polished.optimized, polished.trajectory},
                               polished_flown.evaluation.check};
     if (p_.kept) {
       pass_.best = std::move(polished);
       pass_.flown = std::move(polished_flown);
-    } else if (attempt.joints_bounded && joints_pay_ && polished.solve.solved && landed &&
-               p_.avg_root_force_after <= kPolishMaxRootForceOverPayingJoints &&
-               (!fallback_ ||
-                p_.avg_root_force_after < fallback_->flown.evaluation.metrics.avg_root_force)) {
+    } else if (polish_fallback_candidate(
+                   attempt, p_.kept, tried, baseline_,
+                   fallback_ ? std::optional(fallback_->flown.evaluation.metrics.avg_root_force)
+                             : std::nullopt)) {
       fallback_ = Fallback{step, std::move(polished), std::move(polished_flown)};
     }
   }
@@ -695,7 +625,7 @@ class MotionOptimizer::PolishLadder {
   JointLoadPolish& p_;
   MotionNlpOptions options_;
   SolverOptions solver_;
-  bool joints_pay_ = false;
+  PolishBaseline baseline_;
   std::optional<Fallback> fallback_;
   std::optional<OverLimit> over_limit_;
   /// JointLoadPolish::bounded_alternative, among the bounded tries that solved.

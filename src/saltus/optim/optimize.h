@@ -10,6 +10,7 @@
 
 #include "saltus/evaluation/evaluate.h"
 #include "saltus/evaluation/keyframe_spacing.h"
+#include "saltus/optim/automatic_resolution.h"
 #include "saltus/optim/motion_nlp.h"
 #include "saltus/optim/solve_policy.h"
 
@@ -41,38 +42,6 @@ struct OptimizeOptions {
 /// with every other variable, so the Hessian, and with it time and memory, grows with the
 /// square of their count (M7 with 13 keyframes: 3.2 s; with 100: 3 min 37 s and 1 GB).
 inline constexpr int kMaxOptimizedKeyframes = 64;
-
-/// The rules of the automatic resolution, deterministic: the same input, the same knots.
-struct AutomaticResolution {
-  /// First guess: each keyframe interval split so that no segment, turning at its fastest rate
-  /// on the interval, would turn in the world by more than this in one span (rad), ... Fine
-  /// enough that the first level usually ends within ~10× of target_force, where one
-  /// refinement reaches it (docs/performance.md, "Fewer levels").
-  double turn_per_span = 1.6;  // 92°
-  /// ... and no span is longer than this (s).
-  double max_span = 0.26;
-  /// Stop once the true average root force (the dense check) is at most this (N) and the
-  /// motion's own free flight lands within max_landing_drift_deg of it...
-  double target_force = 0.25;
-  /// ... degrees: the whole-body orientation at landing of the free flight from the optimised
-  /// motion's own take-off state with its joint movements, against the motion's (what
-  /// `saltus simulate optimized.motion.json` reports). A small absolute root force is not enough:
-  /// on a light athlete or a twisting skill 0.2-0.4 N turned into 34-83° (docs/optimizer.md,
-  /// "Landing drift").
-  double max_landing_drift_deg = 3.0;
-  /// ... or a refinement cut it by less than this fraction (more knots stop paying).
-  double min_gain = 0.3;
-  /// A refinement splits each interval's spans by the factor its own mean squared wrench asks
-  /// for, assuming the average root force falls like the span length to this power (fitted on
-  /// the bundled motions: docs/performance.md, "Fewer levels").
-  double convergence_order = 2.5;
-  int max_spans_per_interval = 8;
-  int max_refinements = 2;
-  /// A level that may be refined only needs to say where its residual lives: it stops at this
-  /// relative objective change instead of the final one (and, if it then meets target_force,
-  /// is finished at the final one, warm-started).
-  double coarse_objective_change = 1e-2;
-};
 
 /// The paper's protocol, which the studies and `saltus paper` keep so that their tables compare
 /// with the paper's: knots at the keyframes (no automatic resolution) and no keyframe prior.

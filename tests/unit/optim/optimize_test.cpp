@@ -137,41 +137,6 @@ TEST(OptimizeMotion, ReportsItsStagesAndACancelAfterASolvedLevelIsCalledCancelle
   EXPECT_EQ(seen.back().stage_iteration, 0);  // its first report stopped it
 }
 
-/// A straight body somersaulting at `rate` (rad/s), keyframed every `step` seconds over `duration`.
-Motion steady_somersault(const BodyModel& model, double rate, double step, double duration) {
-  Motion m = test::base_motion("steady somersault");
-  const int intervals = static_cast<int>(std::lround(duration / step));
-  for (int i = 0; i <= intervals; ++i) {
-    test::PoseDeg pose;
-    pose.root_x = rate * step * i * 180.0 / M_PI;
-    m.keyframes.push_back(test::keyframe(model, step * i, pose));
-  }
-  return m;
-}
-
-TEST(AutomaticResolution, FirstGuessSplitsAnIntervalByHowFarTheBodyTurnsInItAndByItsLength) {
-  // The first level's spans, from the physics of the motion: a body turning at ω over an
-  // interval of Δ gets ⌈ω·Δ / 1.6 rad⌉ spans (92° per span at the fastest rate), at least
-  // ⌈Δ / 0.26 s⌉ of them. Values chosen half-way between two span counts, so that the spline's
-  // rate may differ from ω by a third either way.
-  const BodyModel model = test::bundled_model();
-  const AutomaticResolution rules;
-  ASSERT_NEAR(rules.turn_per_span, 1.6, 1e-12);
-  ASSERT_NEAR(rules.max_span, 0.26, 1e-12);
-  struct Case {
-    double rate, step, duration;
-    int spans;
-  };
-  // 137.5° per 0.2 s: 1.5 spans' worth -> 2; 46° per 0.2 s -> 1; 69° per 0.4 s: by length -> 2.
-  for (const Case& c : {Case{12.0, 0.2, 1.0, 2}, Case{4.0, 0.2, 1.0, 1}, Case{3.0, 0.4, 1.2, 2}}) {
-    SCOPED_TRACE(c.rate);
-    const Motion motion = steady_somersault(model, c.rate, c.step, c.duration);
-    const OptimizationResult r = optimize_motion(motion, model, few_iterations());
-    ASSERT_FALSE(r.levels.empty());
-    EXPECT_EQ(r.levels[0].subdivisions, std::vector<int>(motion.keyframes.size() - 1, c.spans));
-  }
-}
-
 TEST(OptimizeMotion, RejectsKnotsPerIntervalBelowOne) {
   const BodyModel model = test::bundled_model();
   OptimizeOptions options = few_iterations();
