@@ -433,18 +433,18 @@ nlohmann::json result_to_json(const ResultJson& r) {
     auto block = [](const std::vector<ResultJson::JointStrength>& entries,
                     const std::string& verdict) {
       nlohmann::json joints = nlohmann::json::object();
-      for (const ResultJson::JointStrength& e : entries)
-        joints[e.joint] = {{"coordinate", e.coordinate},
-                           {"direction", e.direction},
-                           {"words", e.words},
-                           {"share", e.share},
-                           {"time_s", e.time_s},
-                           {"moment_Nm", e.moment_Nm},
-                           {"capacity_Nm", e.capacity_Nm},
-                           {"angle_deg", e.angle_deg},
-                           {"shortening_speed_rad_s", e.shortening_speed_rad_s},
-                           {"extrapolated", e.extrapolated},
-                           {"source", e.source}};
+      for (const ResultJson::JointStrength& peak : entries)
+        joints[peak.joint] = {{"coordinate", peak.coordinate},
+                              {"direction", peak.direction},
+                              {"words", peak.words},
+                              {"share", peak.share},
+                              {"time_s", peak.time_s},
+                              {"moment_Nm", peak.moment_Nm},
+                              {"capacity_Nm", peak.capacity_Nm},
+                              {"angle_deg", peak.angle_deg},
+                              {"shortening_speed_rad_s", peak.shortening_speed_rad_s},
+                              {"extrapolated", peak.extrapolated},
+                              {"source", peak.source}};
       return nlohmann::json{{"joints", joints}, {"verdict", verdict}};
     };
     j["joint_strength"] = {{"reference", r.strength_reference},
