@@ -370,6 +370,12 @@ int run_optimize(const CommonArgs& args) {
         "the optimiser's own integral: %.4g N)\n",
         result.before.metrics.avg_root_force, result.after.metrics.avg_root_force,
         result.after.check.points, std::sqrt(result.optimizer_objective_after / 6.0));
+    if (result.after.metrics.avg_root_force > saltus::kPolishMaxRootForce)
+      std::printf("  above %.3g N: %s\n", saltus::kPolishMaxRootForce,
+                  saltus::residual_location_words(
+                      saltus::residual_shares(result.after.check, result.after.keyframe_times),
+                      result.after.keyframe_times)
+                      .c_str());
     std::printf("  root force  RMS %.4g -> %.4g N, max %.4g -> %.4g N\n",
                 result.before.metrics.rms_force_N, result.after.metrics.rms_force_N,
                 result.before.metrics.max_force_N, result.after.metrics.max_force_N);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "saltus/dynamics/inverse_dynamics.h"
 
@@ -167,6 +168,44 @@ DenseCheck dense_check(const BodyModel& model, const Trajectory<double>& traject
   m.rms_force_N = std::sqrt(sum_force / duration);
   m.rms_moment_Nm = std::sqrt(sum_moment / duration);
   return check;
+}
+
+std::vector<double> residual_per_interval(const DenseCheck& check,
+                                          const std::vector<double>& keyframe_times) {
+  std::vector<double> out(keyframe_times.size() - 1, 0.0);
+  for (std::size_t s = 0; s < check.span_integral.size(); ++s) {
+    const double middle = 0.5 * (check.span_start[s] + check.span_end[s]);
+    const auto it = std::upper_bound(keyframe_times.begin(), keyframe_times.end(), middle);
+    const std::size_t interval =
+        std::clamp<std::ptrdiff_t>(it - keyframe_times.begin() - 1, 0, out.size() - 1);
+    out[interval] += check.span_integral[s];
+  }
+  return out;
+}
+
+std::vector<double> residual_shares(const DenseCheck& check,
+                                    const std::vector<double>& keyframe_times) {
+  std::vector<double> shares = residual_per_interval(check, keyframe_times);
+  double total = 0.0;
+  for (const double r : shares)
+    total += r;
+  for (double& r : shares)
+    r = total > 0 ? r / total : 0.0;
+  return shares;
+}
+
+std::string residual_location_words(const std::vector<double>& shares,
+                                    const std::vector<double>& keyframe_times) {
+  if (shares.empty() || keyframe_times.size() != shares.size() + 1) return {};
+  const std::size_t i =
+      static_cast<std::size_t>(std::max_element(shares.begin(), shares.end()) - shares.begin());
+  char words[200];
+  std::snprintf(
+      words, sizeof words,
+      "the largest share of the root force left is between keyframes %zu and %zu (%.2f-%.2f s): "
+      "%.0f %% of its integral",
+      i + 1, i + 2, keyframe_times[i], keyframe_times[i + 1], 100.0 * shares[i]);
+  return words;
 }
 
 }  // namespace saltus

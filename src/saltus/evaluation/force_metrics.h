@@ -3,6 +3,7 @@
 /// The root-force figures Saltus reports about a sampled motion: the paper's objective and
 /// "average force acting on the root" (Table 1), RMS and peak force and moment.
 
+#include <string>
 #include <vector>
 
 #include "saltus/body/body_model.h"
@@ -66,5 +67,21 @@ inline constexpr int kCheckMaxHalvings = 4;
 
 DenseCheck dense_check(const BodyModel& model, const Trajectory<double>& trajectory,
                        int min_points);
+
+/// Where the residual lives: the dense check's span integrals (∫ΣF² dt, N²·s) summed per keyframe
+/// interval, each span counted in the interval that holds its middle.
+std::vector<double> residual_per_interval(const DenseCheck& check,
+                                          const std::vector<double>& keyframe_times);
+
+/// Each keyframe interval's share of the whole ∫ΣF² dt (fractions summing to 1; all 0 when there
+/// is no residual at all).
+std::vector<double> residual_shares(const DenseCheck& check,
+                                    const std::vector<double>& keyframe_times);
+
+/// The keyframe interval holding the largest share, in words for a reader of a run that missed
+/// its target: "the largest share of the root force left is between keyframes 4 and 5
+/// (0.62-0.84 s): 58 % of its integral". Keyframes count from 1. Empty when `shares` is.
+std::string residual_location_words(const std::vector<double>& shares,
+                                    const std::vector<double>& keyframe_times);
 
 }  // namespace saltus

@@ -115,7 +115,8 @@ ResultJson common_result(const MotionFile& file, ResultJson::Kind kind, const st
 }
 
 /// How the reported residual figures were computed (docs/formats.md).
-ResultJson::ResidualCheck residual_check(const DenseCheck& check) {
+ResultJson::ResidualCheck residual_check(const DenseCheck& check,
+                                         const std::vector<double>& keyframe_times) {
   ResultJson::ResidualCheck c;
   c.rule = "Simpson's rule on every knot span, " + std::to_string(kCheckPointsPerSpan) +
            " or more intervals per span, " + format_number("%g", kCheckMaxSpacing) +
@@ -126,6 +127,7 @@ ResultJson::ResidualCheck residual_check(const DenseCheck& check) {
   c.points = check.points;
   c.halvings = check.halvings;
   c.converged = check.converged;
+  c.share_by_keyframe_interval = residual_shares(check, keyframe_times);
   return c;
 }
 
@@ -408,6 +410,8 @@ nlohmann::json result_to_json(const ResultJson& r) {
     if (c->halvings) j["residual_check"]["halvings"] = *c->halvings;
     if (c->converged) j["residual_check"]["converged"] = *c->converged;
     if (c->optimizer_agrees) j["residual_check"]["optimizer_agrees"] = *c->optimizer_agrees;
+    if (!c->share_by_keyframe_interval.empty())
+      j["residual_check"]["share_by_keyframe_interval"] = c->share_by_keyframe_interval;
   }
   const KeyframeErrors* e = r.keyframe_errors ? &*r.keyframe_errors : nullptr;
   j["max_translation_error_m"] = e ? nlohmann::json(e->max_translation_error_m) : nullptr;
@@ -542,6 +546,8 @@ ResultJson parse_result_json(const nlohmann::json& document, const std::string& 
     if (const auto converged = check->find("converged")) c.converged = read_bool(*converged);
     if (const auto agrees = check->find("optimizer_agrees"))
       c.optimizer_agrees = read_bool(*agrees);
+    if (const auto shares = check->find("share_by_keyframe_interval"))
+      c.share_by_keyframe_interval = shares->as_double_array();
     r.residual_check = c;
   }
   if (const auto translation = root.find("max_translation_error_m")) {
@@ -693,7 +699,7 @@ ResultJson evaluation_result(const MotionFile& file, const MotionEvaluation& e,
   ResultJson r = common_result(file, ResultJson::Kind::kEvaluation, "evaluated", options);
   r.before = e.metrics;
   r.keyframe_times_before = e.keyframe_times;
-  r.residual_check = residual_check(e.check);
+  r.residual_check = residual_check(e.check, e.keyframe_times);
   r.keyframe_errors = e.keyframe_errors;
   r.takeoff_angular_momentum = e.samples.front().angular_momentum;
   set_joint_loads(r, file.model, e.check, nullptr);
@@ -735,7 +741,7 @@ ResultJson optimization_result(const MotionFile& file, const OptimizationResult&
   r.options = recorded_options(options, true);
   r.before = result.before.metrics;
   r.keyframe_times_before = result.before.keyframe_times;
-  r.residual_check = residual_check(result.after.check);
+  r.residual_check = residual_check(result.after.check, result.after.keyframe_times);
   r.residual_check->optimizer_agrees = optimizer_agrees_with_check(result);
   r.keyframe_errors = result.after.keyframe_errors;
   set_joint_loads(r, file.model, result.before.check, &result.after.check);

@@ -56,6 +56,9 @@ struct ResultJson {
     std::optional<int> halvings;
     std::optional<bool> converged;
     std::optional<bool> optimizer_agrees;  ///< optimisations: its quadrature agrees with it
+    /// Each keyframe interval's share of the check's ∫ΣF² dt, at the motion's keyframe times
+    /// (evaluation/force_metrics.h residual_shares); empty in files before it.
+    std::vector<double> share_by_keyframe_interval;
   };
   std::optional<ResidualCheck> residual_check;
   /// Of the evaluated or the optimised motion; none for simulations (null in the file).

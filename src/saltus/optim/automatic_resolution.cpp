@@ -39,19 +39,6 @@ std::vector<int> first_subdivisions(const Motion& motion, const BodyModel& model
   return out;
 }
 
-std::vector<double> residual_per_interval(const DenseCheck& check,
-                                          const std::vector<double>& keyframe_times) {
-  std::vector<double> out(keyframe_times.size() - 1, 0.0);
-  for (std::size_t s = 0; s < check.span_integral.size(); ++s) {
-    const double middle = 0.5 * (check.span_start[s] + check.span_end[s]);
-    const auto it = std::upper_bound(keyframe_times.begin(), keyframe_times.end(), middle);
-    const std::size_t interval =
-        std::clamp<std::ptrdiff_t>(it - keyframe_times.begin() - 1, 0, out.size() - 1);
-    out[interval] += check.span_integral[s];
-  }
-  return out;
-}
-
 bool refine(std::vector<int>& subdivisions, const std::vector<double>& residual,
             const std::vector<double>& keyframe_times, const AutomaticResolution& rules) {
   bool changed = false;

@@ -51,11 +51,6 @@ struct AutomaticResolution {
 std::vector<int> first_subdivisions(const Motion& motion, const BodyModel& model,
                                     const AutomaticResolution& rules);
 
-/// Where the residual lives: the dense check's span integrals (∫ΣF² dt) summed per keyframe
-/// interval, each span counted in the interval that holds its middle.
-std::vector<double> residual_per_interval(const DenseCheck& check,
-                                          const std::vector<double>& keyframe_times);
-
 /// Splits interval i's spans by ⌈(m_i / (6·target²))^(1/(2p))⌉, m_i its mean squared wrench
 /// (residual[i] over the interval's length) and p rules.convergence_order: the factor that brings
 /// its own average root force to the target if the force falls like h^p; never fewer spans, at

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <random>
@@ -115,6 +116,60 @@ TEST(DenseCheck, IsTheIntegralOfTheRootWrenchSpanBySpan) {
     EXPECT_GE(check.points, 200);
     EXPECT_GE(check.points, spans * (kCheckPointsPerSpan + 1));
     EXPECT_GE(check.points, static_cast<int>(trajectory.duration() / kCheckMaxSpacing));
+  }
+}
+
+TEST(ResidualShares, ASpanCountsInTheKeyframeIntervalHoldingItsMiddle) {
+  DenseCheck check;
+  // Three spans over keyframes at 0, 0.5 and 1 s; the second straddles 0.5 s with its middle
+  // at 0.45 s, so it counts in the first interval.
+  check.span_start = {0.0, 0.3, 0.6};
+  check.span_end = {0.3, 0.6, 1.0};
+  check.span_integral = {1.0, 2.0, 4.0};
+  EXPECT_EQ(residual_per_interval(check, {0.0, 0.5, 1.0}), (std::vector<double>{3.0, 4.0}));
+  const std::vector<double> shares = residual_shares(check, {0.0, 0.5, 1.0});
+  EXPECT_NEAR(shares[0], 3.0 / 7.0, 1e-15);
+  EXPECT_NEAR(shares[1], 4.0 / 7.0, 1e-15);
+  EXPECT_EQ(
+      residual_location_words(shares, {0.0, 0.5, 1.0}),
+      "the largest share of the root force left is between keyframes 2 and 3 (0.50-1.00 s): 57 % "
+      "of its integral");
+  check.span_integral = {0.0, 0.0, 0.0};
+  EXPECT_EQ(residual_shares(check, {0.0, 0.5, 1.0}), (std::vector<double>{0.0, 0.0}));
+}
+
+TEST(ResidualShares, AreEachKeyframeIntervalsShareOfTheWrenchIntegralOnAFineGrid) {
+  // Independent path: the trapezoidal rule on a grid a hundred times finer, between the
+  // keyframe times, against the dense check's span integrals summed per interval.
+  const BodyModel model = test::bundled_model();
+  for (const Motion& motion : {test::pike_motion(model), test::tuck_motion(model)}) {
+    SCOPED_TRACE(motion.name);
+    InterpolationOptions options;
+    options.subdivisions.assign(motion.keyframes.size() - 1, 2);
+    const Trajectory<double> trajectory = interpolate_keyframes(motion, model, options);
+    std::vector<double> keyframe_times;
+    for (const Keyframe& k : motion.keyframes)
+      keyframe_times.push_back(k.time);
+    const std::vector<double> shares =
+        residual_shares(dense_check(model, trajectory, 200), keyframe_times);
+    const std::vector<SampleRecord> fine =
+        evaluate_trajectory(model, trajectory, uniform_times(trajectory.duration(), 40001));
+    std::vector<double> by_hand(keyframe_times.size() - 1, 0.0);
+    double total = 0.0;
+    for (std::size_t k = 0; k + 1 < fine.size(); ++k) {
+      const double middle = 0.5 * (fine[k].time + fine[k + 1].time);
+      const std::size_t i = static_cast<std::size_t>(
+          std::upper_bound(keyframe_times.begin(), keyframe_times.end(), middle) -
+          keyframe_times.begin() - 1);
+      const double piece =
+          0.5 * (fine[k + 1].time - fine[k].time) *
+          (fine[k].root_wrench.squaredNorm() + fine[k + 1].root_wrench.squaredNorm());
+      by_hand[std::min(i, by_hand.size() - 1)] += piece;
+      total += piece;
+    }
+    ASSERT_EQ(shares.size(), by_hand.size());
+    for (std::size_t i = 0; i < shares.size(); ++i)
+      EXPECT_NEAR(shares[i], by_hand[i] / total, 1e-4) << "interval " << i;
   }
 }
 

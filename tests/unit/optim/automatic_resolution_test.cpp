@@ -1,6 +1,6 @@
 // The automatic resolution's rules (optim/automatic_resolution.h) without an optimisation: the
-// first guess from how far a steady somersault turns per interval, where the dense check's
-// residual is counted, and the refinement factor from the power law it assumes, at its edges.
+// first guess from how far a steady somersault turns per interval and the refinement factor from
+// the power law it assumes, at its edges.
 
 #include "saltus/optim/automatic_resolution.h"
 
@@ -46,16 +46,6 @@ TEST(AutomaticResolution, FirstGuessSplitsAnIntervalByHowFarTheBodyTurnsInItAndB
     EXPECT_EQ(first_subdivisions(motion, model, rules),
               std::vector<int>(motion.keyframes.size() - 1, c.spans));
   }
-}
-
-TEST(AutomaticResolution, TheResidualOfASpanCountsInTheIntervalHoldingItsMiddle) {
-  DenseCheck check;
-  // Three spans over keyframes at 0, 0.5 and 1 s; the second straddles 0.5 s with its middle
-  // at 0.45 s, so it counts in the first interval.
-  check.span_start = {0.0, 0.3, 0.6};
-  check.span_end = {0.3, 0.6, 1.0};
-  check.span_integral = {1.0, 2.0, 4.0};
-  EXPECT_EQ(residual_per_interval(check, {0.0, 0.5, 1.0}), (std::vector<double>{3.0, 4.0}));
 }
 
 TEST(AutomaticResolution, RefiningSplitsEachIntervalByThePowerLawsFactorAndNeverCoarsens) {
