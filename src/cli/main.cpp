@@ -373,7 +373,7 @@ int run_optimize(const CommonArgs& args) {
     if (result.after.metrics.avg_root_force > saltus::kPolishMaxRootForce)
       std::printf("  above %.3g N: %s\n", saltus::kPolishMaxRootForce,
                   saltus::residual_location_words(
-                      saltus::residual_shares(result.after.check, result.after.keyframe_times),
+                      written.at("residual_check").at("share_by_keyframe_interval"),
                       result.after.keyframe_times)
                       .c_str());
     std::printf("  root force  RMS %.4g -> %.4g N, max %.4g -> %.4g N\n",
